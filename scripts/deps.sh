@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs the Debian packages urdfsnap needs to build and test, only those that are missing.
+# Idempotent and quiet when everything is already there. Needs root (apt-get).
+set -euo pipefail
+packages=(
+  cmake g++ make pkg-config
+  liburdfdom-dev libeigen3-dev libosmesa6-dev libstb-dev zlib1g-dev
+  libtinyxml2-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
+  googletest libgtest-dev libbenchmark-dev fonts-liberation python3
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "deps.sh: installing ${missing[*]}" >&2
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo=sudo
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
