@@ -1,0 +1,78 @@
+// Per-pixel comparison of two equally sized RGB images and the magenta-on-grey diff picture.
+#include "image/image_diff.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+#include "common/error.h"
+
+namespace urdfsnap::image {
+namespace {
+
+std::string SizeText(const Image& image) {
+  return std::to_string(image.width) + "x" + std::to_string(image.height);
+}
+
+void CheckComparable(const Image& expected, const Image& actual) {
+  CheckImage(expected, "expected image");
+  CheckImage(actual, "actual image");
+  if (expected.width != actual.width || expected.height != actual.height) {
+    throw Error("image sizes differ: expected " + SizeText(expected) + ", actual " +
+                SizeText(actual));
+  }
+}
+
+// The largest channel difference of pixel `i` (0..255).
+int PixelDelta(const Image& a, const Image& b, std::size_t i) {
+  int delta = 0;
+  for (std::size_t c = 3 * i; c < 3 * i + 3; ++c) delta = std::max(delta, std::abs(a.rgb[c] - b.rgb[c]));
+  return delta;
+}
+
+}  // namespace
+
+DiffStats CompareImages(const Image& expected, const Image& actual, int delta) {
+  CheckComparable(expected, actual);
+  DiffStats stats;
+  long long delta_sum = 0;
+  for (int y = 0; y < expected.height; ++y) {
+    for (int x = 0; x < expected.width; ++x) {
+      const int d = PixelDelta(expected, actual, std::size_t(y) * expected.width + x);
+      delta_sum += d;
+      stats.max_delta = std::max(stats.max_delta, d);
+      if (d <= delta) continue;
+      if (stats.pixels_over++ == 0) {
+        stats.min_x = stats.max_x = x;
+        stats.min_y = stats.max_y = y;
+      }
+      stats.min_x = std::min(stats.min_x, x);
+      stats.max_x = std::max(stats.max_x, x);
+      stats.min_y = std::min(stats.min_y, y);
+      stats.max_y = std::max(stats.max_y, y);
+    }
+  }
+  const double pixel_count = double(expected.width) * expected.height;
+  stats.mean_delta = delta_sum / pixel_count;
+  stats.fraction_over = stats.pixels_over / pixel_count;
+  return stats;
+}
+
+Image MakeDiffImage(const Image& expected, const Image& actual, int delta) {
+  CheckComparable(expected, actual);
+  Image diff{expected.width, expected.height, std::vector<std::uint8_t>(expected.rgb.size())};
+  for (std::size_t i = 0; i < diff.rgb.size() / 3; ++i) {
+    std::uint8_t* out = &diff.rgb[3 * i];
+    if (PixelDelta(expected, actual, i) > delta) {
+      out[0] = 255, out[1] = 0, out[2] = 255;
+      continue;
+    }
+    // Rec. 601 luma in 0..255, squeezed into 64..127 so that no grey comes near the magenta
+    const std::uint8_t* in = &expected.rgb[3 * i];
+    const int luma = (77 * in[0] + 150 * in[1] + 29 * in[2]) >> 8;
+    std::fill_n(out, 3, static_cast<std::uint8_t>(64 + luma / 4));
+  }
+  return diff;
+}
+
+}  // namespace urdfsnap::image

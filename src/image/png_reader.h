@@ -1,0 +1,16 @@
+// PNG decoding into RGB images, for golden-image tests and the compare command.
+#pragma once
+
+#include <string>
+
+#include "image/image.h"
+
+namespace urdfsnap::image {
+
+// Reads the PNG file at `path` as 8-bit RGB, top row first: grey becomes three equal channels,
+// alpha is dropped, 16-bit channels are reduced to 8. Throws urdfsnap::Error "PATH: ..." if the
+// file cannot be read, is not a PNG, claims a width or height over kMaxImageSide (checked in the
+// header before anything is decoded or allocated), or fails to decode.
+Image ReadPng(const std::string& path);
+
+}  // namespace urdfsnap::image

@@ -1,0 +1,166 @@
+// PNG writing and reading: exact round trips with top-row-first order, colour-type conversion on
+// reading, and refusal of files that are not PNGs or claim an absurd size.
+#include <zlib.h>
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "image/png_reader.h"
+#include "image/png_writer.h"
+#include "temp_dir.h"
+
+namespace urdfsnap::image {
+namespace {
+
+using Bytes = std::vector<std::uint8_t>;
+
+void AppendBigEndian32(Bytes& out, std::uint32_t value) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(std::uint8_t(value >> shift));
+}
+
+void AppendChunk(Bytes& out, const char* type, const Bytes& data) {
+  AppendBigEndian32(out, std::uint32_t(data.size()));
+  Bytes body(type, type + 4);
+  body.insert(body.end(), data.begin(), data.end());
+  out.insert(out.end(), body.begin(), body.end());
+  AppendBigEndian32(out, std::uint32_t(crc32(0, body.data(), uInt(body.size()))));
+}
+
+// A PNG made by hand, independent of the code under test: colour type 0 grey, 2 RGB, 6 RGBA; 8-bit
+// samples given row by row (top first) without filter bytes. An empty `samples` leaves out the
+// image data, for header-only files.
+Bytes HandMadePng(std::uint32_t width, std::uint32_t height, int colour_type, const Bytes& samples) {
+  Bytes png = {137, 80, 78, 71, 13, 10, 26, 10};
+  Bytes header;
+  AppendBigEndian32(header, width);
+  AppendBigEndian32(header, height);
+  header.insert(header.end(), {8, std::uint8_t(colour_type), 0, 0, 0});
+  AppendChunk(png, "IHDR", header);
+  if (!samples.empty()) {
+    const std::size_t row = samples.size() / height;
+    Bytes filtered;
+    for (std::uint32_t y = 0; y < height; ++y) {
+      filtered.push_back(0);
+      filtered.insert(filtered.end(), samples.begin() + y * row, samples.begin() + (y + 1) * row);
+    }
+    uLongf size = compressBound(uLong(filtered.size()));
+    Bytes deflated(size);
+    EXPECT_EQ(compress(deflated.data(), &size, filtered.data(), uLong(filtered.size())), Z_OK);
+    deflated.resize(size);
+    AppendChunk(png, "IDAT", deflated);
+  }
+  AppendChunk(png, "IEND", {});
+  return png;
+}
+
+// A 3x2 image with a different colour in every pixel, so that swapped rows or columns show.
+Image SmallImage() {
+  return {3, 2, {255, 0, 0, 0, 255, 0, 0, 0, 255,  //
+                 1, 2, 3, 250, 251, 252, 48, 48, 48}};
+}
+
+class PngIoTest : public TempDirTest {
+ protected:
+  void WriteBytes(const std::string& path, const Bytes& bytes) {
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
+                                                std::streamsize(bytes.size()));
+  }
+  std::string ReadError(const Bytes& file_bytes) {
+    const std::string path = Path("input.png");
+    WriteBytes(path, file_bytes);
+    try {
+      ReadPng(path);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "no error";
+  }
+};
+
+TEST_F(PngIoTest, RoundTripIsExact) {
+  const std::string path = Path("out.png");
+  WritePng(SmallImage(), path);
+  const Image read = ReadPng(path);
+  EXPECT_EQ(read.width, 3);
+  EXPECT_EQ(read.height, 2);
+  EXPECT_EQ(read.rgb, SmallImage().rgb);
+  EXPECT_EQ(Listing(), std::vector<std::string>{"out.png"});
+}
+
+TEST_F(PngIoTest, EncodedRowsAreTopFirst) {
+  // read back by hand: the first row of samples in the stream is the image's top row
+  const Bytes png = EncodePng(SmallImage());
+  const Bytes hand = HandMadePng(3, 2, 2, SmallImage().rgb);
+  WriteBytes(Path("hand.png"), hand);
+  EXPECT_EQ(ReadPng(Path("hand.png")).rgb, SmallImage().rgb);
+  WriteBytes(Path("ours.png"), png);
+  EXPECT_EQ(ReadPng(Path("ours.png")).rgb, SmallImage().rgb);
+  // same header as the hand-made file: signature, IHDR with 3x2, 8-bit RGB
+  EXPECT_TRUE(std::equal(hand.begin(), hand.begin() + 33, png.begin()));
+}
+
+TEST_F(PngIoTest, LargeImageRoundTrip) {
+  Image image{640, 480, Bytes(640 * 480 * 3)};
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = std::uint8_t(i * 7 / 5);
+  WritePng(image, Path("big.png"));
+  EXPECT_EQ(ReadPng(Path("big.png")).rgb, image.rgb);
+}
+
+TEST_F(PngIoTest, GreyBecomesRgb) {
+  WriteBytes(Path("grey.png"), HandMadePng(2, 1, 0, {10, 200}));
+  const Image image = ReadPng(Path("grey.png"));
+  EXPECT_EQ(image.rgb, (Bytes{10, 10, 10, 200, 200, 200}));
+}
+
+TEST_F(PngIoTest, RgbaLosesAlpha) {
+  WriteBytes(Path("rgba.png"), HandMadePng(2, 1, 6, {1, 2, 3, 0, 4, 5, 6, 255}));
+  const Image image = ReadPng(Path("rgba.png"));
+  EXPECT_EQ(image.rgb, (Bytes{1, 2, 3, 4, 5, 6}));
+}
+
+TEST_F(PngIoTest, RefusesHugeDimensionsBeforeDecoding) {
+  // only a header: if the reader believed it, it would allocate 30 GB
+  const std::string message = ReadError(HandMadePng(100000, 100000, 2, {}));
+  EXPECT_EQ(message, Path("input.png") + ": PNG is 100000x100000 pixels; at most 16384x16384 is read");
+}
+
+TEST_F(PngIoTest, RefusesWhatIsNotPng) {
+  const std::string text = "<robot name='r'/>";
+  EXPECT_EQ(ReadError(Bytes(text.begin(), text.end())),
+            Path("input.png") + ": not a PNG file (no PNG signature)");
+  EXPECT_EQ(ReadError({}), Path("input.png") + ": not a PNG file (no PNG signature)");
+}
+
+TEST_F(PngIoTest, ReportsCorruptData) {
+  Bytes png = HandMadePng(3, 2, 2, SmallImage().rgb);
+  png.resize(png.size() - 20);  // cut into the image data
+  EXPECT_EQ(ReadError(png).rfind(Path("input.png") + ": cannot decode PNG: ", 0), 0u)
+      << ReadError(png);
+}
+
+TEST_F(PngIoTest, ReportsMissingFile) {
+  try {
+    ReadPng(Path("missing.png"));
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), Path("missing.png") + ": cannot read: No such file or directory");
+  }
+}
+
+TEST(PngWriterTest, RefusesInconsistentImage) {
+  EXPECT_THROW(EncodePng({2, 2, Bytes(11)}), Error);
+  EXPECT_THROW(EncodePng({0, 0, {}}), Error);
+  try {
+    EncodePng({2, 2, Bytes(11)});
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "EncodePng: a 2x2 RGB image needs 12 bytes, got 11");
+  }
+}
+
+}  // namespace
+}  // namespace urdfsnap::image
