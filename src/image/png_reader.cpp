@@ -21,11 +21,7 @@
 #define STBI_NO_LINEAR
 #define STBI_NO_HDR
 #define STBI_MAX_DIMENSIONS 16384  // stb's own guard, the same as kMaxImageSide
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 #include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 namespace urdfsnap::image {
 namespace {

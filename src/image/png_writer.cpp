@@ -33,11 +33,7 @@ unsigned char* ZlibCompressFast(unsigned char* data, int data_len, int* out_len,
 #define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBI_WRITE_NO_STDIO
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 #include <stb/stb_image_write.h>
-#pragma GCC diagnostic pop
 
 namespace urdfsnap::image {
 namespace {

@@ -1,0 +1,89 @@
+// Image comparison on small known images: statistics, bounding box, size mismatch, diff colours.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "image/image_diff.h"
+
+namespace urdfsnap::image {
+namespace {
+
+// A width x height image of one colour.
+Image Filled(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+  Image image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3)};
+  for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
+    image.rgb[i] = r, image.rgb[i + 1] = g, image.rgb[i + 2] = b;
+  }
+  return image;
+}
+
+void SetPixel(Image& image, int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+  std::uint8_t* p = &image.rgb[3 * (std::size_t(y) * image.width + x)];
+  p[0] = r, p[1] = g, p[2] = b;
+}
+
+TEST(CompareImagesTest, IdenticalImages) {
+  const Image image = Filled(4, 3, 48, 48, 48);
+  const DiffStats stats = CompareImages(image, image, 0);
+  EXPECT_EQ(stats.max_delta, 0);
+  EXPECT_EQ(stats.mean_delta, 0);
+  EXPECT_EQ(stats.pixels_over, 0);
+  EXPECT_EQ(stats.fraction_over, 0);
+  EXPECT_EQ(stats.min_x, -1);
+  EXPECT_EQ(stats.min_y, -1);
+  EXPECT_EQ(stats.max_x, -1);
+  EXPECT_EQ(stats.max_y, -1);
+}
+
+TEST(CompareImagesTest, KnownDifferences) {
+  const Image expected = Filled(4, 3, 48, 48, 48);
+  Image actual = expected;
+  SetPixel(actual, 1, 0, 48, 58, 40);    // delta 10 (the largest channel difference)
+  SetPixel(actual, 3, 2, 255, 48, 48);   // delta 207
+  SetPixel(actual, 0, 1, 50, 48, 48);    // delta 2, under the threshold
+  const DiffStats stats = CompareImages(expected, actual, 2);
+  EXPECT_EQ(stats.max_delta, 207);
+  EXPECT_DOUBLE_EQ(stats.mean_delta, (10 + 207 + 2) / 12.0);
+  EXPECT_EQ(stats.pixels_over, 2);
+  EXPECT_DOUBLE_EQ(stats.fraction_over, 2 / 12.0);
+  EXPECT_EQ(stats.min_x, 1);
+  EXPECT_EQ(stats.min_y, 0);
+  EXPECT_EQ(stats.max_x, 3);
+  EXPECT_EQ(stats.max_y, 2);
+  // the threshold is exclusive: a delta equal to it is not over
+  EXPECT_EQ(CompareImages(expected, actual, 10).pixels_over, 1);
+  EXPECT_EQ(CompareImages(expected, actual, 1).pixels_over, 3);
+}
+
+TEST(CompareImagesTest, SizeMismatchNamesBothSizes) {
+  try {
+    CompareImages(Filled(640, 480, 0, 0, 0), Filled(320, 240, 0, 0, 0), 0);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "image sizes differ: expected 640x480, actual 320x240");
+  }
+  EXPECT_THROW(MakeDiffImage(Filled(2, 2, 0, 0, 0), Filled(2, 3, 0, 0, 0), 0), Error);
+}
+
+TEST(CompareImagesTest, InconsistentImageIsAnError) {
+  Image broken = Filled(2, 2, 0, 0, 0);
+  broken.rgb.pop_back();
+  EXPECT_THROW(CompareImages(Filled(2, 2, 0, 0, 0), broken, 0), Error);
+}
+
+TEST(MakeDiffImageTest, MagentaOverDimmedGrey) {
+  Image expected = Filled(3, 1, 0, 0, 0);
+  SetPixel(expected, 1, 0, 255, 255, 255);
+  SetPixel(expected, 2, 0, 255, 0, 0);
+  Image actual = expected;
+  SetPixel(actual, 2, 0, 0, 0, 0);
+  const Image diff = MakeDiffImage(expected, actual, 8);
+  EXPECT_EQ(diff.width, 3);
+  EXPECT_EQ(diff.height, 1);
+  // black -> 64, white -> 127 (luma squeezed into 64..127), the changed pixel magenta
+  EXPECT_EQ(diff.rgb, (std::vector<std::uint8_t>{64, 64, 64, 127, 127, 127, 255, 0, 255}));
+}
+
+}  // namespace
+}  // namespace urdfsnap::image
