@@ -1,0 +1,19 @@
+// The off-screen OpenGL context behind one small interface: OSMesa (llvmpipe) today, EGL later.
+// Rendering goes to framebuffer objects, so the context's own buffer is a 1x1 placeholder.
+#pragma once
+
+#include <memory>
+
+namespace urdfsnap::render {
+
+class GlContext {
+ public:
+  virtual ~GlContext() = default;
+  // Makes this context current on the calling thread.
+  virtual void MakeCurrent() = 0;
+};
+
+// An OpenGL 3.3 core-profile context from OSMesa. Throws urdfsnap::Error when Mesa cannot make one.
+std::unique_ptr<GlContext> CreateOsMesaContext();
+
+}  // namespace urdfsnap::render

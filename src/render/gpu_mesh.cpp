@@ -1,0 +1,47 @@
+// Upload and drawing of triangle meshes.
+#include "render/gpu_mesh.h"
+
+#include <vector>
+
+#include "render/gl_api.h"
+
+namespace urdfsnap::render {
+
+GpuMesh::GpuMesh(const geometry::TriangleMesh& mesh)
+    : index_count_(static_cast<int>(mesh.indices.size())) {
+  std::vector<float> interleaved;
+  interleaved.reserve(mesh.positions.size() * 6);
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    interleaved.insert(interleaved.end(), mesh.positions[i].data(), mesh.positions[i].data() + 3);
+    interleaved.insert(interleaved.end(), mesh.normals[i].data(), mesh.normals[i].data() + 3);
+  }
+  glGenVertexArrays(1, &vertex_array_);
+  glBindVertexArray(vertex_array_);
+  glGenBuffers(2, buffers_);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
+               interleaved.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[1]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+               static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+               mesh.indices.data(), GL_STATIC_DRAW);
+  const GLsizei stride = 6 * sizeof(float);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(3 * sizeof(float)));
+  glBindVertexArray(0);
+}
+
+GpuMesh::~GpuMesh() {
+  glDeleteBuffers(2, buffers_);
+  glDeleteVertexArrays(1, &vertex_array_);
+}
+
+void GpuMesh::Draw() const {
+  glBindVertexArray(vertex_array_);
+  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace urdfsnap::render

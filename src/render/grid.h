@@ -1,0 +1,23 @@
+// RViz's Grid display as line segments (src/rviz/ogre_helpers/grid.cpp, grid_display.cpp).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "render/scene.h"
+
+namespace urdfsnap::render {
+
+// The Grid display's properties with RViz's defaults (grid_display.cpp L54-99).
+struct GridOptions {
+  bool enabled = true;
+  int plane_cell_count = 10;                                 // cells per side
+  double cell_size = 1.0;                                    // m
+  Eigen::Vector3f colour{160 / 255.f, 160 / 255.f, 164 / 255.f};   // Qt::gray
+  float alpha = 0.5f;
+  Eigen::Vector3d offset{0, 0, 0};                           // m, in the fixed frame
+};
+
+// plane_cell_count + 1 lines per direction in the fixed frame's XY plane, centred on the offset.
+LineSet MakeGrid(const GridOptions& options);
+
+}  // namespace urdfsnap::render

@@ -1,0 +1,14 @@
+// RViz's unit shapes, tessellated once per process and shared by every draw item that uses them.
+#pragma once
+
+#include <memory>
+
+#include "geometry/triangle_mesh.h"
+
+namespace urdfsnap::render {
+
+const std::shared_ptr<const geometry::TriangleMesh>& UnitBoxMesh();
+const std::shared_ptr<const geometry::TriangleMesh>& UnitCylinderMesh();
+const std::shared_ptr<const geometry::TriangleMesh>& UnitSphereMesh();
+
+}  // namespace urdfsnap::render
