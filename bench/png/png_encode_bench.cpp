@@ -3,6 +3,8 @@
 // plus the step between them and the whole WritePng to disk. Counters give the file size, so that
 // the speed-up can be seen not to cost size.
 // usage: urdfsnap_png_bench [Google Benchmark flags]
+#include <benchmark/benchmark.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -10,8 +12,6 @@
 #include <filesystem>
 #include <string>
 #include <vector>
-
-#include <benchmark/benchmark.h>
 
 #include "image/png_writer.h"
 

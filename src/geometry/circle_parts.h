@@ -2,9 +2,8 @@
 // angles and a flat disc as a triangle fan. Internal to the geometry library.
 #pragma once
 
-#include <string_view>
-
 #include <Eigen/Core>
+#include <string_view>
 
 #include "geometry/triangle_mesh.h"
 

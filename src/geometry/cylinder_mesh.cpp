@@ -19,8 +19,8 @@ TriangleMesh MakeUnitCylinder(int segments) {
   for (int k = 0; k < segments; ++k) {
     const auto bottom = static_cast<std::uint32_t>(2 * k);
     const auto next_bottom = static_cast<std::uint32_t>(2 * ((k + 1) % segments));
-    mesh.indices.insert(mesh.indices.end(), {bottom, next_bottom, bottom + 1,
-                                             bottom + 1, next_bottom, next_bottom + 1});
+    mesh.indices.insert(mesh.indices.end(), {bottom, next_bottom, bottom + 1, bottom + 1,
+                                             next_bottom, next_bottom + 1});
   }
   internal::AppendDiscFan(mesh, 0.5f, /*faces_up=*/true, segments);
   internal::AppendDiscFan(mesh, -0.5f, /*faces_up=*/false, segments);

@@ -3,10 +3,9 @@
 // and silhouettes match RViz. Pure geometry: no GL, no URDF. Callers scale the unit meshes.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace urdfsnap::geometry {
 
@@ -24,17 +23,17 @@ struct TriangleMesh {
 // (24 vertices, 12 triangles), as rviz_cube.mesh. Scale by the URDF box size.
 TriangleMesh MakeUnitBox();
 
-// A cylinder of radius 0.5 along Z with z in [-0.5, 0.5] (rviz_cylinder.mesh lies along its Y axis;
-// RViz turns it +90 degrees about X, so it is stored here already turned). `segments` vertices around
-// at equal angles, one at angle 0 (+X); smooth radial side normals; flat caps as triangle fans around
-// a centre vertex. 4*segments+2 vertices, 4*segments triangles. Scale by (2r, 2r, length).
-// Throws urdfsnap::Error if segments < 3.
+// A cylinder of radius 0.5 along Z with z in [-0.5, 0.5] (rviz_cylinder.mesh lies along its Y
+// axis; RViz turns it +90 degrees about X in robot_link.cpp, so it is stored here already turned).
+// `segments` vertices around at equal angles, one at angle 0 (+X); smooth radial side normals; flat
+// caps as triangle fans around a centre vertex. 4*segments+2 vertices, 4*segments triangles. Scale
+// by (2r, 2r, length). Throws urdfsnap::Error if segments < 3.
 TriangleMesh MakeUnitCylinder(int segments = 40);
 
 // A geodesic icosphere of radius 0.5 as rviz_sphere.mesh: an icosahedron with a vertex at each pole
-// (+Z and -Z, each with 5 neighbours) whose edges are split in `edge_divisions` parts, projected onto
-// the sphere, with smooth normals. 10*d^2+2 vertices and 20*d^2 triangles; RViz's d = 6 gives 362
-// and 720. Scale by the URDF diameter. Throws urdfsnap::Error if edge_divisions < 1.
+// (+Z and -Z, each with 5 neighbours) whose edges are split in `edge_divisions` parts, projected
+// onto the sphere, with smooth normals. 10*d^2+2 vertices and 20*d^2 triangles; RViz's d = 6 gives
+// 362 and 720. Scale by the URDF diameter. Throws urdfsnap::Error if edge_divisions < 1.
 TriangleMesh MakeUnitSphere(int edge_divisions = 6);
 
 // RViz's arrow-head cone (rviz_cone.mesh turned like the cylinder): apex at z = +0.5, base of

@@ -1,4 +1,5 @@
-// Temporary-file-and-rename writing of whole files (PNG, and the HTML/XML/URDF other commands write).
+// Temporary-file-and-rename writing of whole files (PNG, and the HTML/XML/URDF other commands
+// write).
 #include "image/atomic_file.h"
 
 #include <fcntl.h>

@@ -26,7 +26,8 @@ void CheckComparable(const Image& expected, const Image& actual) {
 // The largest channel difference of pixel `i` (0..255).
 int PixelDelta(const Image& a, const Image& b, std::size_t i) {
   int delta = 0;
-  for (std::size_t c = 3 * i; c < 3 * i + 3; ++c) delta = std::max(delta, std::abs(a.rgb[c] - b.rgb[c]));
+  for (std::size_t c = 3 * i; c < 3 * i + 3; ++c)
+    delta = std::max(delta, std::abs(a.rgb[c] - b.rgb[c]));
   return delta;
 }
 

@@ -8,10 +8,10 @@ namespace urdfsnap::image {
 
 // A pixel's delta is the largest of its three channel differences (0..255).
 struct DiffStats {
-  int max_delta = 0;          // largest pixel delta
-  double mean_delta = 0;      // mean pixel delta over all pixels
-  double fraction_over = 0;   // pixels_over / pixel count
-  int pixels_over = 0;        // pixels whose delta exceeds the threshold
+  int max_delta = 0;                                   // largest pixel delta
+  double mean_delta = 0;                               // mean pixel delta over all pixels
+  double fraction_over = 0;                            // pixels_over / pixel count
+  int pixels_over = 0;                                 // pixels whose delta exceeds the threshold
   int min_x = -1, min_y = -1, max_x = -1, max_y = -1;  // their bounding box, inclusive; -1 if none
 };
 

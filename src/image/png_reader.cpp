@@ -3,8 +3,8 @@
 #include "image/png_reader.h"
 
 #include <array>
-#include <climits>
 #include <cerrno>
+#include <climits>
 #include <cstdint>
 #include <cstring>
 #include <fstream>

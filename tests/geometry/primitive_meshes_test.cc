@@ -1,6 +1,9 @@
 // Tessellated primitives checked by invariants (after Drake's internal_shape_meshes_test.cc):
 // counts as RViz's meshes have them, unit normals, outward counter-clockwise winding that agrees
 // with the vertex normals, closed surfaces, and areas converging to the analytic ones.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -8,9 +11,6 @@
 #include <set>
 #include <string>
 #include <utility>
-
-#include <Eigen/Geometry>
-#include <gtest/gtest.h>
 
 #include "common/error.h"
 #include "geometry/triangle_mesh.h"
@@ -123,21 +123,22 @@ TEST_P(PrimitiveMeshTest, WoundCounterClockwiseFromOutside) {
 TEST_P(PrimitiveMeshTest, ClosedSurface) { ExpectClosed(GetParam().make()); }
 TEST_P(PrimitiveMeshTest, FitsTheUnitBox) { ExpectWithinUnitBox(GetParam().make()); }
 
-INSTANTIATE_TEST_SUITE_P(
-    Rviz, PrimitiveMeshTest,
-    testing::Values(
-        // rviz_cube.mesh: 6 faces x 4 vertices, 2 triangles each
-        Shape{"box", MakeUnitBox, 24, 12},
-        // rviz_cylinder.mesh: 40 segments, 80 side and 2 x 40 cap triangles
-        Shape{"cylinder", [] { return MakeUnitCylinder(); }, 4 * 40 + 2, 160},
-        // rviz_sphere.mesh: icosahedron with edges split in 6
-        Shape{"sphere", [] { return MakeUnitSphere(); }, 362, 720},
-        Shape{"cone", [] { return MakeUnitCone(); }, 3 * 40 + 1, 80},
-        // the smallest allowed resolutions still make sound meshes
-        Shape{"cylinder3", [] { return MakeUnitCylinder(3); }, 14, 12},
-        Shape{"sphere1", [] { return MakeUnitSphere(1); }, 12, 20},
-        Shape{"cone3", [] { return MakeUnitCone(3); }, 10, 6}),
-    [](const testing::TestParamInfo<Shape>& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Rviz, PrimitiveMeshTest,
+                         testing::Values(
+                             // rviz_cube.mesh: 6 faces x 4 vertices, 2 triangles each
+                             Shape{"box", MakeUnitBox, 24, 12},
+                             // rviz_cylinder.mesh: 40 segments, 80 side and 2 x 40 cap triangles
+                             Shape{"cylinder", [] { return MakeUnitCylinder(); }, 4 * 40 + 2, 160},
+                             // rviz_sphere.mesh: icosahedron with edges split in 6
+                             Shape{"sphere", [] { return MakeUnitSphere(); }, 362, 720},
+                             Shape{"cone", [] { return MakeUnitCone(); }, 3 * 40 + 1, 80},
+                             // the smallest allowed resolutions still make sound meshes
+                             Shape{"cylinder3", [] { return MakeUnitCylinder(3); }, 14, 12},
+                             Shape{"sphere1", [] { return MakeUnitSphere(1); }, 12, 20},
+                             Shape{"cone3", [] { return MakeUnitCone(3); }, 10, 6}),
+                         [](const testing::TestParamInfo<Shape>& info) {
+                           return std::string(info.param.name);
+                         });
 
 TEST(BoxMeshTest, FacesAreFlatAndAxisAligned) {
   const TriangleMesh mesh = MakeUnitBox();

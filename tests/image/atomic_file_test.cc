@@ -1,5 +1,8 @@
 // Atomic file writing: the new content appears whole, and on every failure the old file stays as
 // it was and no temporary file is left beside it.
+#include "image/atomic_file.h"
+
+#include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -9,10 +12,7 @@
 #include <sstream>
 #include <string>
 
-#include <gtest/gtest.h>
-
 #include "common/error.h"
-#include "image/atomic_file.h"
 #include "image/png_writer.h"
 #include "temp_dir.h"
 
@@ -54,8 +54,7 @@ TEST_F(AtomicFileTest, FollowsUmaskNotMkstempMode) {
   const mode_t old_mask = ::umask(022);
   WriteFileAtomically(Path("out.png"), "x");
   ::umask(old_mask);
-  EXPECT_EQ(std::filesystem::status(Path("out.png")).permissions(),
-            std::filesystem::perms(0644));
+  EXPECT_EQ(std::filesystem::status(Path("out.png")).permissions(), std::filesystem::perms(0644));
 }
 
 TEST_F(AtomicFileTest, MissingDirectory) {

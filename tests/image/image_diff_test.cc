@@ -1,10 +1,11 @@
 // Image comparison on small known images: statistics, bounding box, size mismatch, diff colours.
-#include <string>
+#include "image/image_diff.h"
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "common/error.h"
-#include "image/image_diff.h"
 
 namespace urdfsnap::image {
 namespace {
@@ -39,9 +40,9 @@ TEST(CompareImagesTest, IdenticalImages) {
 TEST(CompareImagesTest, KnownDifferences) {
   const Image expected = Filled(4, 3, 48, 48, 48);
   Image actual = expected;
-  SetPixel(actual, 1, 0, 48, 58, 40);    // delta 10 (the largest channel difference)
-  SetPixel(actual, 3, 2, 255, 48, 48);   // delta 207
-  SetPixel(actual, 0, 1, 50, 48, 48);    // delta 2, under the threshold
+  SetPixel(actual, 1, 0, 48, 58, 40);   // delta 10 (the largest channel difference)
+  SetPixel(actual, 3, 2, 255, 48, 48);  // delta 207
+  SetPixel(actual, 0, 1, 50, 48, 48);   // delta 2, under the threshold
   const DiffStats stats = CompareImages(expected, actual, 2);
   EXPECT_EQ(stats.max_delta, 207);
   EXPECT_DOUBLE_EQ(stats.mean_delta, (10 + 207 + 2) / 12.0);

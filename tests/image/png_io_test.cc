@@ -1,13 +1,12 @@
 // PNG writing and reading: exact round trips with top-row-first order, colour-type conversion on
 // reading, and refusal of files that are not PNGs or claim an absurd size.
+#include <gtest/gtest.h>
 #include <zlib.h>
 
 #include <cstdint>
 #include <fstream>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "common/error.h"
 #include "image/png_reader.h"
@@ -34,7 +33,8 @@ void AppendChunk(Bytes& out, const char* type, const Bytes& data) {
 // A PNG made by hand, independent of the code under test: colour type 0 grey, 2 RGB, 6 RGBA; 8-bit
 // samples given row by row (top first) without filter bytes. An empty `samples` leaves out the
 // image data, for header-only files.
-Bytes HandMadePng(std::uint32_t width, std::uint32_t height, int colour_type, const Bytes& samples) {
+Bytes HandMadePng(std::uint32_t width, std::uint32_t height, int colour_type,
+                  const Bytes& samples) {
   Bytes png = {137, 80, 78, 71, 13, 10, 26, 10};
   Bytes header;
   AppendBigEndian32(header, width);
@@ -60,15 +60,17 @@ Bytes HandMadePng(std::uint32_t width, std::uint32_t height, int colour_type, co
 
 // A 3x2 image with a different colour in every pixel, so that swapped rows or columns show.
 Image SmallImage() {
-  return {3, 2, {255, 0, 0, 0, 255, 0, 0, 0, 255,  //
-                 1, 2, 3, 250, 251, 252, 48, 48, 48}};
+  return {3,
+          2,
+          {255, 0, 0, 0, 255, 0, 0, 0, 255,  //
+           1, 2, 3, 250, 251, 252, 48, 48, 48}};
 }
 
 class PngIoTest : public TempDirTest {
  protected:
   void WriteBytes(const std::string& path, const Bytes& bytes) {
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                                std::streamsize(bytes.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
   }
   std::string ReadError(const Bytes& file_bytes) {
     const std::string path = Path("input.png");
@@ -104,6 +106,30 @@ TEST_F(PngIoTest, EncodedRowsAreTopFirst) {
   EXPECT_TRUE(std::equal(hand.begin(), hand.begin() + 33, png.begin()));
 }
 
+// The speed of EncodePng comes from skipping stb's per-row filter search: every row must carry
+// filter type 0 in the deflated image data.
+TEST(PngWriterTest, RowFilterIsOff) {
+  // a ramp, which stb's search would encode with the "sub" filter
+  Image ramp{16, 2, Bytes(16 * 2 * 3)};
+  for (std::size_t i = 0; i < ramp.rgb.size(); ++i) ramp.rgb[i] = std::uint8_t(i * 5);
+  const Bytes png = EncodePng(ramp);
+  Bytes deflated;
+  for (std::size_t at = 8; at + 12 <= png.size();) {
+    const std::uint32_t length =
+        std::uint32_t(png[at]) << 24 | png[at + 1] << 16 | png[at + 2] << 8 | png[at + 3];
+    if (std::equal(png.begin() + at + 4, png.begin() + at + 8, "IDAT")) {
+      deflated.insert(deflated.end(), png.begin() + at + 8, png.begin() + at + 8 + length);
+    }
+    at += 12 + length;
+  }
+  Bytes rows(2 * (1 + 16 * 3));
+  uLongf size = uLongf(rows.size());
+  ASSERT_EQ(uncompress(rows.data(), &size, deflated.data(), uLong(deflated.size())), Z_OK);
+  ASSERT_EQ(size, rows.size());
+  EXPECT_EQ(rows[0], 0);
+  EXPECT_EQ(rows[1 + 16 * 3], 0);
+}
+
 TEST_F(PngIoTest, LargeImageRoundTrip) {
   Image image{640, 480, Bytes(640 * 480 * 3)};
   for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = std::uint8_t(i * 7 / 5);
@@ -126,7 +152,8 @@ TEST_F(PngIoTest, RgbaLosesAlpha) {
 TEST_F(PngIoTest, RefusesHugeDimensionsBeforeDecoding) {
   // only a header: if the reader believed it, it would allocate 30 GB
   const std::string message = ReadError(HandMadePng(100000, 100000, 2, {}));
-  EXPECT_EQ(message, Path("input.png") + ": PNG is 100000x100000 pixels; at most 16384x16384 is read");
+  EXPECT_EQ(message,
+            Path("input.png") + ": PNG is 100000x100000 pixels; at most 16384x16384 is read");
 }
 
 TEST_F(PngIoTest, RefusesWhatIsNotPng) {
@@ -148,7 +175,8 @@ TEST_F(PngIoTest, ReportsMissingFile) {
     ReadPng(Path("missing.png"));
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), Path("missing.png") + ": cannot read: No such file or directory");
+    EXPECT_EQ(std::string(e.what()),
+              Path("missing.png") + ": cannot read: No such file or directory");
   }
 }
 

@@ -1,11 +1,13 @@
 // A fresh directory under the system temp folder for one test, removed with everything in it.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <random>
 #include <string>
-
-#include <gtest/gtest.h>
+#include <vector>
 
 namespace urdfsnap::image {
 
