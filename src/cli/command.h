@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/warnings.h"
+
 namespace urdfsnap::cli {
 
 // Thrown by a command's callback to end the process with `code` after printing nothing more
@@ -12,7 +14,12 @@ struct CommandExit {
   int code;
 };
 
+// Prints each warning to stderr as "urdfsnap: warning: ...".
+void PrintWarnings(const Warnings& warnings);
+
 // Each subcommand file defines one of these; main.cpp calls them all.
+void AddRenderCommand(CLI::App& app);
+void AddInfoCommand(CLI::App& app);
 void AddXacroCommand(CLI::App& app);
 
 }  // namespace urdfsnap::cli

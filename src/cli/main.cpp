@@ -10,6 +10,8 @@ int main(int argc, char** argv) {
   CLI::App app{"urdfsnap: RViz-like PNG images of URDF/xacro robots, headless", "urdfsnap"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "urdfsnap 0.1.0");
+  urdfsnap::cli::AddRenderCommand(app);
+  urdfsnap::cli::AddInfoCommand(app);
   urdfsnap::cli::AddXacroCommand(app);
   try {
     app.parse(argc, argv);

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Builds urdfsnap and runs its benchmarks, printing their tables. Timings only; nothing asserts.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+"$root/scripts/build.sh"
+for b in "$root"/build/*_bench; do
+  [ -x "$b" ] || continue
+  echo "== $(basename "$b")"
+  "$b"
+done

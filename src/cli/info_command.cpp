@@ -1,0 +1,23 @@
+// `urdfsnap info`: the robot's links, joints (type, axis, limits, mimic) and tree.
+#include <cstdio>
+#include <memory>
+
+#include "cli/command.h"
+#include "cli/model_source.h"
+#include "model/robot_description.h"
+
+namespace urdfsnap::cli {
+
+void AddInfoCommand(CLI::App& app) {
+  auto model = std::make_shared<ModelSource>();
+  CLI::App* cmd = app.add_subcommand("info", "Print a robot's links, joints with type, axis and limits, and its tree");
+  model->AddOptions(*cmd);
+  cmd->callback([model] {
+    Warnings warnings;
+    const model::Robot robot = model->Load(warnings);
+    PrintWarnings(warnings);
+    std::fputs(model::DescribeRobot(robot).c_str(), stdout);
+  });
+}
+
+}  // namespace urdfsnap::cli

@@ -1,0 +1,131 @@
+// The urdfsnap binary as users meet it: exit statuses, one-line errors naming the culprit, and
+// output files that are either complete or untouched.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "image/png_reader.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSource = URDFSNAP_SOURCE_DIR;
+const std::string kMrm = (kSource / "models/mrm_description/urdf/mrm.urdf").string();
+
+struct Result {
+  int status;
+  std::string output;   // stdout and stderr together
+};
+
+Result Run(const std::string& arguments) {
+  const std::string command = std::string(URDFSNAP_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("urdfsnap_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string Write(const std::string& name, const std::string& text) const {
+    std::ofstream(Path(name)) << text;
+    return Path(name);
+  }
+  fs::path dir_;
+};
+
+TEST_F(CliTest, RendersThePngAtTheRequestedSize) {
+  const Result r = Run("render " + kMrm + " -o " + Path("a.png") + " --size 320x200 -j link_01__link_02=0.5");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output, "");
+  const auto image = urdfsnap::image::ReadPng(Path("a.png"));
+  EXPECT_EQ(image.width, 320);
+  EXPECT_EQ(image.height, 200);
+  // nothing but the PNG is left in the folder (the temporary file was renamed)
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
+TEST_F(CliTest, UnknownJointIsAnErrorListingTheMovableJoints) {
+  const Result r = Run("render " + kMrm + " -o " + Path("a.png") + " -j elbow=1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("urdfsnap: error: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'elbow'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("link_04__link_05"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(Path("a.png")));
+}
+
+TEST_F(CliTest, ValueOutsideTheLimitsIsClampedWithAWarning) {
+  const Result r = Run("render " + kMrm + " -o " + Path("a.png") + " -j link_01__link_02=5");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("urdfsnap: warning: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("link_01__link_02"), std::string::npos) << r.output;
+}
+
+TEST_F(CliTest, FailedRunLeavesAnExistingOutputUntouched) {
+  Write("a.png", "precious");
+  const Result r = Run("render " + Write("bad.urdf", "<robot name='x'><link name='a'></robot>") +
+                       " -o " + Path("a.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("bad.urdf:1"), std::string::npos) << r.output;
+  std::ifstream in(Path("a.png"));
+  std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(content, "precious");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2);
+}
+
+TEST_F(CliTest, BadOptionValuesAreUsageErrors) {
+  for (const std::string option : {"--size 0x10", "--size 20000x10", "--size abc", "--yaw nan",
+                                   "--focal 1,2", "--distance 1e999"}) {
+    const Result r = Run("render " + kMrm + " -o " + Path("a.png") + " " + option);
+    EXPECT_EQ(r.status, 2) << option;
+    EXPECT_NE(r.output.find("urdfsnap: error: --"), std::string::npos) << option << ": " << r.output;
+    EXPECT_FALSE(fs::exists(Path("a.png")));
+  }
+}
+
+TEST_F(CliTest, MissingModelIsAnError) {
+  const Result r = Run("render " + Path("nope.urdf") + " -o " + Path("a.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("nope.urdf"), std::string::npos) << r.output;
+}
+
+TEST_F(CliTest, JointFileSetsThePose) {
+  const std::string yaml = Write("pose.yaml", "link_01__link_02: 0.5\n");
+  const std::string json =
+      Write("pose.json", R"({"name": ["link_01__link_02"], "position": [0.5]})");
+  ASSERT_EQ(Run("render " + kMrm + " -o " + Path("a.png") + " --joints " + yaml).status, 0);
+  ASSERT_EQ(Run("render " + kMrm + " -o " + Path("b.png") + " --joints " + json).status, 0);
+  ASSERT_EQ(Run("render " + kMrm + " -o " + Path("c.png") + " -j link_01__link_02=0.5").status, 0);
+  const auto a = urdfsnap::image::ReadPng(Path("a.png"));
+  EXPECT_EQ(a.rgb, urdfsnap::image::ReadPng(Path("b.png")).rgb);
+  EXPECT_EQ(a.rgb, urdfsnap::image::ReadPng(Path("c.png")).rgb);
+}
+
+TEST_F(CliTest, InfoListsLinksJointsAndLimits) {
+  const Result r = Run("info " + kMrm);
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* text : {"mrm", "base_link", "link_05", "link_01__link_02", "revolute", "-3.14"}) {
+    EXPECT_NE(r.output.find(text), std::string::npos) << text << " in\n" << r.output;
+  }
+}
+
+}  // namespace
