@@ -1,0 +1,315 @@
+// Located checks of a URDF document before urdfdom sees it: urdfdom only logs "Failed to build
+// tree" through console_bridge, so every mistake it rejects is found here first with its line.
+#include "model/urdf_validation.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <set>
+#include <string_view>
+#include <vector>
+
+#include "common/error.h"
+#include "model/number_text.h"
+
+namespace urdfsnap::model {
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+// An attribute urdfdom reads: `count` numbers, or text when count is 0.
+struct AttributeRule {
+  const char* element;
+  const char* attribute;
+  int count;
+  bool required;
+};
+
+// What urdfdom 3 (link.cpp, joint.cpp, model.cpp, pose.cpp) parses and which of it it requires.
+constexpr AttributeRule kAttributeRules[] = {
+    {"origin", "xyz", 3, false},        {"origin", "rpy", 3, false},
+    {"axis", "xyz", 3, true},           {"box", "size", 3, true},
+    {"cylinder", "radius", 1, true},    {"cylinder", "length", 1, true},
+    {"sphere", "radius", 1, true},      {"mesh", "filename", 0, true},
+    {"mesh", "scale", 3, false},        {"color", "rgba", 4, true},
+    {"mass", "value", 1, true},         {"inertia", "ixx", 1, true},
+    {"inertia", "ixy", 1, true},        {"inertia", "ixz", 1, true},
+    {"inertia", "iyy", 1, true},        {"inertia", "iyz", 1, true},
+    {"inertia", "izz", 1, true},        {"limit", "lower", 1, false},
+    {"limit", "upper", 1, false},       {"limit", "effort", 1, true},
+    {"limit", "velocity", 1, true},     {"safety_controller", "soft_lower_limit", 1, false},
+    {"safety_controller", "soft_upper_limit", 1, false},
+    {"safety_controller", "k_position", 1, false},
+    {"safety_controller", "k_velocity", 1, true},
+    {"dynamics", "damping", 1, false},  {"dynamics", "friction", 1, false},
+    {"mimic", "joint", 0, true},        {"mimic", "multiplier", 1, false},
+    {"mimic", "offset", 1, false},      {"calibration", "rising", 1, false},
+    {"calibration", "falling", 1, false},
+};
+
+bool IsOneOf(std::string_view word, std::initializer_list<const char*> words) {
+  for (const char* w : words) {
+    if (word == w) return true;
+  }
+  return false;
+}
+
+std::string Quoted(const char* text) { return std::string("'") + (text ? text : "") + "'"; }
+
+class Validator {
+ public:
+  Validator(const XMLElement& robot, const std::string& source) : robot_(robot), source_(source) {}
+
+  void Run() {
+    if (!robot_.Attribute("name")) Fail(robot_, "<robot> has no name attribute");
+    CollectLinks();
+    CollectJoints();
+    for (const XMLElement* e = robot_.FirstChildElement("material"); e;
+         e = e->NextSiblingElement("material")) {
+      CheckAttributes(*e, "material " + Quoted(e->Attribute("name")));
+    }
+    for (const auto& [name, link] : links_) CheckLink(name, *link);
+    for (const JointInfo& joint : joints_) CheckJoint(joint);
+    CheckTree();
+    CheckMimicCircles();
+  }
+
+ private:
+  struct JointInfo {
+    const XMLElement* element;
+    std::string name;
+    std::string parent, child;
+  };
+
+  [[noreturn]] void Fail(const XMLElement& where, const std::string& message) const {
+    throw Error(SourceLocation{source_, where.GetLineNum()}, message);
+  }
+
+  // The name of a <link> or <joint>, which must be there and be unique.
+  std::string UniqueName(const XMLElement& e, const std::set<std::string>& seen) const {
+    const char* name = e.Attribute("name");
+    if (!name || !*name) Fail(e, std::string("<") + e.Name() + "> has no name attribute");
+    if (seen.count(name)) {
+      Fail(e, std::string(e.Name()) + " " + Quoted(name) + " is defined twice (first at line " +
+                  std::to_string(FirstLineOf(e.Name(), name)) + ")");
+    }
+    return name;
+  }
+
+  int FirstLineOf(const char* element, const char* name) const {
+    for (const XMLElement* e = robot_.FirstChildElement(element); e;
+         e = e->NextSiblingElement(element)) {
+      const char* n = e->Attribute("name");
+      if (n && std::strcmp(n, name) == 0) return e->GetLineNum();
+    }
+    return 0;
+  }
+
+  void CollectLinks() {
+    std::set<std::string> seen;
+    for (const XMLElement* e = robot_.FirstChildElement("link"); e;
+         e = e->NextSiblingElement("link")) {
+      const std::string name = UniqueName(*e, seen);
+      seen.insert(name);
+      links_[name] = e;
+      link_order_.push_back(name);
+    }
+    if (links_.empty()) {
+      Fail(robot_, "robot " + Quoted(robot_.Attribute("name")) + " has no <link>");
+    }
+  }
+
+  void CollectJoints() {
+    std::set<std::string> seen;
+    for (const XMLElement* e = robot_.FirstChildElement("joint"); e;
+         e = e->NextSiblingElement("joint")) {
+      const std::string name = UniqueName(*e, seen);
+      seen.insert(name);
+      JointInfo joint{e, name, LinkOfJoint(*e, name, "parent"), LinkOfJoint(*e, name, "child")};
+      joints_.push_back(joint);
+    }
+  }
+
+  // The link named by the joint's <parent link> or <child link>, which must exist.
+  std::string LinkOfJoint(const XMLElement& joint, const std::string& name,
+                          const char* role) const {
+    const XMLElement* e = joint.FirstChildElement(role);
+    const char* link = e ? e->Attribute("link") : nullptr;
+    if (!link) {
+      Fail(e ? *e : joint, "joint " + Quoted(name.c_str()) + " has no <" + role + " link=...>");
+    }
+    if (!links_.count(link)) {
+      Fail(*e, "joint " + Quoted(name.c_str()) + " names " + role + " link " + Quoted(link) +
+                   ", which is not defined");
+    }
+    return link;
+  }
+
+  // Checks the numbers and required attributes of `e` and everything inside it.
+  void CheckAttributes(const XMLElement& e, const std::string& owner) const {
+    for (const AttributeRule& rule : kAttributeRules) {
+      if (std::strcmp(e.Name(), rule.element) != 0) continue;
+      const char* value = e.Attribute(rule.attribute);
+      if (!value) {
+        if (rule.required) {
+          Fail(e, owner + ": <" + rule.element + "> has no " + rule.attribute + " attribute");
+        }
+      } else if (rule.count > 0 && !ParseNumbers(value, rule.count, nullptr)) {
+        Fail(e, owner + ": <" + rule.element + " " + rule.attribute + "=\"" + value +
+                    "\">: expected " + std::to_string(rule.count) +
+                    (rule.count == 1 ? " number" : " numbers"));
+      }
+    }
+    for (const XMLElement* child = e.FirstChildElement(); child;
+         child = child->NextSiblingElement()) {
+      CheckAttributes(*child, owner);
+    }
+  }
+
+  void CheckLink(const std::string& name, const XMLElement& link) const {
+    const std::string owner = "link " + Quoted(name.c_str());
+    CheckAttributes(link, owner);
+    for (const char* kind : {"visual", "collision"}) {
+      for (const XMLElement* v = link.FirstChildElement(kind); v;
+           v = v->NextSiblingElement(kind)) {
+        const XMLElement* geometry = v->FirstChildElement("geometry");
+        if (!geometry) Fail(*v, owner + ": <" + kind + "> has no <geometry>");
+        const XMLElement* shape = geometry->FirstChildElement();
+        if (!shape || !IsOneOf(shape->Name(), {"box", "cylinder", "sphere", "mesh"})) {
+          Fail(shape ? *shape : *geometry,
+               owner + ": <geometry> needs one of box, cylinder, sphere or mesh" +
+                   (shape ? std::string(", found <") + shape->Name() + ">" : std::string()));
+        }
+      }
+    }
+  }
+
+  void CheckJoint(const JointInfo& joint) const {
+    const XMLElement& e = *joint.element;
+    const std::string owner = "joint " + Quoted(joint.name.c_str());
+    const char* type = e.Attribute("type");
+    if (!type) Fail(e, owner + " has no type attribute");
+    if (!IsOneOf(type, {"revolute", "continuous", "prismatic", "fixed", "floating", "planar"})) {
+      Fail(e, owner + " has unknown type " + Quoted(type) +
+                  "; expected revolute, continuous, prismatic, fixed, floating or planar");
+    }
+    CheckAttributes(e, owner);
+
+    const XMLElement* limit = e.FirstChildElement("limit");
+    if (IsOneOf(type, {"revolute", "prismatic"})) {
+      if (!limit) Fail(e, owner + " is " + type + " but has no <limit>");
+      double lower = 0, upper = 0;
+      if (const char* text = limit->Attribute("lower")) ParseNumbers(text, 1, &lower);
+      if (const char* text = limit->Attribute("upper")) ParseNumbers(text, 1, &upper);
+      if (lower > upper) {
+        Fail(*limit, owner + ": lower limit " + limit->Attribute("lower") + " is above upper limit " +
+                         (limit->Attribute("upper") ? limit->Attribute("upper") : "0"));
+      }
+    }
+
+    const XMLElement* axis = e.FirstChildElement("axis");
+    if (axis && IsOneOf(type, {"revolute", "continuous", "prismatic", "planar"})) {
+      double xyz[3];
+      ParseNumbers(axis->Attribute("xyz"), 3, xyz);
+      if (xyz[0] == 0 && xyz[1] == 0 && xyz[2] == 0) Fail(*axis, owner + " has a zero axis");
+    }
+
+    if (const XMLElement* mimic = e.FirstChildElement("mimic")) {
+      const std::string leader = mimic->Attribute("joint");
+      if (leader == joint.name) Fail(*mimic, owner + " mimics itself");
+      if (!FindJoint(leader)) {
+        Fail(*mimic, owner + " mimics joint " + Quoted(leader.c_str()) + ", which is not defined");
+      }
+    }
+  }
+
+  const JointInfo* FindJoint(const std::string& name) const {
+    for (const JointInfo& joint : joints_) {
+      if (joint.name == name) return &joint;
+    }
+    return nullptr;
+  }
+
+  // One parent per link, exactly one root, every link reachable from it.
+  void CheckTree() const {
+    std::map<std::string, const JointInfo*> parent_joint;  // by child link
+    for (const JointInfo& joint : joints_) {
+      const auto [it, inserted] = parent_joint.emplace(joint.child, &joint);
+      if (!inserted) {
+        Fail(*joint.element, "link " + Quoted(joint.child.c_str()) +
+                                 " is the child of two joints: " + Quoted(it->second->name.c_str()) +
+                                 " (line " + std::to_string(it->second->element->GetLineNum()) +
+                                 ") and " + Quoted(joint.name.c_str()));
+      }
+    }
+    std::vector<std::string> roots;
+    for (const std::string& link : link_order_) {
+      if (!parent_joint.count(link)) roots.push_back(link);
+    }
+    if (roots.size() > 1) {
+      std::string list;
+      for (const std::string& root : roots) {
+        list += (list.empty() ? "" : ", ") + Quoted(root.c_str()) + " (line " +
+                std::to_string(links_.at(root)->GetLineNum()) + ")";
+      }
+      Fail(*links_.at(roots[1]), "robot " + Quoted(robot_.Attribute("name")) +
+                                     " has several root links (links without a parent joint): " +
+                                     list + "; a URDF tree has exactly one");
+    }
+    // with one parent each, a link the root cannot reach sits on a loop: walk up until a link
+    // repeats, then report the joint that closes the loop
+    for (const std::string& start : link_order_) {
+      std::vector<std::string> chain;
+      std::string link = start;
+      while (parent_joint.count(link)) {
+        const auto repeat = std::find(chain.begin(), chain.end(), link);
+        if (repeat != chain.end()) {
+          const JointInfo& closing = *parent_joint.at(chain.back());
+          std::string names;
+          for (auto it = chain.rbegin(); it.base() != repeat; ++it) {
+            names += Quoted(it->c_str()) + " -> ";
+          }
+          Fail(*closing.element, "joint " + Quoted(closing.name.c_str()) +
+                                     " closes a loop of links " + names + Quoted(chain.back().c_str()) +
+                                     " (parent to child); a URDF must be a tree");
+        }
+        chain.push_back(link);
+        link = parent_joint.at(link)->parent;
+      }
+    }
+  }
+
+  void CheckMimicCircles() const {
+    for (const JointInfo& joint : joints_) {
+      const XMLElement* own_mimic = joint.element->FirstChildElement("mimic");
+      std::vector<const JointInfo*> chain{&joint};
+      while (const XMLElement* mimic = chain.back()->element->FirstChildElement("mimic")) {
+        const JointInfo* leader = FindJoint(mimic->Attribute("joint"));
+        if (leader == &joint) {
+          std::string names;
+          for (const JointInfo* j : chain) names += Quoted(j->name.c_str()) + " -> ";
+          Fail(*own_mimic, "joint " + Quoted(joint.name.c_str()) +
+                               " mimics itself through a circle of mimic joints: " + names +
+                               Quoted(joint.name.c_str()));
+        }
+        if (std::find(chain.begin(), chain.end(), leader) != chain.end()) break;
+        chain.push_back(leader);
+      }
+    }
+  }
+
+  const XMLElement& robot_;
+  const std::string& source_;
+  std::map<std::string, const XMLElement*> links_;
+  std::vector<std::string> link_order_;
+  std::vector<JointInfo> joints_;
+};
+
+}  // namespace
+
+void ValidateUrdfDocument(const tinyxml2::XMLElement& robot, const std::string& source) {
+  Validator(robot, source).Run();
+}
+
+}  // namespace urdfsnap::model
