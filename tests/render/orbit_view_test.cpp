@@ -30,9 +30,9 @@ TEST(OrbitView, YawZeroLooksFromPlusX) {
   view.distance = 3;
   view.focal = {1, 2, 3};
   EXPECT_TRUE(EyePosition(view).isApprox(Eigen::Vector3d(4, 2, 3)));
-  // looking along -X with +Z up, the world +Y is on the image's left
-  const Eigen::Vector2d left = ProjectToPixels(view, {1, 2.5, 3}, 640, 480);
-  EXPECT_LT(left.x(), 320);
+  // looking along -X with +Z up, the world +Y is on the image's right
+  const Eigen::Vector2d right = ProjectToPixels(view, {1, 2.5, 3}, 640, 480);
+  EXPECT_GT(right.x(), 320);
   const Eigen::Vector2d up = ProjectToPixels(view, {1, 2, 3.5}, 640, 480);
   EXPECT_LT(up.y(), 240);  // +Z is up in the image
 }
