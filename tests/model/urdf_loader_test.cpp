@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "model/robot.h"
+#include "test_names.h"
 #include "test_robots.h"
 
 namespace urdfsnap::model {
@@ -164,11 +165,7 @@ TEST_P(BadUrdfTest, ErrorNamesFileLineAndCulprit) {
 
 INSTANTIATE_TEST_SUITE_P(Cases, BadUrdfTest, ::testing::ValuesIn(kBadUrdfCases),
                          [](const ::testing::TestParamInfo<BadUrdfCase>& info) {
-                           std::string name = info.param.what;
-                           for (char& c : name) {
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           }
-                           return name;
+                           return test::TestName(info.param.what);
                          });
 
 }  // namespace
