@@ -15,9 +15,11 @@ struct GridOptions {
   Eigen::Vector3f colour{160 / 255.f, 160 / 255.f, 164 / 255.f};   // Qt::gray
   float alpha = 0.5f;
   Eigen::Vector3d offset{0, 0, 0};                           // m, in the fixed frame
+  enum class Plane { kXY, kXZ, kYZ } plane = Plane::kXY;     // grid_display.cpp L90-94
 };
 
-// plane_cell_count + 1 lines per direction in the fixed frame's XY plane, centred on the offset.
+// plane_cell_count + 1 lines per direction in the chosen plane of the fixed frame, centred on the
+// offset.
 LineSet MakeGrid(const GridOptions& options);
 
 }  // namespace urdfsnap::render

@@ -16,6 +16,15 @@ namespace urdfsnap::render {
 
 // What the displays show, with RViz's defaults (robot_model_display.cpp L60-86,
 // visualization_manager.cpp L172-179).
+// The TF display's properties with RViz's defaults (tf_display.cpp L164-191); off unless asked.
+struct TfOptions {
+  bool enabled = false;
+  bool show_names = true;
+  bool show_axes = true;
+  bool show_arrows = true;
+  double marker_scale = 1.0;
+};
+
 struct SceneOptions {
   std::string fixed_frame;        // a link name; "" means the root link
   bool show_visual = true;        // RobotModel "Visual Enabled"
@@ -23,6 +32,7 @@ struct SceneOptions {
   double alpha = 1.0;             // RobotModel "Alpha", multiplies every material's alpha
   Eigen::Vector3f background{48 / 255.f, 48 / 255.f, 48 / 255.f};
   GridOptions grid;
+  TfOptions tf;
 };
 
 // Builds the scene for link poses X_RL (one per robot.links(), in the root frame R, as
