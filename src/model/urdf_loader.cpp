@@ -96,7 +96,8 @@ std::vector<Joint> ReadJoints(const tinyxml2::XMLElement& robot,
     joint.name = u->name;
     joint.type = ToJointType(u->type);
     joint.X_PJ = ToIsometry(u->parent_to_joint_origin_transform);
-    // urdfdom leaves a missing <axis> at (1, 0, 0); KDL, hence robot_state_publisher, normalises
+    // URDF's default axis is (1, 0, 0), which an <axis> without xyz also gets here; KDL, hence
+    // robot_state_publisher, normalises the axis
     const Eigen::Vector3d axis(u->axis.x, u->axis.y, u->axis.z);
     joint.axis = axis.squaredNorm() > 0 ? axis.normalized() : Eigen::Vector3d::UnitX();
     joint.has_limits = joint.type == JointType::kRevolute || joint.type == JointType::kPrismatic;

@@ -26,25 +26,40 @@ struct AttributeRule {
   bool required;
 };
 
-// What urdfdom 3 (link.cpp, joint.cpp, model.cpp, pose.cpp) parses and which of it it requires.
+// What urdfdom 3 (link.cpp, joint.cpp, model.cpp, pose.cpp) parses and which of it it requires
+// (checked against urdfdom 3.0.1: it lets a missing axis xyz, inertia term, mesh filename or
+// color rgba through).
 constexpr AttributeRule kAttributeRules[] = {
-    {"origin", "xyz", 3, false},        {"origin", "rpy", 3, false},
-    {"axis", "xyz", 3, true},           {"box", "size", 3, true},
-    {"cylinder", "radius", 1, true},    {"cylinder", "length", 1, true},
-    {"sphere", "radius", 1, true},      {"mesh", "filename", 0, true},
-    {"mesh", "scale", 3, false},        {"color", "rgba", 4, true},
-    {"mass", "value", 1, true},         {"inertia", "ixx", 1, true},
-    {"inertia", "ixy", 1, true},        {"inertia", "ixz", 1, true},
-    {"inertia", "iyy", 1, true},        {"inertia", "iyz", 1, true},
-    {"inertia", "izz", 1, true},        {"limit", "lower", 1, false},
-    {"limit", "upper", 1, false},       {"limit", "effort", 1, true},
-    {"limit", "velocity", 1, true},     {"safety_controller", "soft_lower_limit", 1, false},
+    {"origin", "xyz", 3, false},
+    {"origin", "rpy", 3, false},
+    {"axis", "xyz", 3, false},
+    {"box", "size", 3, true},
+    {"cylinder", "radius", 1, true},
+    {"cylinder", "length", 1, true},
+    {"sphere", "radius", 1, true},
+    {"mesh", "scale", 3, false},
+    {"color", "rgba", 4, false},
+    {"mass", "value", 1, true},
+    {"inertia", "ixx", 1, false},
+    {"inertia", "ixy", 1, false},
+    {"inertia", "ixz", 1, false},
+    {"inertia", "iyy", 1, false},
+    {"inertia", "iyz", 1, false},
+    {"inertia", "izz", 1, false},
+    {"limit", "lower", 1, false},
+    {"limit", "upper", 1, false},
+    {"limit", "effort", 1, true},
+    {"limit", "velocity", 1, true},
+    {"safety_controller", "soft_lower_limit", 1, false},
     {"safety_controller", "soft_upper_limit", 1, false},
     {"safety_controller", "k_position", 1, false},
     {"safety_controller", "k_velocity", 1, true},
-    {"dynamics", "damping", 1, false},  {"dynamics", "friction", 1, false},
-    {"mimic", "joint", 0, true},        {"mimic", "multiplier", 1, false},
-    {"mimic", "offset", 1, false},      {"calibration", "rising", 1, false},
+    {"dynamics", "damping", 1, false},
+    {"dynamics", "friction", 1, false},
+    {"mimic", "joint", 0, true},
+    {"mimic", "multiplier", 1, false},
+    {"mimic", "offset", 1, false},
+    {"calibration", "rising", 1, false},
     {"calibration", "falling", 1, false},
 };
 
@@ -209,7 +224,8 @@ class Validator {
     }
 
     const XMLElement* axis = e.FirstChildElement("axis");
-    if (axis && IsOneOf(type, {"revolute", "continuous", "prismatic", "planar"})) {
+    if (axis && axis->Attribute("xyz") &&
+        IsOneOf(type, {"revolute", "continuous", "prismatic", "planar"})) {
       double xyz[3];
       ParseNumbers(axis->Attribute("xyz"), 3, xyz);
       if (xyz[0] == 0 && xyz[1] == 0 && xyz[2] == 0) Fail(*axis, owner + " has a zero axis");

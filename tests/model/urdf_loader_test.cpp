@@ -62,6 +62,17 @@ TEST(UrdfLoaderTest, MimicJointsPointAtTheirLeader) {
   EXPECT_EQ(robot.joints()[robot.FindJoint("slide")].type, JointType::kPrismatic);
 }
 
+TEST(UrdfLoaderTest, AnAxisWithoutXyzIsUrdfsDefaultX) {
+  Warnings warnings;
+  const Robot robot = LoadRobot(
+      R"(<robot name="r"><link name="a"/><link name="b"/>
+           <joint name="j" type="continuous"><parent link="a"/><child link="b"/><axis/></joint>
+         </robot>)",
+      "axis.urdf", warnings);
+  EXPECT_EQ(robot.joints()[0].axis, Eigen::Vector3d::UnitX());
+  EXPECT_TRUE(warnings.empty());
+}
+
 struct BadUrdfCase {
   const char* what;
   const char* urdf;
