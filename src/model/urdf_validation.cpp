@@ -218,8 +218,8 @@ class Validator {
       if (const char* text = limit->Attribute("lower")) ParseNumbers(text, 1, &lower);
       if (const char* text = limit->Attribute("upper")) ParseNumbers(text, 1, &upper);
       if (lower > upper) {
-        Fail(*limit, owner + ": lower limit " + limit->Attribute("lower") + " is above upper limit " +
-                         (limit->Attribute("upper") ? limit->Attribute("upper") : "0"));
+        Fail(*limit, owner + ": lower limit " + FormatNumber(lower) + " is above upper limit " +
+                         FormatNumber(upper));
       }
     }
 

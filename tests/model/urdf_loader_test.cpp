@@ -117,6 +117,10 @@ const BadUrdfCase kBadUrdfCases[] = {
      TWO_LINKS("<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>\n"
                "<limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/></joint>"),
      "5: joint 'j': lower limit 1 is above upper limit -1"},
+    {"lower above a missing upper",
+     TWO_LINKS("<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>\n"
+               "<limit lower=\"0.5\" effort=\"1\" velocity=\"1\"/></joint>"),
+     "5: joint 'j': lower limit 0.5 is above upper limit 0"},
     {"unparsable origin",
      TWO_LINKS("<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/>\n"
                "<origin xyz=\"0 0 x\"/></joint>"),
