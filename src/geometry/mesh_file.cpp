@@ -1,0 +1,198 @@
+// Mesh file loading through assimp, following RViz 1.14's src/rviz/mesh_loader.cpp step by step,
+// and a process-wide cache of the results.
+#include "geometry/mesh_file.h"
+
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <tinyxml2.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <future>
+#include <iterator>
+#include <map>
+#include <mutex>
+#include <system_error>
+
+#include "common/error.h"
+
+namespace urdfsnap::geometry {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// loadMeshFromResource() in mesh_loader.cpp: exactly these post-processing steps. FindInvalidData
+// drops normals that are all zero (or all equal), and GenNormals then builds flat normals from the
+// winding only where a mesh has none, so STL files render faceted; no JoinIdenticalVertices and
+// no smoothing.
+constexpr unsigned kRvizImportFlags = aiProcess_SortByPType | aiProcess_FindInvalidData |
+                                      aiProcess_GenNormals | aiProcess_Triangulate |
+                                      aiProcess_GenUVCoords | aiProcess_FlipUVs;
+
+// loadMaterials() in mesh_loader.cpp picks materials by the file's extension: ".stl" and ".stlb"
+// (any case) get Ogre's BaseWhiteNoLighting, which robot_link.cpp replaces by the link's material.
+bool IsStlFile(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".stl" || ext == ".stlb";
+}
+
+// getMeshUnitRescale() in mesh_loader.cpp: <COLLADA><asset><unit meter="..."> of a file that
+// parses as XML, else 1. assimp also folds the unit into the root node's transform, but RViz drops
+// that transform (see AddNode) and applies this factor instead. Only files starting with '<' are
+// parsed: nothing else can be an XML document with a COLLADA element.
+float UnitRescale(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(256, '\0');
+  head.resize(in.read(head.data(), head.size()).gcount());
+  const size_t first = head.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+  if (first == std::string::npos || head[first] != '<') return 1.f;
+  in.clear();
+  in.seekg(0);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) return 1.f;
+  const tinyxml2::XMLElement* collada = doc.FirstChildElement("COLLADA");
+  const tinyxml2::XMLElement* asset = collada ? collada->FirstChildElement("asset") : nullptr;
+  const tinyxml2::XMLElement* unit = asset ? asset->FirstChildElement("unit") : nullptr;
+  float scale = 1.f;
+  if (unit) unit->QueryFloatAttribute("meter", &scale);  // a bad value leaves 1, as in RViz
+  return scale;
+}
+
+// loadMaterials() in mesh_loader.cpp: the diffuse colour starts white and "$clr.diffuse" sets it
+// with alpha 1. RViz's branch for opacity compares the key with "$clr.opacity", but assimp stores
+// opacity as "$mat.opacity" (AI_MATKEY_OPACITY), so the branch never runs: every mesh material is
+// opaque in RViz 1.14, and so here.
+Eigen::Vector4f Diffuse(const aiMaterial& material) {
+  aiColor3D c(1, 1, 1);
+  material.Get(AI_MATKEY_COLOR_DIFFUSE, c);
+  return {c.r, c.g, c.b, 1.f};
+}
+
+// loadMaterials() in mesh_loader.cpp: "$clr.emissive" becomes the material's self-illumination.
+Eigen::Vector3f Emissive(const aiMaterial& material) {
+  aiColor3D c(0, 0, 0);
+  material.Get(AI_MATKEY_COLOR_EMISSIVE, c);
+  return {c.r, c.g, c.b};
+}
+
+struct Builder {
+  const fs::path& path;
+  const aiScene& scene;
+  float unit_scale;
+  bool is_stl;
+  MeshFile& out;
+
+  // buildMesh() in mesh_loader.cpp: a node's meshes are placed by the node's transform times
+  // those of its ancestors except the root ("Don't convert to y-up orientation, which is what the
+  // root node in Assimp does"), so the root's up-axis rotation (and its unit scale, applied again
+  // as unit_scale) is dropped, except for meshes attached to the root itself. Positions are then
+  // scaled by unit_scale; normals go through the inverse transpose and are renormalised.
+  // `above` is the product of the transforms between the root (excluded) and `node`.
+  void AddNode(const aiNode& node, const aiMatrix4x4& above) {
+    const aiMatrix4x4 transform = above * node.mTransformation;
+    Eigen::Matrix4f X;
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) X(r, c) = transform[r][c];
+    }
+    const Eigen::Matrix3f linear = X.topLeftCorner<3, 3>();
+    const Eigen::Vector3f translation = X.topRightCorner<3, 1>();
+    const Eigen::Matrix3f normal_matrix = linear.inverse().transpose();
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) AddMesh(*scene.mMeshes[node.mMeshes[i]], linear, translation, normal_matrix);
+    const aiMatrix4x4 below = node.mParent ? transform : aiMatrix4x4();
+    for (unsigned i = 0; i < node.mNumChildren; ++i) AddNode(*node.mChildren[i], below);
+  }
+
+  void AddMesh(const aiMesh& in, const Eigen::Matrix3f& linear, const Eigen::Vector3f& translation,
+               const Eigen::Matrix3f& normal_matrix) {
+    // SortByPType leaves point and line meshes apart; RViz would draw their indices as triangles
+    if (!(in.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) return;
+    if (!in.HasNormals()) throw Error(SourceLocation{path.string()}, "mesh '" + std::string(in.mName.C_Str()) + "' has no normals after import");
+    out.triangle_count += in.mNumFaces;
+    if (out.triangle_count > kMaxMeshTriangles) {
+      throw Error(SourceLocation{path.string()}, "more than " + std::to_string(kMaxMeshTriangles) + " triangles");
+    }
+    MeshPart part;
+    part.takes_urdf_material = is_stl;
+    if (!is_stl) {
+      part.diffuse = Diffuse(*scene.mMaterials[in.mMaterialIndex]);
+      part.emissive = Emissive(*scene.mMaterials[in.mMaterialIndex]);
+    }
+    TriangleMesh& mesh = part.mesh;
+    mesh.positions.reserve(in.mNumVertices);
+    mesh.normals.reserve(in.mNumVertices);
+    for (unsigned v = 0; v < in.mNumVertices; ++v) {
+      const aiVector3D& p = in.mVertices[v];
+      const aiVector3D& n = in.mNormals[v];
+      mesh.positions.push_back(unit_scale * (linear * Eigen::Vector3f(p.x, p.y, p.z) + translation));
+      mesh.normals.push_back((normal_matrix * Eigen::Vector3f(n.x, n.y, n.z)).normalized());
+    }
+    mesh.indices.reserve(3 * std::size_t{in.mNumFaces});
+    for (unsigned f = 0; f < in.mNumFaces; ++f) {
+      const aiFace& face = in.mFaces[f];
+      if (face.mNumIndices == 3) mesh.indices.insert(mesh.indices.end(), face.mIndices, face.mIndices + 3);
+    }
+    out.parts.push_back(std::move(part));
+  }
+};
+
+MeshFile Load(const fs::path& path) {
+  const SourceLocation where{path.string()};
+  std::error_code ec;
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if (ec) throw Error(where, "cannot read mesh file: " + ec.message());
+  if (bytes > kMaxMeshFileBytes) {
+    throw Error(where, "mesh file of " + std::to_string(bytes >> 20) + " MiB is over the limit of " +
+                           std::to_string(kMaxMeshFileBytes >> 20) + " MiB");
+  }
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path.string(), kRvizImportFlags);
+  if (!scene || !scene->mRootNode) throw Error(where, std::string("cannot read mesh file: ") + importer.GetErrorString());
+  MeshFile file;
+  Builder{path, *scene, UnitRescale(path), IsStlFile(path), file}.AddNode(*scene->mRootNode, aiMatrix4x4());
+  if (file.parts.empty()) throw Error(where, "no triangles in the mesh file");  // RViz: "No meshes found in file"
+  return file;
+}
+
+}  // namespace
+
+std::shared_ptr<const MeshFile> LoadMeshFile(const std::string& path) {
+  std::error_code ec;
+  const fs::path canonical = fs::canonical(path, ec);
+  if (ec) throw Error(SourceLocation{path}, "cannot read mesh file: " + ec.message());
+
+  // one load per file: the first caller loads, concurrent callers of the same file wait for it
+  using Result = std::shared_future<std::shared_ptr<const MeshFile>>;
+  static std::mutex mutex;
+  static std::map<std::string, Result> cache;
+  std::promise<std::shared_ptr<const MeshFile>> promise;
+  Result result;
+  bool first = false;
+  {
+    std::lock_guard lock(mutex);
+    auto [it, inserted] = cache.try_emplace(canonical.string());
+    if (inserted) it->second = promise.get_future().share();
+    result = it->second;
+    first = inserted;
+  }
+  if (first) {
+    try {
+      promise.set_value(std::make_shared<const MeshFile>(Load(canonical)));
+    } catch (...) {
+      // callers already waiting get the error; later ones try again
+      promise.set_exception(std::current_exception());
+      std::lock_guard lock(mutex);
+      cache.erase(canonical.string());
+    }
+  }
+  return result.get();
+}
+
+}  // namespace urdfsnap::geometry
