@@ -1,13 +1,108 @@
-// `urdfsnap xacro`: placeholder until the xacro processor lands (issue 3).
+// `urdfsnap xacro FILE [NAME:=VALUE...] [-o OUT] [--inorder|-i] [--xacro-ns] [--deps]
+// [--package PKG=DIR]`: a drop-in for ROS's xacro command, printing the expanded document (or the
+// dependencies) as it does and exiting 2 on errors.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
 #include "cli/command.h"
 #include "common/error.h"
+#include "common/warnings.h"
+#include "xacro/xacro.h"
 
 namespace urdfsnap::cli {
+namespace {
+
+struct XacroFlags {
+  std::string file;
+  std::vector<std::string> words;
+  std::string output;
+  std::vector<std::string> packages;
+  bool inorder = false;
+  bool xacro_ns = false;
+  bool deps = false;
+  bool quiet = false;
+};
+
+// Writes `text` to `path` through a temporary file beside it, renamed into place.
+void WriteAtomically(const std::string& path, const std::string& text) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  std::error_code ec;
+  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+  const fs::path temp = target.string() + ".tmp." + std::to_string(getpid());
+  {
+    std::ofstream out(temp, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw Error("cannot write '" + temp.string() + "'");
+  }
+  fs::rename(temp, target, ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    throw Error("cannot write '" + path + "'");
+  }
+}
+
+void Run(const XacroFlags& flags) {
+  xacro::Options options;
+  options.xacro_ns = flags.xacro_ns;
+  for (const std::string& word : flags.words) {
+    const size_t sep = word.find(":=");
+    if (sep == std::string::npos) throw Error("xacro: unexpected argument '" + word + "' (expected NAME:=VALUE)");
+    options.args.emplace_back(word.substr(0, sep), word.substr(sep + 2));
+  }
+  for (const std::string& p : flags.packages) {
+    const size_t sep = p.find('=');
+    if (sep == std::string::npos || sep == 0) throw Error("--package expects PKG=DIR, got '" + p + "'");
+    options.packages[p.substr(0, sep)] = p.substr(sep + 1);
+  }
+  if (flags.inorder) {
+    std::fprintf(stderr, "xacro: in-order processing became default in ROS Melodic. You can drop the option.\n");
+  }
+  Warnings warnings;
+  xacro::Result result;
+  try {
+    result = xacro::ExpandFile(flags.file, options, warnings);
+  } catch (...) {
+    for (const std::string& w : warnings.messages()) std::fprintf(stderr, "urdfsnap: warning: %s\n", w.c_str());
+    throw;
+  }
+  for (const std::string& w : warnings.messages()) std::fprintf(stderr, "urdfsnap: warning: %s\n", w.c_str());
+  std::string text;
+  if (flags.deps) {
+    for (const std::string& d : result.dependencies) text += (text.empty() ? "" : " ") + d;
+  } else {
+    text = result.xml;
+  }
+  if (flags.output.empty()) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fflush(stdout);
+  } else {
+    WriteAtomically(flags.output, text);
+  }
+}
+
+}  // namespace
 
 void AddXacroCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("xacro", "Expand a xacro file to URDF");
-  cmd->allow_extras();
-  cmd->callback([] { throw Error("xacro: not implemented yet"); });
+  auto flags = std::make_shared<XacroFlags>();
+  auto* cmd = app.add_subcommand("xacro", "Expand a xacro file to URDF (a drop-in for ROS's xacro)");
+  cmd->add_option("file", flags->file, "The xacro file")->required();
+  cmd->add_option("args", flags->words, "NAME:=VALUE arguments");
+  cmd->add_option("-o,--output", flags->output, "Write to this file instead of stdout");
+  cmd->add_flag("-i,--inorder", flags->inorder, "Accepted for compatibility (in-order is the default)");
+  cmd->add_flag("--xacro-ns", flags->xacro_ns,
+                "Modern strict behaviour: tags without the xacro: prefix are never macro calls");
+  cmd->add_flag("--deps", flags->deps, "Print the files the document depends on instead of the document");
+  cmd->add_flag("-q", flags->quiet, "Accepted for compatibility");
+  cmd->add_option("--package", flags->packages, "PKG=DIR: where $(find PKG) points (repeatable)");
+  cmd->callback([flags] { Run(*flags); });
 }
 
 }  // namespace urdfsnap::cli

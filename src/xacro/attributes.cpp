@@ -1,0 +1,396 @@
+// Python attribute access and the methods of the builtin types that xacro files use.
+#include "xacro/attributes.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "xacro/operators.h"
+#include "xacro/symbol_table.h"
+
+namespace urdfsnap::xacro {
+
+void CheckArity(const std::string& function, const ValueList& args, size_t min, size_t max) {
+  if (args.size() < min || args.size() > max) {
+    throw EvalError(function + "() takes " + (min == max ? "exactly " + std::to_string(min) :
+                                              "from " + std::to_string(min) + " to " + std::to_string(max)) +
+                    " arguments (" + std::to_string(args.size()) + " given)");
+  }
+}
+
+const std::string& StrArg(const std::string& function, const ValueList& args, size_t index) {
+  if (args[index].type != Value::Type::kStr) {
+    throw EvalError(function + "() argument must be str, not " + TypeName(args[index]));
+  }
+  return args[index].s;
+}
+
+namespace {
+
+const char* const kSpace = " \t\n\r\f\v";
+
+Value Bind(const std::string& name, std::function<Value(ValueList&)> body) {
+  return Value::Callable(name, [name, body = std::move(body)](ValueList& args, Kwargs& kwargs) {
+    if (!kwargs.empty()) throw EvalError(name + "() takes no keyword arguments");
+    return body(args);
+  });
+}
+
+ValueList Split(const std::string& s, const Value* sep, long maxsplit, bool from_right) {
+  ValueList parts;
+  if (!sep || sep->type == Value::Type::kNone) {
+    std::vector<std::string> words;
+    size_t k = 0;
+    while (true) {
+      k = s.find_first_not_of(kSpace, k);
+      if (k == std::string::npos) break;
+      const size_t e = s.find_first_of(kSpace, k);
+      words.push_back(s.substr(k, e == std::string::npos ? std::string::npos : e - k));
+      if (e == std::string::npos) break;
+      k = e;
+    }
+    if (maxsplit >= 0 && static_cast<long>(words.size()) > maxsplit + 1) {
+      // rejoining keeps it simple: re-split with the original text
+      std::vector<std::string> limited;
+      if (!from_right) {
+        size_t pos = 0;
+        for (long n = 0; n < maxsplit; ++n) {
+          pos = s.find_first_not_of(kSpace, pos);
+          const size_t e = s.find_first_of(kSpace, pos);
+          limited.push_back(s.substr(pos, e - pos));
+          pos = e;
+        }
+        pos = s.find_first_not_of(kSpace, pos);
+        limited.push_back(s.substr(pos, s.find_last_not_of(kSpace) - pos + 1));
+        words = limited;
+      } else {
+        std::vector<std::string> tail(words.end() - maxsplit, words.end());
+        size_t end = s.size();
+        for (long n = 0; n < maxsplit; ++n) {
+          end = s.find_last_not_of(kSpace, end - 1);
+          end = s.find_last_of(kSpace, end);
+        }
+        const size_t b = s.find_first_not_of(kSpace);
+        limited.push_back(s.substr(b, s.find_last_not_of(kSpace, end) - b + 1));
+        limited.insert(limited.end(), tail.begin(), tail.end());
+        words = limited;
+      }
+    }
+    for (auto& w : words) parts.push_back(Value::Str(w));
+    return parts;
+  }
+  if (sep->type != Value::Type::kStr) throw EvalError("must be str or None, not " + TypeName(*sep));
+  if (sep->s.empty()) throw EvalError("empty separator");
+  std::vector<std::string> pieces;
+  size_t k = 0;
+  while (true) {
+    const size_t e = s.find(sep->s, k);
+    if (e == std::string::npos) {
+      pieces.push_back(s.substr(k));
+      break;
+    }
+    pieces.push_back(s.substr(k, e - k));
+    k = e + sep->s.size();
+  }
+  if (maxsplit >= 0 && static_cast<long>(pieces.size()) > maxsplit + 1) {
+    std::vector<std::string> limited;
+    if (!from_right) {
+      limited.assign(pieces.begin(), pieces.begin() + maxsplit);
+      std::string rest;
+      for (size_t n = static_cast<size_t>(maxsplit); n < pieces.size(); ++n) rest += (n > static_cast<size_t>(maxsplit) ? sep->s : "") + pieces[n];
+      limited.push_back(rest);
+    } else {
+      std::string rest;
+      const size_t keep = pieces.size() - static_cast<size_t>(maxsplit);
+      for (size_t n = 0; n < keep; ++n) rest += (n ? sep->s : "") + pieces[n];
+      limited.push_back(rest);
+      limited.insert(limited.end(), pieces.begin() + static_cast<long>(keep), pieces.end());
+    }
+    pieces = limited;
+  }
+  for (auto& p : pieces) parts.push_back(Value::Str(p));
+  return parts;
+}
+
+std::string Strip(const std::string& s, const ValueList& args, bool left, bool right) {
+  const std::string chars = args.empty() || args[0].type == Value::Type::kNone ? kSpace : args[0].s;
+  size_t b = 0, e = s.size();
+  if (left) {
+    b = s.find_first_not_of(chars);
+    if (b == std::string::npos) return "";
+  }
+  if (right) {
+    const size_t last = s.find_last_not_of(chars);
+    if (last == std::string::npos) return "";
+    e = last + 1;
+  }
+  return b < e ? s.substr(b, e - b) : "";
+}
+
+std::string MapChars(std::string s, int (*f)(int)) {
+  for (char& c : s) c = static_cast<char>(f(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool AllChars(const std::string& s, int (*f)(int)) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [f](char c) { return f(static_cast<unsigned char>(c)) != 0; });
+}
+
+Value StrMethod(const std::string& s, const std::string& name) {
+  const std::string full = "str." + name;
+  if (name == "upper") return Bind(full, [s](ValueList&) { return Value::Str(MapChars(s, ::toupper)); });
+  if (name == "lower") return Bind(full, [s](ValueList&) { return Value::Str(MapChars(s, ::tolower)); });
+  if (name == "capitalize") {
+    return Bind(full, [s](ValueList&) {
+      std::string r = MapChars(s, ::tolower);
+      if (!r.empty()) r[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(r[0])));
+      return Value::Str(r);
+    });
+  }
+  if (name == "title") {
+    return Bind(full, [s](ValueList&) {
+      std::string r = s;
+      bool start = true;
+      for (char& c : r) {
+        const bool alpha = std::isalpha(static_cast<unsigned char>(c));
+        c = static_cast<char>(start ? std::toupper(static_cast<unsigned char>(c)) : std::tolower(static_cast<unsigned char>(c)));
+        start = !alpha;
+      }
+      return Value::Str(r);
+    });
+  }
+  if (name == "swapcase") {
+    return Bind(full, [s](ValueList&) {
+      std::string r = s;
+      for (char& c : r) {
+        const unsigned char u = static_cast<unsigned char>(c);
+        c = static_cast<char>(std::isupper(u) ? std::tolower(u) : std::toupper(u));
+      }
+      return Value::Str(r);
+    });
+  }
+  if (name == "strip" || name == "lstrip" || name == "rstrip") {
+    return Bind(full, [s, name](ValueList& a) {
+      CheckArity(name, a, 0, 1);
+      return Value::Str(Strip(s, a, name != "rstrip", name != "lstrip"));
+    });
+  }
+  if (name == "split" || name == "rsplit") {
+    return Value::Callable(full, [s, name](ValueList& a, Kwargs& kw) {
+      const Value* sep = a.empty() ? nullptr : &a[0];
+      long maxsplit = a.size() > 1 ? AsIndex(a[1], "maxsplit") : -1;
+      for (auto& [k, v] : kw) {
+        if (k == "sep") sep = &v;
+        else if (k == "maxsplit") maxsplit = AsIndex(v, "maxsplit");
+        else throw EvalError(name + "() got an unexpected keyword argument '" + k + "'");
+      }
+      return Value::List(Split(s, sep, maxsplit, name == "rsplit"));
+    });
+  }
+  if (name == "splitlines") {
+    return Bind(full, [s](ValueList&) {
+      ValueList out;
+      size_t k = 0;
+      while (k < s.size()) {
+        size_t e = s.find_first_of("\r\n", k);
+        if (e == std::string::npos) e = s.size();
+        out.push_back(Value::Str(s.substr(k, e - k)));
+        k = e + ((e + 1 < s.size() && s[e] == '\r' && s[e + 1] == '\n') ? 2 : 1);
+      }
+      return Value::List(out);
+    });
+  }
+  if (name == "join") {
+    return Bind(full, [s](ValueList& a) {
+      CheckArity("join", a, 1, 1);
+      std::string out;
+      bool first = true;
+      for (const Value& item : Iterate(a[0])) {
+        if (item.type != Value::Type::kStr) {
+          throw EvalError("sequence item: expected str instance, " + TypeName(item) + " found");
+        }
+        if (!first) out += s;
+        first = false;
+        out += item.s;
+        if (out.size() > kMaxItems) throw EvalError("string too large");
+      }
+      return Value::Str(out);
+    });
+  }
+  if (name == "replace") {
+    return Bind(full, [s](ValueList& a) {
+      CheckArity("replace", a, 2, 3);
+      const std::string& from = StrArg("replace", a, 0);
+      const std::string& to = StrArg("replace", a, 1);
+      long count = a.size() > 2 ? AsIndex(a[2], "count") : -1;
+      std::string out;
+      size_t k = 0;
+      if (from.empty()) {
+        for (char c : s) {
+          if (count-- != 0) out += to;
+          out += c;
+        }
+        if (count != 0) out += to;
+        return Value::Str(out);
+      }
+      while (count != 0) {
+        const size_t e = s.find(from, k);
+        if (e == std::string::npos) break;
+        out += s.substr(k, e - k) + to;
+        k = e + from.size();
+        --count;
+        if (out.size() > kMaxItems) throw EvalError("string too large");
+      }
+      return Value::Str(out + s.substr(k));
+    });
+  }
+  if (name == "startswith" || name == "endswith") {
+    return Bind(full, [s, name](ValueList& a) {
+      CheckArity(name, a, 1, 1);
+      ValueList options = a[0].type == Value::Type::kTuple ? *a[0].list : ValueList{a[0]};
+      for (const Value& o : options) {
+        if (o.type != Value::Type::kStr) throw EvalError(name + " first arg must be str or a tuple of str");
+        if (o.s.size() > s.size()) continue;
+        if (name == "startswith" ? s.compare(0, o.s.size(), o.s) == 0 : s.compare(s.size() - o.s.size(), o.s.size(), o.s) == 0) {
+          return Value::Bool(true);
+        }
+      }
+      return Value::Bool(false);
+    });
+  }
+  if (name == "find" || name == "rfind" || name == "index" || name == "rindex" || name == "count") {
+    return Bind(full, [s, name](ValueList& a) {
+      CheckArity(name, a, 1, 1);
+      const std::string& sub = StrArg(name, a, 0);
+      if (name == "count") {
+        if (sub.empty()) return Value::Integer(static_cast<Int>(s.size() + 1));
+        Int n = 0;
+        for (size_t k = s.find(sub); k != std::string::npos; k = s.find(sub, k + sub.size())) ++n;
+        return Value::Integer(n);
+      }
+      const size_t k = name[0] == 'r' ? s.rfind(sub) : s.find(sub);
+      if (k == std::string::npos) {
+        if (name == "index" || name == "rindex") throw EvalError("substring not found");
+        return Value::Integer(-1);
+      }
+      return Value::Integer(static_cast<Int>(k));
+    });
+  }
+  if (name == "zfill" || name == "ljust" || name == "rjust" || name == "center") {
+    return Bind(full, [s, name](ValueList& a) {
+      CheckArity(name, a, 1, 2);
+      const long width = AsIndex(a[0], "width");
+      const char fill = name == "zfill" ? '0' : (a.size() > 1 ? StrArg(name, a, 1)[0] : ' ');
+      if (width <= static_cast<long>(s.size())) return Value::Str(s);
+      const size_t pad = static_cast<size_t>(width) - s.size();
+      if (name == "ljust") return Value::Str(s + std::string(pad, fill));
+      if (name == "rjust") return Value::Str(std::string(pad, fill) + s);
+      if (name == "center") {
+        const size_t left = pad / 2 + (pad & static_cast<size_t>(width) & 1);
+        return Value::Str(std::string(left, fill) + s + std::string(pad - left, fill));
+      }
+      const bool signed_ = !s.empty() && (s[0] == '-' || s[0] == '+');
+      return Value::Str(signed_ ? s.substr(0, 1) + std::string(pad, '0') + s.substr(1) : std::string(pad, '0') + s);
+    });
+  }
+  if (name == "isdigit") return Bind(full, [s](ValueList&) { return Value::Bool(AllChars(s, ::isdigit)); });
+  if (name == "isalpha") return Bind(full, [s](ValueList&) { return Value::Bool(AllChars(s, ::isalpha)); });
+  if (name == "isalnum") return Bind(full, [s](ValueList&) { return Value::Bool(AllChars(s, ::isalnum)); });
+  if (name == "isspace") return Bind(full, [s](ValueList&) { return Value::Bool(AllChars(s, ::isspace)); });
+  if (name == "isupper") {
+    return Bind(full, [s](ValueList&) {
+      return Value::Bool(std::any_of(s.begin(), s.end(), ::isupper) && !std::any_of(s.begin(), s.end(), ::islower));
+    });
+  }
+  if (name == "islower") {
+    return Bind(full, [s](ValueList&) {
+      return Value::Bool(std::any_of(s.begin(), s.end(), ::islower) && !std::any_of(s.begin(), s.end(), ::isupper));
+    });
+  }
+  throw EvalError("'str' object has no attribute '" + name + "'");
+}
+
+Value SequenceMethod(const Value& v, const std::string& name) {
+  const std::string type = TypeName(v);
+  if (name == "index" || name == "count") {
+    return Bind(type + "." + name, [v, name](ValueList& a) {
+      CheckArity(name, a, 1, 1);
+      Int n = 0;
+      for (size_t k = 0; k < v.list->size(); ++k) {
+        if (!Equal((*v.list)[k], a[0])) continue;
+        if (name == "index") return Value::Integer(static_cast<Int>(k));
+        ++n;
+      }
+      if (name == "index") throw EvalError(Repr(a[0]) + " is not in " + TypeName(v));
+      return Value::Integer(n);
+    });
+  }
+  throw EvalError("'" + type + "' object has no attribute '" + name + "'");
+}
+
+Value DictMethod(const Value& v, const std::string& name) {
+  if (name == "keys" || name == "values" || name == "items") {
+    return Bind("dict." + name, [v, name](ValueList& a) {
+      CheckArity(name, a, 0, 0);
+      ValueList out;
+      for (const auto& [key, value] : v.dict->items) {
+        if (name == "keys") out.push_back(key);
+        else if (name == "values") out.push_back(Wrapped(value, v.wrapped));
+        else out.push_back(Value::Tuple({key, Wrapped(value, v.wrapped)}));
+      }
+      return Value::List(out);
+    });
+  }
+  if (name == "get") {
+    return Bind("dict.get", [v](ValueList& a) {
+      CheckArity("get", a, 1, 2);
+      for (const auto& [key, value] : v.dict->items) {
+        if (Equal(key, a[0])) return Wrapped(value, v.wrapped);
+      }
+      return a.size() > 1 ? a[1] : Value::None();
+    });
+  }
+  if (name == "copy") return Bind("dict.copy", [v](ValueList&) { return Value::Dict(v.dict->items); });
+  throw EvalError("'dict' object has no attribute '" + name + "'");
+}
+
+}  // namespace
+
+Value GetAttribute(const Value& v, const std::string& name) {
+  switch (v.type) {
+    case Value::Type::kModule:
+      for (const auto& [key, member] : v.dict->items) {
+        if (key.s == name) return member;
+      }
+      throw EvalError("module '" + v.s + "' has no attribute '" + name + "'");
+    case Value::Type::kScope: return v.scope->Get(name);
+    case Value::Type::kDict:
+      if (v.wrapped) {
+        for (const auto& [key, member] : v.dict->items) {
+          if (key.type == Value::Type::kStr && key.s == name) return Wrapped(member, true);
+        }
+        throw EvalError("The yaml dictionary has no key '" + name + "'");
+      }
+      return DictMethod(v, name);
+    case Value::Type::kStr: return StrMethod(v.s, name);
+    case Value::Type::kList:
+    case Value::Type::kTuple: return SequenceMethod(v, name);
+    case Value::Type::kFloat:
+      if (name == "is_integer") {
+        return Bind("float.is_integer", [f = v.f](ValueList&) { return Value::Bool(std::isfinite(f) && f == static_cast<double>(static_cast<long long>(f))); });
+      }
+      if (name == "real") return v;
+      if (name == "imag") return Value::Float(0.0);
+      break;
+    case Value::Type::kInt:
+    case Value::Type::kBool:
+      if (name == "real" || name == "numerator") return Value::Integer(AsInt(v));
+      if (name == "imag") return Value::Integer(0);
+      if (name == "denominator") return Value::Integer(1);
+      break;
+    default: break;
+  }
+  throw EvalError("'" + TypeName(v) + "' object has no attribute '" + name + "'");
+}
+
+}  // namespace urdfsnap::xacro

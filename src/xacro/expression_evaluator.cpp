@@ -1,0 +1,181 @@
+// Tree-walking evaluation of Python expressions.
+#include "xacro/expression_evaluator.h"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "xacro/attributes.h"
+#include "xacro/operators.h"
+
+namespace urdfsnap::xacro {
+namespace {
+
+class Evaluator {
+ public:
+  explicit Evaluator(NameLookup& names) : names_(names) {}
+
+  Value Eval(const Expr& e) {
+    switch (e.kind) {
+      case Expr::Kind::kConst: return e.constant;
+      case Expr::Kind::kName: {
+        for (auto it = locals_.rbegin(); it != locals_.rend(); ++it) {
+          if (it->first == e.name) return it->second;
+        }
+        return names_.Lookup(e.name);
+      }
+      case Expr::Kind::kAttr: return GetAttribute(Eval(*e.kids[0]), e.name);
+      case Expr::Kind::kSubscript: {
+        const Value v = Eval(*e.kids[0]);
+        const Expr& index = *e.kids[1];
+        if (index.kind != Expr::Kind::kSlice) return Subscript(v, Eval(index));
+        auto bound = [this](const ExprPtr& b) -> std::optional<long> {
+          if (!b) return std::nullopt;
+          const Value x = Eval(*b);
+          if (x.type == Value::Type::kNone) return std::nullopt;
+          return AsIndex(x, "slice indices");
+        };
+        return Slice(v, bound(index.kids[0]), bound(index.kids[1]), bound(index.kids[2]));
+      }
+      case Expr::Kind::kSlice: throw EvalError("invalid syntax (<expression>, line 1)");
+      case Expr::Kind::kCall: return Call(e);
+      case Expr::Kind::kUnary: {
+        const Value v = Eval(*e.kids[0]);
+        if (e.name == "not") return Value::Bool(!Truthy(v));
+        return UnaryOp(e.name, v);
+      }
+      case Expr::Kind::kBinary: {
+        const Value a = Eval(*e.kids[0]);
+        return BinaryOp(e.name, a, Eval(*e.kids[1]));
+      }
+      case Expr::Kind::kAnd:
+      case Expr::Kind::kOr: {
+        // Python returns the deciding operand itself
+        Value v;
+        for (const auto& kid : e.kids) {
+          v = Eval(*kid);
+          if (Truthy(v) == (e.kind == Expr::Kind::kOr)) return v;
+        }
+        return v;
+      }
+      case Expr::Kind::kCompare: {
+        Value left = Eval(*e.kids[0]);
+        for (size_t k = 0; k < e.ops.size(); ++k) {
+          Value right = Eval(*e.kids[k + 1]);
+          if (!CompareOp(e.ops[k], left, right)) return Value::Bool(false);
+          left = std::move(right);
+        }
+        return Value::Bool(true);
+      }
+      case Expr::Kind::kIfElse:
+        return Truthy(Eval(*e.kids[1])) ? Eval(*e.kids[0]) : Eval(*e.kids[2]);
+      case Expr::Kind::kList:
+      case Expr::Kind::kTuple: {
+        ValueList items;
+        items.reserve(e.kids.size());
+        for (const auto& kid : e.kids) items.push_back(Eval(*kid));
+        return e.kind == Expr::Kind::kList ? Value::List(std::move(items)) : Value::Tuple(std::move(items));
+      }
+      case Expr::Kind::kDict: {
+        std::vector<std::pair<Value, Value>> items;
+        for (size_t k = 0; k + 1 < e.kids.size(); k += 2) {
+          Value key = Eval(*e.kids[k]);
+          Value value = Eval(*e.kids[k + 1]);
+          bool replaced = false;
+          for (auto& kv : items) {
+            if (Equal(kv.first, key)) {
+              kv.second = value;
+              replaced = true;
+            }
+          }
+          if (!replaced) items.emplace_back(std::move(key), std::move(value));
+        }
+        return Value::Dict(std::move(items));
+      }
+      case Expr::Kind::kListComp: {
+        ValueList out;
+        Comprehend(e, 0, out);
+        return Value::List(std::move(out));
+      }
+    }
+    throw EvalError("invalid syntax (<expression>, line 1)");
+  }
+
+ private:
+  bool CompareOp(const std::string& op, const Value& a, const Value& b) {
+    if (op == "==") return Equal(a, b);
+    if (op == "!=") return !Equal(a, b);
+    if (op == "in") return Contains(b, a);
+    if (op == "not in") return !Contains(b, a);
+    if (op == "is" || op == "is not") {
+      // identity: None, bools and the same container are the only cases that matter here
+      bool same = a.type == b.type && (a.type == Value::Type::kNone ||
+                                       (a.type == Value::Type::kBool && a.b == b.b) ||
+                                       (a.list && a.list == b.list) || (a.dict && a.dict == b.dict) ||
+                                       (a.fn && a.fn == b.fn));
+      return op == "is" ? same : !same;
+    }
+    const int c = Compare(a, b, op.c_str());
+    if (op == "<") return c < 0;
+    if (op == ">") return c > 0;
+    if (op == "<=") return c <= 0;
+    return c >= 0;
+  }
+
+  Value Call(const Expr& e) {
+    const Value callee = Eval(*e.kids[0]);
+    const size_t n_kw = e.ops.size();
+    const size_t n_pos = e.kids.size() - 1 - n_kw;
+    ValueList args;
+    args.reserve(n_pos);
+    for (size_t k = 0; k < n_pos; ++k) args.push_back(Eval(*e.kids[1 + k]));
+    Kwargs kwargs;
+    for (size_t k = 0; k < n_kw; ++k) kwargs.emplace_back(e.ops[k], Eval(*e.kids[1 + n_pos + k]));
+    if (callee.type != Value::Type::kFunction) {
+      throw EvalError("'" + TypeName(callee) + "' object is not callable");
+    }
+    return callee.fn->call(args, kwargs);
+  }
+
+  void Comprehend(const Expr& e, size_t clause_index, ValueList& out) {
+    if (clause_index == e.clauses.size()) {
+      if (out.size() >= kMaxItems) throw EvalError("comprehension result too large");
+      out.push_back(Eval(*e.kids[0]));
+      return;
+    }
+    const ComprehensionClause& clause = e.clauses[clause_index];
+    const ValueList items = Iterate(Eval(*clause.iter));
+    const size_t mark = locals_.size();
+    for (const Value& item : items) {
+      locals_.resize(mark);
+      if (clause.unpack) {
+        const ValueList parts = Iterate(item);
+        if (parts.size() != clause.targets.size()) {
+          throw EvalError("cannot unpack " + std::to_string(parts.size()) + " values into " +
+                          std::to_string(clause.targets.size()) + " names");
+        }
+        for (size_t k = 0; k < parts.size(); ++k) locals_.emplace_back(clause.targets[k], parts[k]);
+      } else {
+        locals_.emplace_back(clause.targets[0], item);
+      }
+      bool keep = true;
+      for (const auto& cond : clause.conditions) {
+        if (!Truthy(Eval(*cond))) {
+          keep = false;
+          break;
+        }
+      }
+      if (keep) Comprehend(e, clause_index + 1, out);
+    }
+    locals_.resize(mark);
+  }
+
+  NameLookup& names_;
+  std::vector<std::pair<std::string, Value>> locals_;  // comprehension variables, innermost last
+};
+
+}  // namespace
+
+Value Evaluate(const Expr& expr, NameLookup& names) { return Evaluator(names).Eval(expr); }
+
+}  // namespace urdfsnap::xacro

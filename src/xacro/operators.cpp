@@ -1,0 +1,299 @@
+// Python operator semantics on values.
+#include "xacro/operators.h"
+
+#include <cmath>
+
+#include "xacro/number_format.h"
+#include "xacro/string_format.h"
+
+namespace urdfsnap::xacro {
+namespace {
+
+[[noreturn]] void Unsupported(const std::string& op, const Value& a, const Value& b) {
+  throw EvalError("unsupported operand type(s) for " + op + ": '" + TypeName(a) + "' and '" + TypeName(b) + "'");
+}
+
+[[noreturn]] void Overflow() { throw EvalError("integer overflow: the result needs more than 127 bits"); }
+
+Int CheckedPow(Int base, Int exp) {
+  Int result = 1;
+  while (exp > 0) {
+    if (exp & 1) {
+      if (__builtin_mul_overflow(result, base, &result)) Overflow();
+    }
+    exp >>= 1;
+    if (exp > 0 && __builtin_mul_overflow(base, base, &base)) Overflow();
+  }
+  return result;
+}
+
+Int FloorDiv(Int a, Int b) {
+  if (b == 0) throw EvalError("integer division or modulo by zero");
+  Int q = a / b;
+  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+  return q;
+}
+
+Int FloorMod(Int a, Int b) {
+  if (b == 0) throw EvalError("integer division or modulo by zero");
+  Int r = a % b;
+  if (r != 0 && ((r < 0) != (b < 0))) r += b;
+  return r;
+}
+
+double FloatMod(double a, double b) {
+  if (b == 0.0) throw EvalError("float modulo");
+  double r = std::fmod(a, b);
+  if (r != 0.0) {
+    if ((r < 0) != (b < 0)) r += b;
+  } else {
+    r = std::copysign(0.0, b);
+  }
+  return r;
+}
+
+Value IntArith(const std::string& op, Int x, Int y) {
+  Int r = 0;
+  if (op == "+") {
+    if (__builtin_add_overflow(x, y, &r)) Overflow();
+  } else if (op == "-") {
+    if (__builtin_sub_overflow(x, y, &r)) Overflow();
+  } else if (op == "*") {
+    if (__builtin_mul_overflow(x, y, &r)) Overflow();
+  } else if (op == "/") {
+    if (y == 0) throw EvalError("division by zero");
+    return Value::Float(static_cast<double>(x) / static_cast<double>(y));
+  } else if (op == "//") {
+    r = FloorDiv(x, y);
+  } else if (op == "%") {
+    r = FloorMod(x, y);
+  } else if (op == "**") {
+    if (y < 0) {
+      if (x == 0) throw EvalError("0.0 cannot be raised to a negative power");
+      return Value::Float(std::pow(static_cast<double>(x), static_cast<double>(y)));
+    }
+    r = CheckedPow(x, y);
+  } else if (op == "<<" || op == ">>") {
+    if (y < 0) throw EvalError("negative shift count");
+    if (op == ">>") {
+      r = y >= 127 ? (x < 0 ? -1 : 0) : (x >> static_cast<int>(y));
+    } else {
+      if (y >= 127 || (x != 0 && (x > (Int(1) << (126 - static_cast<int>(y))) ||
+                                  x < -(Int(1) << (126 - static_cast<int>(y)))))) {
+        Overflow();
+      }
+      r = x * (Int(1) << static_cast<int>(y));
+    }
+  } else if (op == "&") {
+    r = x & y;
+  } else if (op == "|") {
+    r = x | y;
+  } else if (op == "^") {
+    r = x ^ y;
+  }
+  return Value::Integer(r);
+}
+
+Value FloatArith(const std::string& op, const Value& a, const Value& b) {
+  const double x = AsDouble(a), y = AsDouble(b);
+  if (op == "+") return Value::Float(x + y);
+  if (op == "-") return Value::Float(x - y);
+  if (op == "*") return Value::Float(x * y);
+  if (op == "/") {
+    if (y == 0.0) throw EvalError("float division by zero");
+    return Value::Float(x / y);
+  }
+  if (op == "//") {
+    if (y == 0.0) throw EvalError("float floor division by zero");
+    const double mod = FloatMod(x, y);
+    double div = (x - mod) / y;
+    if (div != 0.0) {
+      double floordiv = std::floor(div);
+      if (div - floordiv > 0.5) floordiv += 1.0;
+      div = floordiv;
+    } else {
+      div = std::copysign(0.0, x / y);
+    }
+    return Value::Float(div);
+  }
+  if (op == "%") {
+    if (y == 0.0) throw EvalError("float modulo");
+    return Value::Float(FloatMod(x, y));
+  }
+  if (op == "**") {
+    if (x == 0.0 && y < 0) throw EvalError("0.0 cannot be raised to a negative power");
+    if (x < 0 && y != std::floor(y)) throw EvalError("complex results are not supported");
+    return Value::Float(std::pow(x, y));
+  }
+  Unsupported(op, a, b);
+}
+
+Value Repeat(const Value& seq, const Value& count) {
+  const Int n = std::max<Int>(0, AsInt(count));
+  const size_t unit = seq.type == Value::Type::kStr ? seq.s.size() : seq.list->size();
+  if (unit != 0 && n > static_cast<Int>(kMaxItems / unit)) {
+    throw EvalError("result of repetition is too large (limit " + std::to_string(kMaxItems) + ")");
+  }
+  if (seq.type == Value::Type::kStr) {
+    std::string out;
+    out.reserve(unit * static_cast<size_t>(n));
+    for (Int k = 0; k < n; ++k) out += seq.s;
+    return Value::Str(std::move(out));
+  }
+  ValueList out;
+  for (Int k = 0; k < n; ++k) out.insert(out.end(), seq.list->begin(), seq.list->end());
+  Value r = seq.type == Value::Type::kList ? Value::List(std::move(out)) : Value::Tuple(std::move(out));
+  return r;
+}
+
+long NormalizeIndex(long index, size_t size) {
+  if (index < 0) index += static_cast<long>(size);
+  return index;
+}
+
+}  // namespace
+
+Int FloatToInt(double v) {
+  if (std::isnan(v)) throw EvalError("cannot convert float NaN to integer");
+  if (std::isinf(v)) throw EvalError("cannot convert float infinity to integer");
+  if (std::fabs(v) >= 1.7e38) Overflow();
+  return static_cast<Int>(v);
+}
+
+long AsIndex(const Value& v, const char* what) {
+  if (!v.IsIntLike()) {
+    throw EvalError(std::string(what) + " must be integers or slices, not " + TypeName(v));
+  }
+  const Int i = AsInt(v);
+  if (i > (Int(1) << 62) || i < -(Int(1) << 62)) throw EvalError("index out of range");
+  return static_cast<long>(i);
+}
+
+Value BinaryOp(const std::string& op, const Value& a, const Value& b) {
+  if (a.IsNumber() && b.IsNumber()) {
+    if (a.IsIntLike() && b.IsIntLike()) return IntArith(op, AsInt(a), AsInt(b));
+    if (op == "<<" || op == ">>" || op == "&" || op == "|" || op == "^") Unsupported(op, a, b);
+    return FloatArith(op, a, b);
+  }
+  if (op == "+") {
+    if (a.type == Value::Type::kStr && b.type == Value::Type::kStr) {
+      if (a.s.size() + b.s.size() > kMaxItems) throw EvalError("string too large");
+      return Value::Str(a.s + b.s);
+    }
+    if (a.IsSequence() && a.type == b.type) {
+      ValueList out = *a.list;
+      out.insert(out.end(), b.list->begin(), b.list->end());
+      return a.type == Value::Type::kList ? Value::List(std::move(out)) : Value::Tuple(std::move(out));
+    }
+    if (a.type == Value::Type::kStr || b.type == Value::Type::kStr) {
+      const Value& other = a.type == Value::Type::kStr ? b : a;
+      if (a.type == Value::Type::kStr) {
+        throw EvalError("can only concatenate str (not \"" + TypeName(other) + "\") to str");
+      }
+    }
+  }
+  if (op == "*") {
+    const bool a_seq = a.type == Value::Type::kStr || a.IsSequence();
+    const bool b_seq = b.type == Value::Type::kStr || b.IsSequence();
+    if (a_seq && b.IsIntLike()) return Repeat(a, b);
+    if (b_seq && a.IsIntLike()) return Repeat(b, a);
+    if (a_seq || b_seq) {
+      throw EvalError("can't multiply sequence by non-int of type '" + TypeName(a_seq ? b : a) + "'");
+    }
+  }
+  if (op == "%" && a.type == Value::Type::kStr) return Value::Str(PercentFormat(a.s, b));
+  Unsupported(op, a, b);
+}
+
+Value UnaryOp(const std::string& op, const Value& a) {
+  if (!a.IsNumber()) throw EvalError("bad operand type for unary " + op + ": '" + TypeName(a) + "'");
+  if (op == "~") {
+    if (!a.IsIntLike()) throw EvalError("bad operand type for unary ~: 'float'");
+    return Value::Integer(~AsInt(a));
+  }
+  if (a.type == Value::Type::kFloat) return Value::Float(op == "-" ? -a.f : a.f);
+  const Int v = AsInt(a);
+  if (op == "-") {
+    Int r;
+    if (__builtin_sub_overflow(Int(0), v, &r)) Overflow();
+    return Value::Integer(r);
+  }
+  return Value::Integer(v);
+}
+
+bool Contains(const Value& container, const Value& item) {
+  switch (container.type) {
+    case Value::Type::kStr:
+      if (item.type != Value::Type::kStr) {
+        throw EvalError("'in <string>' requires string as left operand, not " + TypeName(item));
+      }
+      return container.s.find(item.s) != std::string::npos;
+    case Value::Type::kList:
+    case Value::Type::kTuple:
+      for (const Value& v : *container.list) {
+        if (Equal(v, item)) return true;
+      }
+      return false;
+    case Value::Type::kDict:
+    case Value::Type::kModule:
+      for (const auto& kv : container.dict->items) {
+        if (Equal(kv.first, item)) return true;
+      }
+      return false;
+    default: throw EvalError("argument of type '" + TypeName(container) + "' is not iterable");
+  }
+}
+
+Value Subscript(const Value& v, const Value& index) {
+  switch (v.type) {
+    case Value::Type::kList:
+    case Value::Type::kTuple:
+    case Value::Type::kStr: {
+      const char* kind = v.type == Value::Type::kStr ? "string" : (v.type == Value::Type::kList ? "list" : "tuple");
+      const long i = AsIndex(index, (std::string(kind) + " indices").c_str());
+      const size_t size = v.type == Value::Type::kStr ? v.s.size() : v.list->size();
+      const long k = NormalizeIndex(i, size);
+      if (k < 0 || k >= static_cast<long>(size)) throw EvalError(std::string(kind) + " index out of range");
+      if (v.type == Value::Type::kStr) return Value::Str(v.s.substr(static_cast<size_t>(k), 1));
+      return Wrapped((*v.list)[static_cast<size_t>(k)], v.wrapped);
+    }
+    case Value::Type::kDict:
+      for (const auto& kv : v.dict->items) {
+        if (Equal(kv.first, index)) return Wrapped(kv.second, v.wrapped);
+      }
+      if (v.wrapped) throw EvalError("The yaml dictionary has no key '" + ToStr(index) + "'");
+      throw EvalError(Repr(index));
+    default: throw EvalError("'" + TypeName(v) + "' object is not subscriptable");
+  }
+}
+
+Value Slice(const Value& v, std::optional<long> start, std::optional<long> stop, std::optional<long> step) {
+  if (v.type != Value::Type::kStr && !v.IsSequence()) {
+    throw EvalError("'" + TypeName(v) + "' object is not subscriptable");
+  }
+  const long size = static_cast<long>(v.type == Value::Type::kStr ? v.s.size() : v.list->size());
+  const long st = step.value_or(1);
+  if (st == 0) throw EvalError("slice step cannot be zero");
+  auto clamp = [&](std::optional<long> bound, long dflt) {
+    if (!bound) return dflt;
+    long b = *bound < 0 ? *bound + size : *bound;
+    if (st > 0) return std::clamp(b, 0L, size);
+    return std::clamp(b, -1L, size - 1);
+  };
+  const long from = clamp(start, st > 0 ? 0 : size - 1);
+  const long to = clamp(stop, st > 0 ? size : -1);
+  std::string s;
+  ValueList items;
+  for (long k = from; st > 0 ? k < to : k > to; k += st) {
+    if (v.type == Value::Type::kStr) {
+      s += v.s[static_cast<size_t>(k)];
+    } else {
+      items.push_back((*v.list)[static_cast<size_t>(k)]);
+    }
+  }
+  if (v.type == Value::Type::kStr) return Value::Str(std::move(s));
+  Value r = v.type == Value::Type::kList ? Value::List(std::move(items)) : Value::Tuple(std::move(items));
+  return Wrapped(r, v.wrapped);
+}
+
+}  // namespace urdfsnap::xacro

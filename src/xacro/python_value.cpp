@@ -1,0 +1,301 @@
+// Python's rules for values: constructors, str()/repr(), truth, equality and ordering.
+#include "xacro/python_value.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "xacro/number_format.h"
+#include "xacro/symbol_table.h"
+
+namespace urdfsnap::xacro {
+
+Value Value::Bool(bool v) {
+  Value r;
+  r.type = Type::kBool;
+  r.b = v;
+  return r;
+}
+
+Value Value::Integer(Int v) {
+  Value r;
+  r.type = Type::kInt;
+  r.i = v;
+  return r;
+}
+
+Value Value::Float(double v) {
+  Value r;
+  r.type = Type::kFloat;
+  r.f = v;
+  return r;
+}
+
+Value Value::Str(std::string v) {
+  Value r;
+  r.type = Type::kStr;
+  r.s = std::move(v);
+  return r;
+}
+
+Value Value::List(ValueList items) {
+  Value r;
+  r.type = Type::kList;
+  r.list = std::make_shared<ValueList>(std::move(items));
+  return r;
+}
+
+Value Value::Tuple(ValueList items) {
+  Value r = List(std::move(items));
+  r.type = Type::kTuple;
+  return r;
+}
+
+Value Value::Dict(std::vector<std::pair<Value, Value>> items) {
+  Value r;
+  r.type = Type::kDict;
+  r.dict = std::make_shared<DictItems>();
+  r.dict->items = std::move(items);
+  return r;
+}
+
+Value Value::Module(std::string name, std::vector<std::pair<Value, Value>> members) {
+  Value r = Dict(std::move(members));
+  r.type = Type::kModule;
+  r.s = std::move(name);
+  return r;
+}
+
+Value Value::Callable(std::string name, std::function<Value(ValueList&, Kwargs&)> call) {
+  Value r;
+  r.type = Type::kFunction;
+  r.fn = std::make_shared<Function>(Function{std::move(name), std::move(call)});
+  return r;
+}
+
+Value Value::Scope(std::shared_ptr<Table> table) {
+  Value r;
+  r.type = Type::kScope;
+  r.scope = std::move(table);
+  return r;
+}
+
+Value Value::Block(const Node* node) {
+  Value r;
+  r.type = Type::kBlock;
+  r.block = node;
+  return r;
+}
+
+std::string TypeName(const Value& v) {
+  switch (v.type) {
+    case Value::Type::kNone: return "NoneType";
+    case Value::Type::kBool: return "bool";
+    case Value::Type::kInt: return "int";
+    case Value::Type::kFloat: return "float";
+    case Value::Type::kStr: return "str";
+    case Value::Type::kList: return "list";
+    case Value::Type::kTuple: return "tuple";
+    case Value::Type::kDict: return "dict";
+    case Value::Type::kFunction: return "builtin_function_or_method";
+    case Value::Type::kModule: return "module";
+    case Value::Type::kScope: return "NameSpace";
+    case Value::Type::kBlock: return "Element";
+  }
+  return "object";
+}
+
+static std::string ReprStr(const std::string& s) {
+  const bool has_single = s.find('\'') != std::string::npos;
+  const char quote = (has_single && s.find('"') == std::string::npos) ? '"' : '\'';
+  std::string out(1, quote);
+  for (unsigned char c : s) {
+    if (c == '\\') {
+      out += "\\\\";
+    } else if (c == static_cast<unsigned char>(quote)) {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + quote;
+}
+
+std::string Repr(const Value& v) {
+  switch (v.type) {
+    case Value::Type::kStr: return ReprStr(v.s);
+    case Value::Type::kList:
+    case Value::Type::kTuple: {
+      const bool tuple = v.type == Value::Type::kTuple;
+      std::string out = tuple ? "(" : "[";
+      for (size_t k = 0; k < v.list->size(); ++k) {
+        if (k) out += ", ";
+        out += Repr((*v.list)[k]);
+      }
+      if (tuple && v.list->size() == 1) out += ",";
+      return out + (tuple ? ")" : "]");
+    }
+    case Value::Type::kDict: {
+      std::string out = "{";
+      bool first = true;
+      for (const auto& [key, value] : v.dict->items) {
+        if (!first) out += ", ";
+        first = false;
+        out += Repr(key) + ": " + Repr(value);
+      }
+      return out + "}";
+    }
+    case Value::Type::kFunction: return "<built-in function " + v.fn->name + ">";
+    case Value::Type::kModule: return "<module '" + v.s + "'>";
+    default: return ToStr(v);
+  }
+}
+
+std::string ToStr(const Value& v) {
+  switch (v.type) {
+    case Value::Type::kNone: return "None";
+    case Value::Type::kBool: return v.b ? "True" : "False";
+    case Value::Type::kInt: return FormatInt(v.i);
+    case Value::Type::kFloat: return FormatFloat(v.f);
+    case Value::Type::kStr: return v.s;
+    case Value::Type::kScope: return "<xacro.NameSpace object>";
+    case Value::Type::kBlock: return "<DOM Element>";
+    default: return Repr(v);
+  }
+}
+
+bool Truthy(const Value& v) {
+  switch (v.type) {
+    case Value::Type::kNone: return false;
+    case Value::Type::kBool: return v.b;
+    case Value::Type::kInt: return v.i != 0;
+    case Value::Type::kFloat: return v.f != 0.0;
+    case Value::Type::kStr: return !v.s.empty();
+    case Value::Type::kList:
+    case Value::Type::kTuple: return !v.list->empty();
+    case Value::Type::kDict: return !v.dict->items.empty();
+    default: return true;
+  }
+}
+
+Int AsInt(const Value& v) { return v.type == Value::Type::kBool ? Int(v.b) : v.i; }
+
+double AsDouble(const Value& v) {
+  if (v.type == Value::Type::kFloat) return v.f;
+  return static_cast<double>(AsInt(v));
+}
+
+bool Equal(const Value& a, const Value& b) {
+  if (a.IsNumber() && b.IsNumber()) {
+    if (a.IsIntLike() && b.IsIntLike()) return AsInt(a) == AsInt(b);
+    return AsDouble(a) == AsDouble(b);
+  }
+  const bool seq = a.IsSequence() && b.IsSequence();
+  if (a.type != b.type && !seq) return false;
+  if (seq && a.type != b.type) return false;
+  switch (a.type) {
+    case Value::Type::kNone: return true;
+    case Value::Type::kStr: return a.s == b.s;
+    case Value::Type::kList:
+    case Value::Type::kTuple: {
+      if (a.list->size() != b.list->size()) return false;
+      for (size_t k = 0; k < a.list->size(); ++k) {
+        if (!Equal((*a.list)[k], (*b.list)[k])) return false;
+      }
+      return true;
+    }
+    case Value::Type::kDict: {
+      if (a.dict->items.size() != b.dict->items.size()) return false;
+      for (const auto& [key, value] : a.dict->items) {
+        bool found = false;
+        for (const auto& [k2, v2] : b.dict->items) {
+          if (Equal(key, k2)) {
+            found = Equal(value, v2);
+            break;
+          }
+        }
+        if (!found) return false;
+      }
+      return true;
+    }
+    case Value::Type::kFunction: return a.fn == b.fn;
+    case Value::Type::kModule: return a.dict == b.dict;
+    case Value::Type::kScope: return a.scope == b.scope;
+    case Value::Type::kBlock: return a.block == b.block;
+    default: return false;
+  }
+}
+
+int Compare(const Value& a, const Value& b, const char* op) {
+  if (a.IsNumber() && b.IsNumber()) {
+    if (a.IsIntLike() && b.IsIntLike()) {
+      const Int x = AsInt(a), y = AsInt(b);
+      return x < y ? -1 : (x > y ? 1 : 0);
+    }
+    const double x = AsDouble(a), y = AsDouble(b);
+    return x < y ? -1 : (x > y ? 1 : 0);
+  }
+  if (a.type == Value::Type::kStr && b.type == Value::Type::kStr) {
+    const int c = a.s.compare(b.s);
+    return c < 0 ? -1 : (c > 0 ? 1 : 0);
+  }
+  if (a.IsSequence() && a.type == b.type) {
+    const size_t n = std::min(a.list->size(), b.list->size());
+    for (size_t k = 0; k < n; ++k) {
+      if (!Equal((*a.list)[k], (*b.list)[k])) return Compare((*a.list)[k], (*b.list)[k], op);
+    }
+    return a.list->size() < b.list->size() ? -1 : (a.list->size() > b.list->size() ? 1 : 0);
+  }
+  throw EvalError(std::string("'") + op + "' not supported between instances of '" + TypeName(a) +
+                  "' and '" + TypeName(b) + "'");
+}
+
+Value Wrapped(Value v, bool wrap) {
+  if (wrap && (v.type == Value::Type::kDict || v.type == Value::Type::kList)) v.wrapped = true;
+  return v;
+}
+
+ValueList Iterate(const Value& v) {
+  switch (v.type) {
+    case Value::Type::kList:
+    case Value::Type::kTuple: {
+      if (!v.wrapped) return *v.list;
+      ValueList out;
+      out.reserve(v.list->size());
+      for (const Value& item : *v.list) out.push_back(Wrapped(item, true));
+      return out;
+    }
+    case Value::Type::kStr: {
+      // one item per UTF-8 code point
+      ValueList out;
+      for (size_t k = 0; k < v.s.size();) {
+        size_t len = 1;
+        const unsigned char c = v.s[k];
+        if (c >= 0xf0) len = 4;
+        else if (c >= 0xe0) len = 3;
+        else if (c >= 0xc0) len = 2;
+        out.push_back(Value::Str(v.s.substr(k, len)));
+        k += len;
+      }
+      return out;
+    }
+    case Value::Type::kDict: {
+      ValueList out;
+      for (const auto& item : v.dict->items) out.push_back(item.first);
+      return out;
+    }
+    default: throw EvalError("'" + TypeName(v) + "' object is not iterable");
+  }
+}
+
+}  // namespace urdfsnap::xacro

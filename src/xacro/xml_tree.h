@@ -1,0 +1,81 @@
+// The document tree xacro edits in place (as xacro edits its minidom tree): elements with ordered
+// attributes, text, CDATA and comments, linked as siblings, each remembering the file and line it
+// came from. Nodes live in a NodePool that bounds the size of the expanded document.
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace urdfsnap::xacro {
+
+struct Node {
+  enum class Type { kDocument, kElement, kText, kCData, kComment };
+  Type type = Type::kElement;
+  std::string name;  // element tag
+  std::string data;  // text, CDATA or comment content
+  std::vector<std::pair<std::string, std::string>> attributes;  // in document order
+  Node* parent = nullptr;
+  Node* first = nullptr;
+  Node* last = nullptr;
+  Node* prev = nullptr;
+  Node* next = nullptr;
+  int file = -1;  // index into the processor's file names
+  int line = 0;
+
+  // The attribute's value, or nullptr.
+  const std::string* Attribute(const std::string& key) const;
+  // Sets (or adds at the end) an attribute.
+  void SetAttribute(const std::string& key, std::string value);
+  // Removes an attribute if present.
+  void RemoveAttribute(const std::string& key);
+  // The first child element (text and comments skipped), or nullptr; likewise the next sibling.
+  Node* FirstChildElement() const;
+  Node* NextSiblingElement() const;
+};
+
+// Owns every node of one run and counts their size; Allocate throws urdfsnap::Error once the
+// expanded document would exceed `max_bytes`.
+class NodePool {
+ public:
+  explicit NodePool(size_t max_bytes) : max_bytes_(max_bytes) {}
+  Node* Allocate(Node::Type type);
+  // A deep copy of `node` (unlinked).
+  Node* Clone(const Node* node);
+  // Counts `bytes` more of document content (attribute values, text).
+  void Account(size_t bytes);
+
+ private:
+  std::deque<Node> nodes_;
+  size_t bytes_ = 0;
+  size_t max_bytes_;
+};
+
+// Tree editing in the manner of the DOM.
+void AppendChild(Node* parent, Node* child);
+void InsertBefore(Node* parent, Node* child, Node* before);  // before == nullptr appends
+void RemoveChild(Node* child);
+// Moves the children of `from` in front of `before` (in before's parent).
+void InsertChildrenBefore(Node* from, Node* before);
+// Replaces `node` by `by` (or by the children of `by` when `content_only`); `by` may be nullptr
+// to just remove `node`.
+void ReplaceNode(Node* node, Node* by, bool content_only);
+
+// Parses the XML file `path` into a document node. Throws urdfsnap::Error
+// "XML parsing error: ..." with the line for malformed XML and "No such file or directory: PATH"
+// (as IoError) when it cannot be read. `file_index` is stored on every node.
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+Node* ParseXmlFile(const std::string& path, int file_index, NodePool& pool);
+
+// Writes the document as xacro's pretty printer does: `<?xml version="1.0" ?>`, two-space
+// indentation, attributes sorted by name, an element with one text child on one line,
+// whitespace-only text between elements dropped.
+std::string WriteXml(const Node* document);
+
+}  // namespace urdfsnap::xacro

@@ -1,0 +1,136 @@
+// YAML to Python values with PyYAML's YAML 1.1 implicit typing, on top of yaml-cpp.
+#include "xacro/yaml_loader.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <regex>
+
+#include "xacro/number_format.h"
+
+namespace urdfsnap::xacro {
+
+Value ResolveYamlScalar(const std::string& text) {
+  // PyYAML's resolver patterns (yaml/resolver.py)
+  static const std::regex kBool("yes|Yes|YES|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF");
+  static const std::regex kInt(
+      "[-+]?0b[0-1_]+|[-+]?0[0-7_]+|[-+]?(?:0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+|[-+]?[1-9][0-9_]*(?::[0-5]?[0-9])+");
+  static const std::regex kFloat(
+      "[-+]?(?:[0-9][0-9_]*)\\.[0-9_]*(?:[eE][-+][0-9]+)?|\\.[0-9_]+(?:[eE][-+][0-9]+)?|"
+      "[-+]?[0-9][0-9_]*(?::[0-5]?[0-9])+\\.[0-9_]*|[-+]?\\.(?:inf|Inf|INF)|\\.(?:nan|NaN|NAN)");
+  static const std::regex kNull("~|null|Null|NULL|");
+  if (std::regex_match(text, kNull)) return Value::None();
+  if (std::regex_match(text, kBool)) {
+    const char c = text[0];
+    return Value::Bool(c == 'y' || c == 'Y' || c == 't' || c == 'T' || text == "on" || text == "On" || text == "ON");
+  }
+  std::string clean = text;
+  clean.erase(std::remove(clean.begin(), clean.end(), '_'), clean.end());
+  if (std::regex_match(text, kInt)) {
+    int sign = 1;
+    std::string t = clean;
+    if (t[0] == '-' || t[0] == '+') {
+      sign = t[0] == '-' ? -1 : 1;
+      t = t.substr(1);
+    }
+    Int v = 0;
+    if (t.find(':') != std::string::npos) {
+      size_t k = 0;
+      while (k <= t.size()) {
+        const size_t e = std::min(t.find(':', k), t.size());
+        v = v * 60 + static_cast<Int>(std::stoll(t.substr(k, e - k)));
+        k = e + 1;
+      }
+    } else if (t.rfind("0b", 0) == 0) {
+      v = std::stoll(t.substr(2), nullptr, 2);
+    } else if (t.rfind("0x", 0) == 0) {
+      v = std::stoll(t.substr(2), nullptr, 16);
+    } else if (t.size() > 1 && t[0] == '0') {
+      v = std::stoll(t, nullptr, 8);
+    } else if (auto parsed = ParseIntText(t)) {
+      v = *parsed;
+    }
+    return Value::Integer(sign * v);
+  }
+  if (std::regex_match(text, kFloat)) {
+    std::string lower = clean;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower.find(".inf") != std::string::npos) return Value::Float(lower[0] == '-' ? -HUGE_VAL : HUGE_VAL);
+    if (lower.find(".nan") != std::string::npos) return Value::Float(NAN);
+    if (lower.find(':') != std::string::npos) {
+      const double sign = lower[0] == '-' ? -1.0 : 1.0;
+      if (lower[0] == '-' || lower[0] == '+') lower = lower.substr(1);
+      double v = 0;
+      size_t k = 0;
+      while (k <= lower.size()) {
+        const size_t e = std::min(lower.find(':', k), lower.size());
+        v = v * 60 + std::stod(lower.substr(k, e - k));
+        k = e + 1;
+      }
+      return Value::Float(sign * v);
+    }
+    return Value::Float(std::strtod(lower.c_str(), nullptr));
+  }
+  return Value::Str(text);
+}
+
+namespace {
+
+Value Convert(const YAML::Node& node, const std::function<Value(const std::string&)>& evaluate) {
+  switch (node.Type()) {
+    case YAML::NodeType::Null:
+    case YAML::NodeType::Undefined: return Value::None();
+    case YAML::NodeType::Sequence: {
+      ValueList items;
+      for (const auto& item : node) items.push_back(Convert(item, evaluate));
+      return Wrapped(Value::List(std::move(items)), true);
+    }
+    case YAML::NodeType::Map: {
+      std::vector<std::pair<Value, Value>> items;
+      for (const auto& kv : node) {
+        Value key = Convert(kv.first, evaluate);
+        Value value = Convert(kv.second, evaluate);
+        bool replaced = false;
+        for (auto& existing : items) {
+          if (Equal(existing.first, key)) {
+            existing.second = value;
+            replaced = true;
+          }
+        }
+        if (!replaced) items.emplace_back(std::move(key), std::move(value));
+      }
+      return Wrapped(Value::Dict(std::move(items)), true);
+    }
+    case YAML::NodeType::Scalar: break;
+  }
+  const std::string& tag = node.Tag();
+  const std::string& text = node.Scalar();
+  if (tag == "!radians" || tag == "!degrees") {
+    const Value v = evaluate(text);
+    if (!v.IsNumber()) throw EvalError("invalid expression: " + text);
+    const double radians = tag == "!degrees" ? AsDouble(v) * (M_PI / 180.0) : AsDouble(v);
+    return Value::Float(radians);
+  }
+  if (tag == "?") return ResolveYamlScalar(text);  // plain scalar: implicit typing
+  if (tag == "tag:yaml.org,2002:int" || tag == "!!int") return ResolveYamlScalar(text);
+  if (tag == "tag:yaml.org,2002:float" || tag == "!!float") {
+    if (auto f = ParseFloatText(text)) return Value::Float(*f);
+  }
+  return Value::Str(text);  // quoted or explicitly str-tagged
+}
+
+}  // namespace
+
+Value LoadYaml(const std::string& path, const std::function<Value(const std::string&)>& evaluate) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw EvalError("[Errno 2] No such file or directory: '" + path + "'");
+  } catch (const YAML::Exception& e) {
+    throw EvalError(path + ": invalid YAML: " + e.what());
+  }
+  return Convert(root, evaluate);
+}
+
+}  // namespace urdfsnap::xacro
