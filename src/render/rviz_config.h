@@ -1,0 +1,34 @@
+// Reads an RViz 1.14 `.rviz` file (YAML) into the scene options and orbit view urdfsnap honours,
+// so that a user's saved RViz configuration renders the way RViz shows it.
+#pragma once
+
+#include <string>
+
+#include "common/warnings.h"
+#include "render/orbit_view.h"
+#include "render/scene_builder.h"
+
+namespace urdfsnap::render {
+
+// The parts of an .rviz file urdfsnap honours, applied on top of the given defaults.
+struct RvizConfig {
+  SceneOptions scene;
+  OrbitView view;
+};
+
+// Reads the file at `path` and applies to `defaults`:
+//  - Global Options: Background Color, Fixed Frame;
+//  - the Grid display (Cell Size, Plane Cell Count, Color, Alpha, Plane, Offset, enabled); a file
+//    without an enabled Grid display turns the grid off;
+//  - the RobotModel display (Alpha, Visual Enabled, Collision Enabled; disabled hides the robot);
+//  - the TF display (enabled, Show Names, Show Axes, Show Arrows, Marker Scale);
+//  - Views/Current when it is an rviz/Orbit view (Distance, Yaw and Pitch in radians, Focal Point
+//    in metres, Field of View in radians, Near Clip Distance in metres).
+// Keys that are missing keep the defaults. Numbers are limited to the ranges RViz's properties
+// allow. Displays in rviz/Group displays count as well. Adds one warning per display class that
+// urdfsnap does not draw, and one for a current view that is not rviz/Orbit (the default view
+// stays) or for properties it cannot honour (another reference frame, a 3D grid, ...).
+// Throws urdfsnap::Error "FILE:LINE: ..." for an unreadable file, bad YAML or a bad value.
+RvizConfig ReadRvizConfig(const std::string& path, const RvizConfig& defaults, Warnings& warnings);
+
+}  // namespace urdfsnap::render

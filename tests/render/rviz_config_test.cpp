@@ -1,0 +1,482 @@
+// Reading .rviz files: every honoured property of a file laid out as RViz 1.14 saves it, defaults
+// for missing keys, RViz's limits, errors with file and line, and warnings (unit).
+#include "render/rviz_config.h"
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+
+namespace urdfsnap::render {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+// Saved by RViz 1.14 with every honoured property away from its default (keys sorted, floats as
+// RViz prints them), plus a display class urdfsnap does not draw.
+constexpr const char* kEveryProperty = R"(Panels:
+  - Class: rviz/Displays
+    Help Height: 78
+    Name: Displays
+    Property Tree Widget:
+      Expanded:
+        - /Global Options1
+      Splitter Ratio: 0.5
+    Tree Height: 549
+  - Class: rviz/Views
+    Expanded:
+      - /Current View1
+    Name: Views
+    Splitter Ratio: 0.5
+Preferences:
+  PromptSaveOnExit: true
+Toolbars:
+  toolButtonStyle: 2
+Visualization Manager:
+  Class: ""
+  Displays:
+    - Alpha: 0.25
+      Cell Size: 0.5
+      Class: rviz/Grid
+      Color: 10; 20; 30
+      Enabled: true
+      Line Style:
+        Line Width: 0.029999999329447746
+        Value: Lines
+      Name: Grid
+      Normal Cell Count: 0
+      Offset:
+        X: 1
+        Y: -2
+        Z: 0.5
+      Plane: XZ
+      Plane Cell Count: 4
+      Reference Frame: <Fixed Frame>
+      Value: true
+    - Alpha: 0.5
+      Class: rviz/RobotModel
+      Collision Enabled: true
+      Enabled: true
+      Links:
+        All Links Enabled: true
+        Expand Joint Details: false
+        Expand Link Details: false
+        Expand Tree: false
+        Link Tree Style: Links in Alphabetic Order
+      Name: RobotModel
+      Robot Description: robot_description
+      TF Prefix: ""
+      Update Interval: 0
+      Value: true
+      Visual Enabled: false
+    - Class: rviz/TF
+      Enabled: true
+      Frame Timeout: 15
+      Frames:
+        All Enabled: true
+      Marker Alpha: 1
+      Marker Scale: 2.5
+      Name: TF
+      Show Arrows: false
+      Show Axes: false
+      Show Names: false
+      Tree:
+        {}
+      Update Interval: 0
+      Value: true
+    - Class: rviz/MarkerArray
+      Enabled: true
+      Marker Topic: /visualization_marker_array
+      Name: MarkerArray
+      Namespaces:
+        {}
+      Queue Size: 100
+      Value: true
+  Enabled: true
+  Global Options:
+    Background Color: 255; 128; 0
+    Default Light: true
+    Fixed Frame: /link_02
+    Frame Rate: 30
+  Name: root
+  Tools:
+    - Class: rviz/Interact
+      Hide Inactive Objects: true
+    - Class: rviz/MoveCamera
+  Value: true
+  Views:
+    Current:
+      Class: rviz/Orbit
+      Distance: 3.25
+      Enable Stereo Rendering:
+        Stereo Eye Separation: 0.05999999865889549
+        Stereo Focal Distance: 1
+        Swap Stereo Eyes: false
+        Value: false
+      Field of View: 0.5
+      Focal Point:
+        X: 0.10000000149011612
+        Y: -0.20000000298023224
+        Z: 0.30000001192092896
+      Focal Shape Fixed Size: true
+      Focal Shape Size: 0.05000000074505806
+      Invert Z Axis: false
+      Name: Current View
+      Near Clip Distance: 0.05
+      Pitch: -0.25
+      Target Frame: <Fixed Frame>
+      Yaw: 5.5
+    Saved: ~
+Window Geometry:
+  Displays:
+    collapsed: false
+  Height: 846
+  Hide Left Dock: false
+  Hide Right Dock: false
+  QMainWindow State: 000000ff00000000fd00000004000000000000015600000
+  Views:
+    collapsed: false
+  Width: 1200
+  X: 72
+  Y: 27
+)";
+
+struct RvizConfigTest : ::testing::Test {
+  // Writes `text` to a file of its own and reads it on top of `defaults`.
+  RvizConfig Read(const std::string& text, const RvizConfig& defaults = {}) {
+    std::ofstream(path) << text;
+    return ReadRvizConfig(path, defaults, warnings);
+  }
+  // The message ReadRvizConfig throws for `text`.
+  std::string ErrorFor(const std::string& text) {
+    try {
+      Read(text);
+    } catch (const Error& error) {
+      return error.what();
+    }
+    return "(no error)";
+  }
+  const std::string path = ::testing::TempDir() + "rviz_config_test.rviz";
+  Warnings warnings;
+};
+
+TEST_F(RvizConfigTest, ReadsEveryPropertyOfAFileRvizWrote) {
+  const RvizConfig config = Read(kEveryProperty);
+  const SceneOptions& scene = config.scene;
+  EXPECT_EQ(scene.fixed_frame, "link_02");  // RViz drops the leading '/'
+  EXPECT_TRUE(scene.background.isApprox(Eigen::Vector3f(1, 128 / 255.f, 0)));
+
+  EXPECT_TRUE(scene.grid.enabled);
+  EXPECT_EQ(scene.grid.plane_cell_count, 4);
+  EXPECT_EQ(scene.grid.cell_size, 0.5);
+  EXPECT_TRUE(scene.grid.colour.isApprox(Eigen::Vector3f(10, 20, 30) / 255.f));
+  EXPECT_EQ(scene.grid.alpha, 0.25f);
+  EXPECT_EQ(scene.grid.plane, GridOptions::Plane::kXZ);
+  EXPECT_EQ(scene.grid.offset, Eigen::Vector3d(1, -2, 0.5));
+
+  EXPECT_FALSE(scene.show_visual);
+  EXPECT_TRUE(scene.show_collision);
+  EXPECT_EQ(scene.alpha, 0.5);
+
+  EXPECT_TRUE(scene.tf.enabled);
+  EXPECT_FALSE(scene.tf.show_names);
+  EXPECT_FALSE(scene.tf.show_axes);
+  EXPECT_FALSE(scene.tf.show_arrows);
+  EXPECT_EQ(scene.tf.marker_scale, 2.5);
+
+  const OrbitView& view = config.view;
+  EXPECT_EQ(view.distance, 3.25);
+  EXPECT_EQ(view.yaw, 5.5);
+  EXPECT_EQ(view.pitch, -0.25);
+  EXPECT_TRUE(view.focal.isApprox(Eigen::Vector3d(0.1, -0.2, 0.3), 1e-7));
+  EXPECT_EQ(view.fov_y, 0.5);
+  EXPECT_EQ(view.near_clip, 0.05);
+  EXPECT_EQ(view.far_clip, OrbitView{}.far_clip);
+
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre(path + ": skipped display class 'rviz/MarkerArray', which urdfsnap "
+                                 "does not draw"));
+}
+
+TEST_F(RvizConfigTest, MrmSampleIsTheCloseView) {
+  const RvizConfig config =
+      ReadRvizConfig(URDFSNAP_SOURCE_DIR "/tests/data/mrm.rviz", {}, warnings);
+  EXPECT_EQ(config.scene.fixed_frame, "base_link");
+  EXPECT_NEAR(config.view.yaw, 0.6, 1e-7);
+  EXPECT_NEAR(config.view.pitch, 0.35, 1e-7);
+  EXPECT_EQ(config.view.distance, 4.5);
+  EXPECT_TRUE(config.view.focal.isApprox(Eigen::Vector3d(0, 0, 1.2), 1e-7));
+  EXPECT_NEAR(config.view.fov_y, OrbitView{}.fov_y, 1e-7);
+  EXPECT_NEAR(config.view.near_clip, OrbitView{}.near_clip, 1e-9);
+  // everything else is RViz's default: grid and robot on, TF off
+  const SceneOptions defaults;
+  EXPECT_EQ(config.scene.background, defaults.background);
+  EXPECT_TRUE(config.scene.grid.enabled);
+  EXPECT_EQ(config.scene.grid.plane_cell_count, defaults.grid.plane_cell_count);
+  EXPECT_EQ(config.scene.grid.colour, defaults.grid.colour);
+  EXPECT_EQ(config.scene.grid.alpha, defaults.grid.alpha);
+  EXPECT_TRUE(config.scene.show_visual);
+  EXPECT_FALSE(config.scene.show_collision);
+  EXPECT_FALSE(config.scene.tf.enabled);
+  EXPECT_EQ(warnings.messages().size(), 1u);  // the MarkerArray display
+}
+
+TEST_F(RvizConfigTest, MissingKeysKeepTheDefaults) {
+  RvizConfig defaults;
+  defaults.scene.fixed_frame = "base";
+  defaults.scene.alpha = 0.3;
+  defaults.scene.grid.cell_size = 2;
+  defaults.scene.tf.marker_scale = 3;
+  defaults.view.yaw = 1;
+  defaults.view.focal = {1, 2, 3};
+  const RvizConfig config = Read(R"(Visualization Manager:
+  Displays:
+    - Class: rviz/Grid
+      Enabled: true
+    - Class: rviz/RobotModel
+      Enabled: true
+    - Class: rviz/TF
+      Enabled: true
+  Views:
+    Current:
+      Class: rviz/Orbit
+)",
+                                 defaults);
+  EXPECT_EQ(config.scene.fixed_frame, "base");
+  EXPECT_EQ(config.scene.alpha, 0.3);
+  EXPECT_TRUE(config.scene.show_visual);
+  EXPECT_EQ(config.scene.grid.cell_size, 2);
+  EXPECT_EQ(config.scene.grid.plane, GridOptions::Plane::kXY);
+  EXPECT_TRUE(config.scene.tf.enabled);
+  EXPECT_EQ(config.scene.tf.marker_scale, 3);
+  EXPECT_EQ(config.view.yaw, 1);
+  EXPECT_EQ(config.view.focal, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(config.view.distance, OrbitView{}.distance);
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST_F(RvizConfigTest, GridIsOffWithoutAnEnabledGridDisplay) {
+  EXPECT_FALSE(Read("Visualization Manager:\n  Displays: []\n").scene.grid.enabled);
+  EXPECT_FALSE(Read("Visualization Manager:\n  Class: \"\"\n").scene.grid.enabled);
+  EXPECT_FALSE(Read(R"(Visualization Manager:
+  Displays:
+    - Class: rviz/Grid
+      Enabled: false
+      Value: false
+)").scene.grid.enabled);
+}
+
+TEST_F(RvizConfigTest, EnabledFollowsRvizsCheckbox) {
+  // Display::load (display.cpp): "Value", then "Enabled"; neither means unchecked
+  const char* kTf = "Visualization Manager:\n  Displays:\n    - Class: rviz/TF\n";
+  EXPECT_TRUE(Read(std::string(kTf) + "      Value: true\n").scene.tf.enabled);
+  EXPECT_FALSE(Read(std::string(kTf) + "      Value: true\n      Enabled: false\n").scene.tf.enabled);
+  EXPECT_FALSE(Read(std::string(kTf) + "      Show Names: false\n").scene.tf.enabled);
+}
+
+TEST_F(RvizConfigTest, DisabledRobotModelHidesVisualAndCollision) {
+  const RvizConfig config = Read(R"(Visualization Manager:
+  Displays:
+    - Class: rviz/RobotModel
+      Collision Enabled: true
+      Enabled: false
+      Visual Enabled: true
+)");
+  EXPECT_FALSE(config.scene.show_visual);
+  EXPECT_FALSE(config.scene.show_collision);
+}
+
+TEST_F(RvizConfigTest, DisplaysInGroupsCountAndFollowTheGroup) {
+  const char* kGroup = R"(Visualization Manager:
+  Displays:
+    - Class: rviz/Group
+      Enabled: %s
+      Name: Robot
+      Displays:
+        - Class: rviz/Grid
+          Enabled: true
+          Cell Size: 0.25
+)";
+  char text[256];
+  std::snprintf(text, sizeof(text), kGroup, "true");
+  const RvizConfig on = Read(text);
+  EXPECT_TRUE(on.scene.grid.enabled);
+  EXPECT_EQ(on.scene.grid.cell_size, 0.25);
+  std::snprintf(text, sizeof(text), kGroup, "false");
+  EXPECT_FALSE(Read(text).scene.grid.enabled);
+}
+
+TEST_F(RvizConfigTest, ValuesAreLimitedAsRvizPropertiesLimitThem) {
+  const RvizConfig config = Read(R"(Visualization Manager:
+  Global Options:
+    Background Color: 300; -5; 12
+  Displays:
+    - Class: rviz/Grid
+      Enabled: true
+      Alpha: 1.5
+      Cell Size: 0
+      Plane Cell Count: 0
+    - Class: rviz/RobotModel
+      Enabled: true
+      Alpha: -1
+  Views:
+    Current:
+      Class: rviz/Orbit
+      Distance: 0
+      Field of View: 3
+      Near Clip Distance: 0
+      Pitch: 2
+)");
+  EXPECT_TRUE(config.scene.background.isApprox(Eigen::Vector3f(1, 0, 12 / 255.f)));
+  EXPECT_EQ(config.scene.grid.alpha, 1.f);
+  EXPECT_EQ(config.scene.grid.cell_size, 0.0001);
+  EXPECT_EQ(config.scene.grid.plane_cell_count, 1);
+  EXPECT_EQ(config.scene.alpha, 0);
+  EXPECT_EQ(config.view.distance, 0.001);
+  EXPECT_EQ(config.view.fov_y, std::numbers::pi / 2);
+  EXPECT_EQ(config.view.near_clip, 0.001);
+  EXPECT_EQ(config.view.pitch, std::numbers::pi / 2 - 0.001);
+}
+
+// A broken file and the "LINE: message" it must give.
+struct BadFile {
+  const char* text;
+  const char* located_message;
+};
+
+TEST_F(RvizConfigTest, BadFilesAreErrorsAtTheirLine) {
+  const BadFile cases[] = {
+      {"Visualization Manager:\n  Displays: [\n", "3: bad YAML: "},
+      {"Panels: []\n", "expected an .rviz file with a 'Visualization Manager' section"},
+      {"Visualization Manager:\n  Global Options:\n    Background Color: red\n",
+       "3: Global Options: 'Background Color': expected a colour \"R; G; B\" (three integers), "
+       "got 'red'"},
+      {"Visualization Manager:\n  Global Options:\n    Background Color: 1; 2\n",
+       "3: Global Options: 'Background Color': expected a colour"},
+      {"Visualization Manager:\n  Displays:\n    - Class: rviz/Grid\n      Name: Grid\n"
+       "      Cell Size: big\n",
+       "5: rviz/Grid display 'Grid': 'Cell Size': expected a number, got 'big'"},
+      {"Visualization Manager:\n  Displays:\n    - Class: rviz/Grid\n      Plane: XW\n",
+       "4: rviz/Grid display '': 'Plane': expected XY, XZ or YZ, got 'XW'"},
+      {"Visualization Manager:\n  Displays:\n    - Class: rviz/Grid\n      Plane Cell Count: 2.5\n",
+       "4: rviz/Grid display '': 'Plane Cell Count': expected an integer, got '2.5'"},
+      {"Visualization Manager:\n  Displays:\n    - Class: rviz/TF\n      Enabled: maybe\n",
+       "4: rviz/TF display '': 'Enabled': expected true or false, got 'maybe'"},
+      {"Visualization Manager:\n  Displays:\n    - Name: Grid\n",
+       "3: display: 'Class': expected a display class such as rviz/Grid, got nothing"},
+      {"Visualization Manager:\n  Displays: {}\n",
+       "2: Visualization Manager: 'Displays': expected a list of displays, got a map"},
+      {"Visualization Manager:\n  Views:\n    Current:\n      Class: rviz/Orbit\n"
+       "      Focal Point:\n        X: 1\n        Y: 2\n",
+       "5: Views/Current: 'Focal Point': expected a map of X, Y and Z, got a map"},
+      {"Visualization Manager:\n  Views:\n    Current:\n      Class: rviz/Orbit\n"
+       "      Focal Point: 3\n",
+       "5: Views/Current: 'Focal Point': expected a map, got '3'"},
+      {"Visualization Manager:\n  Views:\n    Current:\n      Class: rviz/Orbit\n"
+       "      Yaw: [1]\n",
+       "5: Views/Current: 'Yaw': expected a number, got a list"},
+  };
+  for (const BadFile& bad : cases) {
+    SCOPED_TRACE(bad.text);
+    const std::string message = ErrorFor(bad.text);
+    const bool has_line = std::isdigit(static_cast<unsigned char>(bad.located_message[0]));
+    EXPECT_THAT(message, HasSubstr((has_line ? path + ":" : path + ": ") + bad.located_message));
+  }
+}
+
+TEST_F(RvizConfigTest, MissingFileIsAnError) {
+  try {
+    ReadRvizConfig(path + ".missing", {}, warnings);
+    FAIL() << "no error";
+  } catch (const Error& error) {
+    EXPECT_EQ(std::string(error.what()), path + ".missing: cannot read the .rviz file");
+  }
+}
+
+TEST_F(RvizConfigTest, UnknownDisplayClassesWarnOncePerClass) {
+  const RvizConfig config = Read(R"(Visualization Manager:
+  Displays:
+    - Class: rviz/MarkerArray
+      Enabled: true
+      Name: Markers A
+    - Class: rviz/MarkerArray
+      Enabled: true
+      Name: Markers B
+    - Class: rviz/PointCloud2
+      Enabled: true
+      Name: Cloud
+)");
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre(path + ": skipped display class 'rviz/MarkerArray', which urdfsnap "
+                                 "does not draw",
+                          path + ": skipped display class 'rviz/PointCloud2', which urdfsnap "
+                                 "does not draw"));
+  EXPECT_FALSE(config.scene.grid.enabled);
+}
+
+TEST_F(RvizConfigTest, OtherViewsKeepTheDefaultViewWithAWarning) {
+  RvizConfig defaults;
+  defaults.view.yaw = 1.25;
+  const RvizConfig config = Read(R"(Visualization Manager:
+  Views:
+    Current:
+      Class: rviz/TopDownOrtho
+      Scale: 10
+)",
+                                 defaults);
+  EXPECT_EQ(config.view.yaw, 1.25);
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre(path + ":4: Views/Current: 'Class' is 'rviz/TopDownOrtho', not "
+                                 "rviz/Orbit; urdfsnap keeps its default view"));
+}
+
+TEST_F(RvizConfigTest, PropertiesUrdfsnapCannotFollowAreWarnings) {
+  Read(R"(Visualization Manager:
+  Global Options:
+    Fixed Frame: base_link
+  Displays:
+    - Class: rviz/Grid
+      Enabled: true
+      Name: Grid
+      Reference Frame: link_01
+      Normal Cell Count: 2
+      Line Style:
+        Line Width: 0.05
+        Value: Billboards
+    - Class: rviz/Grid
+      Enabled: true
+      Name: Grid 2
+    - Class: rviz/TF
+      Enabled: true
+      Name: TF
+      Marker Alpha: 0.5
+  Views:
+    Current:
+      Class: rviz/Orbit
+      Invert Z Axis: true
+      Target Frame: link_01
+)");
+  EXPECT_THAT(
+      warnings.messages(),
+      ElementsAre(path + ":14: rviz/Grid display 'Grid 2': 'Enabled' is true, but urdfsnap draws "
+                         "only the first enabled display of a class",
+                  path + ":8: rviz/Grid display 'Grid': 'Reference Frame' is not the fixed frame; "
+                         "urdfsnap draws the grid in the fixed frame",
+                  path + ":9: rviz/Grid display 'Grid': 'Normal Cell Count' is not 0; urdfsnap "
+                         "draws a flat grid",
+                  path + ":10: rviz/Grid display 'Grid': 'Line Style' is not Lines; urdfsnap "
+                         "draws 1-pixel lines",
+                  path + ":19: rviz/TF display 'TF': 'Marker Alpha' is not 1; urdfsnap draws "
+                         "opaque TF markers",
+                  path + ":24: Views/Current: 'Target Frame' is not <Fixed Frame>; urdfsnap "
+                         "orbits in the fixed frame",
+                  path + ":23: Views/Current: 'Invert Z Axis' is true; urdfsnap keeps +Z up"));
+}
+
+}  // namespace
+}  // namespace urdfsnap::render
