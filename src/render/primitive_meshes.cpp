@@ -25,4 +25,9 @@ const std::shared_ptr<const geometry::TriangleMesh>& UnitSphereMesh() {
 }
 
 
+const std::shared_ptr<const geometry::TriangleMesh>& UnitConeMesh() {
+  static const auto mesh = Share(geometry::MakeUnitCone());
+  return mesh;
+}
+
 }  // namespace urdfsnap::render

@@ -10,5 +10,6 @@ namespace urdfsnap::render {
 const std::shared_ptr<const geometry::TriangleMesh>& UnitBoxMesh();
 const std::shared_ptr<const geometry::TriangleMesh>& UnitCylinderMesh();
 const std::shared_ptr<const geometry::TriangleMesh>& UnitSphereMesh();
+const std::shared_ptr<const geometry::TriangleMesh>& UnitConeMesh();
 
 }  // namespace urdfsnap::render

@@ -55,6 +55,8 @@ struct Renderer::Impl {
     const Eigen::Matrix3d MV = (V * M).topLeftCorner<3, 3>();
     lit.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
     lit.Set("diffuse", item.rgba);
+    // a mirroring scale turns the winding around; Ogre flips culling for such nodes, and so do we
+    glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
     Upload(item.mesh).Draw();
   }
 
@@ -107,7 +109,6 @@ image::Image Renderer::Render(const Scene& scene, const OrbitView& view, int wid
   glDepthFunc(GL_LEQUAL);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
-  glFrontFace(GL_CCW);
 
   // opaque geometry first, writing depth
   glDisable(GL_BLEND);

@@ -3,14 +3,13 @@
 #include "render/scene_builder.h"
 
 #include "common/error.h"
+#include "render/link_colours.h"
 #include "render/primitive_meshes.h"
+#include "render/tf_markers.h"
 
 namespace urdfsnap::render {
 
 namespace {
-
-// RViz draws a visual without a material with a clone of "RVIZ/ShadedRed" (robot_link.cpp L486-490).
-const Eigen::Vector4f kNoMaterialColour{1, 0, 0, 1};
 
 Eigen::Isometry3d ToIsometry(const urdf::Pose& pose) {
   double x, y, z, w;
@@ -47,12 +46,6 @@ bool ShapeOf(const urdf::Geometry& geometry, std::shared_ptr<const geometry::Tri
     default:
       return false;
   }
-}
-
-Eigen::Vector4f ColourOf(const urdf::MaterialSharedPtr& material) {
-  if (!material) return kNoMaterialColour;
-  const urdf::Color& c = material->color;
-  return {c.r, c.g, c.b, c.a};
 }
 
 struct ShapeElement {
@@ -94,25 +87,26 @@ Scene BuildScene(const model::Robot& robot, const std::vector<Eigen::Isometry3d>
     }
   }
   const Eigen::Isometry3d X_FR = X_RL[fixed].inverse();
+  std::vector<Eigen::Isometry3d> X_FL(X_RL.size());
+  for (size_t i = 0; i < X_RL.size(); ++i) X_FL[i] = X_FR * X_RL[i];
   for (size_t i = 0; i < robot.links().size(); ++i) {
     const model::Link& link = robot.links()[i];
-    const Eigen::Isometry3d X_FL = X_FR * X_RL[i];
+    const LinkColours colours = ResolveLinkColours(*link.urdf);
     if (options.show_visual) {
-      for (const auto& visual : link.urdf->visual_array) {
-        AddShape(link, {visual->geometry, visual->origin}, ColourOf(visual->material), X_FL, options,
-                 scene, warnings);
-      }
-    }
-    if (options.show_collision) {
-      // RViz shows collision shapes with the link's visual colour (robot_link.cpp L500-520).
-      const Eigen::Vector4f rgba =
-          link.urdf->visual ? ColourOf(link.urdf->visual->material) : kNoMaterialColour;
-      for (const auto& collision : link.urdf->collision_array) {
-        AddShape(link, {collision->geometry, collision->origin}, rgba, X_FL, options, scene,
+      for (size_t v = 0; v < link.urdf->visual_array.size(); ++v) {
+        const auto& visual = link.urdf->visual_array[v];
+        AddShape(link, {visual->geometry, visual->origin}, colours.visuals[v], X_FL[i], options, scene,
                  warnings);
       }
     }
+    if (options.show_collision) {
+      for (const auto& collision : link.urdf->collision_array) {
+        AddShape(link, {collision->geometry, collision->origin}, colours.collision, X_FL[i], options,
+                 scene, warnings);
+      }
+    }
   }
+  if (options.tf.enabled) AddTfMarkers(robot, X_FL, options.tf, scene);
   if (options.grid.enabled) scene.lines.push_back(MakeGrid(options.grid));
   return scene;
 }
