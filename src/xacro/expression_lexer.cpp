@@ -173,6 +173,8 @@ Token ReadString(const std::string& s, size_t& k, bool raw) {
 }  // namespace
 
 std::vector<Token> Tokenize(const std::string& s) {
+  // long operator chains nest as deeply as they are long; bounding them bounds evaluation's stack
+  constexpr size_t kMaxTokens = 20000;
   static const char* const kOps[] = {"**", "//", "==", "!=", "<=", ">=", "<<", ">>", "+", "-", "*",
                                      "/", "%", "<", ">", "(", ")", "[", "]", "{", "}", ",", ":",
                                      ".", "~", "&", "|", "^", "="};
@@ -205,6 +207,7 @@ std::vector<Token> Tokenize(const std::string& s) {
       k = j;
       continue;
     }
+    if (tokens.size() > kMaxTokens) throw EvalError("expression too long (more than " + std::to_string(kMaxTokens) + " tokens)");
     bool matched = false;
     for (const char* op : kOps) {
       const size_t n = std::strlen(op);

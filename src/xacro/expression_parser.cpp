@@ -8,6 +8,25 @@
 namespace urdfsnap::xacro {
 namespace {
 
+// Python's parser refuses deeply nested expressions too; the limit keeps the stack bounded
+constexpr int kMaxNesting = 200;
+
+class NestingGuard {
+ public:
+  explicit NestingGuard(int& depth) : depth_(depth) {
+    if (++depth_ > kMaxNesting) {
+      --depth_;
+      throw EvalError("too many nested parentheses (<expression>, line 1)");
+    }
+  }
+  ~NestingGuard() { --depth_; }
+  NestingGuard(const NestingGuard&) = delete;
+  NestingGuard& operator=(const NestingGuard&) = delete;
+
+ private:
+  int& depth_;
+};
+
 class Parser {
  public:
   explicit Parser(std::vector<Token> tokens) : tokens_(std::move(tokens)) {}
@@ -18,7 +37,7 @@ class Parser {
     if (!invalid_.empty()) {
       std::string names;
       for (const std::string& n : invalid_) names += (names.empty() ? "" : ", ") + n;
-      throw EvalError("Use of invalid name(s):  " + names);
+      throw EvalError("Use of invalid name(s): " + names);
     }
     return e;
   }
@@ -77,6 +96,7 @@ class Parser {
   }
 
   ExprPtr ParseTest() {
+    const NestingGuard guard(depth_);
     if (IsKeyword("lambda")) throw EvalError("lambda expressions are not supported");
     ExprPtr body = ParseOr();
     if (!AcceptKeyword("if")) return body;
@@ -167,6 +187,7 @@ class Parser {
   }
 
   ExprPtr ParseUnary() {
+    const NestingGuard guard(depth_);
     for (const char* op : {"-", "+", "~"}) {
       if (Accept(op)) {
         auto e = Make(Expr::Kind::kUnary);
@@ -365,6 +386,7 @@ class Parser {
 
   std::vector<Token> tokens_;
   size_t pos_ = 0;
+  int depth_ = 0;
   std::set<std::string> invalid_;
 };
 

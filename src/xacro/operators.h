@@ -11,7 +11,7 @@
 namespace urdfsnap::xacro {
 
 // The largest string (bytes) or list (items) an operation may build; beyond it EvalError.
-inline constexpr size_t kMaxItems = 64u << 20;
+inline constexpr size_t kMaxItems = 16u << 20;
 
 // a OP b for OP in + - * / // % ** << >> & | ^.
 Value BinaryOp(const std::string& op, const Value& a, const Value& b);

@@ -2,9 +2,11 @@
 #include "xacro/processor.h"
 
 #include <glob.h>
+#include <pthread.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <regex>
 
 #include "common/error.h"
@@ -161,14 +163,27 @@ std::string Processor::Located(const std::string& message) const {
     out = SourceLocation{files_[current_->file], current_->line}.ToString() + ": ";
   }
   out += message;
+  std::vector<std::string> chain;
   const char* lead = "when instantiating macro: ";
   for (auto it = macro_stack_.rbegin(); it != macro_stack_.rend(); ++it) {
-    out += std::string("\n  ") + lead + (*it)->name + " (" + ((*it)->file >= 0 ? files_[(*it)->file] : "?") + ")";
+    chain.push_back(lead + (*it)->name + " (" + ((*it)->file >= 0 ? files_[(*it)->file] : "?") + ")");
     lead = "instantiated from: ";
   }
   for (size_t k = file_stack_.size(); k-- > 1;) {
-    out += "\n  " + files_[file_stack_[k].file] + " included from " +
-           SourceLocation{files_[file_stack_[k - 1].file], file_stack_[k].include_line}.ToString();
+    chain.push_back(files_[file_stack_[k].file] + " included from " +
+                    SourceLocation{files_[file_stack_[k - 1].file], file_stack_[k].include_line}.ToString());
+  }
+  // runaway recursion repeats one line hundreds of times: say it once with a count
+  for (size_t k = 0; k < chain.size();) {
+    size_t same = k + 1;
+    while (same < chain.size() && chain[same] == chain[k]) ++same;
+    out += "\n  " + chain[k];
+    if (same - k > 2) {
+      out += "\n  ... (" + std::to_string(same - k - 1) + " more times)";
+      k = same;
+    } else {
+      ++k;
+    }
   }
   return out;
 }
@@ -541,7 +556,7 @@ bool Processor::HandleMacroCall(Node* node, const Macros& macros, const Symbols&
   if (options_.xacro_ns) return false;
   const MacroTable::Entry* entry = macros->Find(node->name);
   if (!entry || !entry->macro) return false;
-  for (const Macro* active : macro_stack_) {
+  for (const auto& active : macro_stack_) {
     if (active->name == node->name) return false;
   }
   warnings_.Add(SourceLocation{node->file >= 0 ? files_[node->file] : "", node->line}.ToString() + ": <" + node->name +
@@ -590,7 +605,7 @@ void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& m
     throw EvalError("maximum macro recursion depth (" + std::to_string(options_.max_macro_depth) +
                     ") exceeded in macro '" + macro->name + "'");
   }
-  macro_stack_.push_back(macro.get());
+  macro_stack_.push_back(macro);
 
   Node* body = pool_.Clone(macro->body);
   auto local_symbols = std::make_shared<Table>(scope_symbols, &table_context_);
@@ -714,8 +729,39 @@ std::map<std::string, std::string> ArgMappings(const std::vector<std::pair<std::
 }
 
 Result ExpandFile(const std::string& path, const Options& options, Warnings& warnings) {
-  Processor processor(options, warnings);
-  return processor.Run(path);
+  // Nested macros, blocks and includes recurse deeply before the limits stop them: run on a thread
+  // whose stack is large enough for any depth the limits allow (only touched pages are used).
+  constexpr size_t kStackBytes = size_t{256} << 20;
+  struct Job {
+    const std::string& path;
+    const Options& options;
+    Warnings& warnings;
+    Result result;
+    std::exception_ptr error;
+  } job{path, options, warnings, {}, nullptr};
+  auto body = [](void* arg) -> void* {
+    auto* j = static_cast<Job*>(arg);
+    try {
+      Processor processor(j->options, j->warnings);
+      j->result = processor.Run(j->path);
+    } catch (...) {
+      j->error = std::current_exception();
+    }
+    return nullptr;
+  };
+  pthread_attr_t attr;
+  pthread_attr_init(&attr);
+  pthread_attr_setstacksize(&attr, kStackBytes);
+  pthread_t thread;
+  const bool started = pthread_create(&thread, &attr, body, &job) == 0;
+  pthread_attr_destroy(&attr);
+  if (started) {
+    pthread_join(thread, nullptr);
+  } else {
+    body(&job);
+  }
+  if (job.error) std::rethrow_exception(job.error);
+  return std::move(job.result);
 }
 
 }  // namespace urdfsnap::xacro

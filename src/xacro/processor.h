@@ -63,7 +63,7 @@ class Processor : public TextEvaluator {
   SubstitutionContext substitutions_;
   std::vector<std::string> files_;
   std::vector<OpenFile> file_stack_;
-  std::vector<const Macro*> macro_stack_;
+  std::vector<std::shared_ptr<const Macro>> macro_stack_;  // kept alive for error messages
   std::vector<std::string> dependencies_;
   std::unordered_map<std::string, ExprPtr> expression_cache_;
   const Node* current_ = nullptr;  // the node being processed, for error locations

@@ -31,16 +31,22 @@ Value Table::Get(const std::string& key) {
       throw EvalError("circular variable definition: " + chain + key +
                       "\nConsider disabling lazy evaluation via lazy_eval=\"false\"");
     }
+    if (context_->resolving_depth >= kMaxLazyDepth) {
+      throw EvalError("maximum recursion depth exceeded while evaluating property '" + key + "'");
+    }
     t->resolving_.push_back(key);
+    ++context_->resolving_depth;
     const std::string text = it->second.value.s;
     Value result;
     try {
       result = EvalLiteral(context_->evaluator->EvalText(text, t->shared_from_this()));
     } catch (...) {
       t->resolving_.pop_back();
+      --context_->resolving_depth;
       throw;
     }
     t->resolving_.pop_back();
+    --context_->resolving_depth;
     Entry& entry = t->entries_[key];
     entry.value = result;
     entry.unevaluated = false;

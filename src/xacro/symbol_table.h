@@ -27,7 +27,12 @@ struct TableContext {
   std::unordered_map<std::string, Value> globals;  // the root: builtins, math, python, xacro
   TextEvaluator* evaluator = nullptr;
   Warnings* warnings = nullptr;
+  int resolving_depth = 0;  // lazy properties being evaluated, nested
 };
+
+// Lazy properties may refer to lazy properties; chains deeper than this end with an error (as
+// Python's recursion limit ends them in xacro) instead of exhausting the stack.
+inline constexpr int kMaxLazyDepth = 1000;
 
 class Table : public std::enable_shared_from_this<Table> {
  public:
