@@ -94,6 +94,13 @@ void Run(const RenderOptions& o) {
   ApplyView(o, config.view);
   ApplyScene(o, config.scene);
   const model::Robot robot = o.model.Load(warnings);
+  // .rviz files often name a frame outside the robot (map, odom); RViz would show nothing useful
+  if (o.fixed_frame.empty() && !config.scene.fixed_frame.empty() &&
+      robot.FindLink(config.scene.fixed_frame) < 0) {
+    warnings.Add(o.rviz + ": Fixed Frame '" + config.scene.fixed_frame +
+                 "' is not a link of the robot; using the root link '" + robot.links()[0].name + "'");
+    config.scene.fixed_frame.clear();
+  }
 
   model::NamedValues given;
   if (!o.joint_file.empty()) given = model::ReadJointFile(o.joint_file);

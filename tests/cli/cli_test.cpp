@@ -25,7 +25,7 @@ struct Result {
   std::string output;   // stdout and stderr together
 };
 
-Result Run(const std::string& arguments) {
+Result RunUrdfsnap(const std::string& arguments) {
   const std::string command = std::string(URDFSNAP_BINARY) + " " + arguments + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   std::string output;
@@ -54,7 +54,7 @@ class CliTest : public ::testing::Test {
 };
 
 TEST_F(CliTest, RendersThePngAtTheRequestedSize) {
-  const Result r = Run("render " + kMrm + " -o " + Path("a.png") + " --size 320x200 -j link_01__link_02=0.5");
+  const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("a.png") + " --size 320x200 -j link_01__link_02=0.5");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(r.output, "");
   const auto image = urdfsnap::image::ReadPng(Path("a.png"));
@@ -65,7 +65,7 @@ TEST_F(CliTest, RendersThePngAtTheRequestedSize) {
 }
 
 TEST_F(CliTest, UnknownJointIsAnErrorListingTheMovableJoints) {
-  const Result r = Run("render " + kMrm + " -o " + Path("a.png") + " -j elbow=1");
+  const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("a.png") + " -j elbow=1");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.output.find("urdfsnap: error: "), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("'elbow'"), std::string::npos) << r.output;
@@ -74,7 +74,7 @@ TEST_F(CliTest, UnknownJointIsAnErrorListingTheMovableJoints) {
 }
 
 TEST_F(CliTest, ValueOutsideTheLimitsIsClampedWithAWarning) {
-  const Result r = Run("render " + kMrm + " -o " + Path("a.png") + " -j link_01__link_02=5");
+  const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("a.png") + " -j link_01__link_02=5");
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("urdfsnap: warning: "), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("link_01__link_02"), std::string::npos) << r.output;
@@ -82,7 +82,7 @@ TEST_F(CliTest, ValueOutsideTheLimitsIsClampedWithAWarning) {
 
 TEST_F(CliTest, FailedRunLeavesAnExistingOutputUntouched) {
   Write("a.png", "precious");
-  const Result r = Run("render " + Write("bad.urdf", "<robot name='x'><link name='a'></robot>") +
+  const Result r = RunUrdfsnap("render " + Write("bad.urdf", "<robot name='x'><link name='a'></robot>") +
                        " -o " + Path("a.png"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.output.find("bad.urdf:1"), std::string::npos) << r.output;
@@ -95,7 +95,7 @@ TEST_F(CliTest, FailedRunLeavesAnExistingOutputUntouched) {
 TEST_F(CliTest, BadOptionValuesAreUsageErrors) {
   for (const std::string option : {"--size 0x10", "--size 20000x10", "--size abc", "--yaw nan",
                                    "--focal 1,2", "--distance 1e999"}) {
-    const Result r = Run("render " + kMrm + " -o " + Path("a.png") + " " + option);
+    const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("a.png") + " " + option);
     EXPECT_EQ(r.status, 2) << option;
     EXPECT_NE(r.output.find("urdfsnap: error: --"), std::string::npos) << option << ": " << r.output;
     EXPECT_FALSE(fs::exists(Path("a.png")));
@@ -103,7 +103,7 @@ TEST_F(CliTest, BadOptionValuesAreUsageErrors) {
 }
 
 TEST_F(CliTest, MissingModelIsAnError) {
-  const Result r = Run("render " + Path("nope.urdf") + " -o " + Path("a.png"));
+  const Result r = RunUrdfsnap("render " + Path("nope.urdf") + " -o " + Path("a.png"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.output.find("nope.urdf"), std::string::npos) << r.output;
 }
@@ -112,16 +112,16 @@ TEST_F(CliTest, JointFileSetsThePose) {
   const std::string yaml = Write("pose.yaml", "link_01__link_02: 0.5\n");
   const std::string json =
       Write("pose.json", R"({"name": ["link_01__link_02"], "position": [0.5]})");
-  ASSERT_EQ(Run("render " + kMrm + " -o " + Path("a.png") + " --joints " + yaml).status, 0);
-  ASSERT_EQ(Run("render " + kMrm + " -o " + Path("b.png") + " --joints " + json).status, 0);
-  ASSERT_EQ(Run("render " + kMrm + " -o " + Path("c.png") + " -j link_01__link_02=0.5").status, 0);
+  ASSERT_EQ(RunUrdfsnap("render " + kMrm + " -o " + Path("a.png") + " --joints " + yaml).status, 0);
+  ASSERT_EQ(RunUrdfsnap("render " + kMrm + " -o " + Path("b.png") + " --joints " + json).status, 0);
+  ASSERT_EQ(RunUrdfsnap("render " + kMrm + " -o " + Path("c.png") + " -j link_01__link_02=0.5").status, 0);
   const auto a = urdfsnap::image::ReadPng(Path("a.png"));
   EXPECT_EQ(a.rgb, urdfsnap::image::ReadPng(Path("b.png")).rgb);
   EXPECT_EQ(a.rgb, urdfsnap::image::ReadPng(Path("c.png")).rgb);
 }
 
 TEST_F(CliTest, InfoListsLinksJointsAndLimits) {
-  const Result r = Run("info " + kMrm);
+  const Result r = RunUrdfsnap("info " + kMrm);
   ASSERT_EQ(r.status, 0) << r.output;
   for (const char* text : {"mrm", "base_link", "link_05", "link_01__link_02", "revolute", "-3.14"}) {
     EXPECT_NE(r.output.find(text), std::string::npos) << text << " in\n" << r.output;

@@ -45,6 +45,9 @@ struct Pose {
   model::NamedValues joints;
 };
 
+// Names the pose in test listings instead of dumping its bytes.
+void PrintTo(const Pose& pose, std::ostream* out) { *out << pose.name; }
+
 class MrmGolden : public ::testing::TestWithParam<Pose> {
  protected:
   static void SetUpTestSuite() { renderer_ = new render::Renderer(4); }

@@ -161,7 +161,9 @@ struct RvizConfigTest : ::testing::Test {
     }
     return "(no error)";
   }
-  const std::string path = ::testing::TempDir() + "rviz_config_test.rviz";
+  // one file per test: ctest runs the tests of this binary in parallel processes
+  const std::string path = ::testing::TempDir() + "rviz_config_test_" +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".rviz";
   Warnings warnings;
 };
 
