@@ -39,7 +39,8 @@ constexpr unsigned kRvizImportFlags = aiProcess_SortByPType | aiProcess_FindInva
 // (any case) get Ogre's BaseWhiteNoLighting, which robot_link.cpp replaces by the link's material.
 bool IsStlFile(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext == ".stl" || ext == ".stlb";
 }
 
@@ -105,7 +106,8 @@ struct Builder {
     const Eigen::Matrix3f linear = X.topLeftCorner<3, 3>();
     const Eigen::Vector3f translation = X.topRightCorner<3, 1>();
     const Eigen::Matrix3f normal_matrix = linear.inverse().transpose();
-    for (unsigned i = 0; i < node.mNumMeshes; ++i) AddMesh(*scene.mMeshes[node.mMeshes[i]], linear, translation, normal_matrix);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i)
+      AddMesh(*scene.mMeshes[node.mMeshes[i]], linear, translation, normal_matrix);
     const aiMatrix4x4 below = node.mParent ? transform : aiMatrix4x4();
     for (unsigned i = 0; i < node.mNumChildren; ++i) AddNode(*node.mChildren[i], below);
   }
@@ -114,10 +116,13 @@ struct Builder {
                const Eigen::Matrix3f& normal_matrix) {
     // SortByPType leaves point and line meshes apart; RViz would draw their indices as triangles
     if (!(in.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) return;
-    if (!in.HasNormals()) throw Error(SourceLocation{path.string()}, "mesh '" + std::string(in.mName.C_Str()) + "' has no normals after import");
+    if (!in.HasNormals())
+      throw Error(SourceLocation{path.string()},
+                  "mesh '" + std::string(in.mName.C_Str()) + "' has no normals after import");
     out.triangle_count += in.mNumFaces;
     if (out.triangle_count > kMaxMeshTriangles) {
-      throw Error(SourceLocation{path.string()}, "more than " + std::to_string(kMaxMeshTriangles) + " triangles");
+      throw Error(SourceLocation{path.string()},
+                  "more than " + std::to_string(kMaxMeshTriangles) + " triangles (the limit)");
     }
     MeshPart part;
     part.takes_urdf_material = is_stl;
@@ -131,13 +136,15 @@ struct Builder {
     for (unsigned v = 0; v < in.mNumVertices; ++v) {
       const aiVector3D& p = in.mVertices[v];
       const aiVector3D& n = in.mNormals[v];
-      mesh.positions.push_back(unit_scale * (linear * Eigen::Vector3f(p.x, p.y, p.z) + translation));
+      mesh.positions.push_back(unit_scale *
+                               (linear * Eigen::Vector3f(p.x, p.y, p.z) + translation));
       mesh.normals.push_back((normal_matrix * Eigen::Vector3f(n.x, n.y, n.z)).normalized());
     }
     mesh.indices.reserve(3 * std::size_t{in.mNumFaces});
     for (unsigned f = 0; f < in.mNumFaces; ++f) {
       const aiFace& face = in.mFaces[f];
-      if (face.mNumIndices == 3) mesh.indices.insert(mesh.indices.end(), face.mIndices, face.mIndices + 3);
+      if (face.mNumIndices == 3)
+        mesh.indices.insert(mesh.indices.end(), face.mIndices, face.mIndices + 3);
     }
     out.parts.push_back(std::move(part));
   }
@@ -149,15 +156,19 @@ MeshFile Load(const fs::path& path) {
   const std::uintmax_t bytes = fs::file_size(path, ec);
   if (ec) throw Error(where, "cannot read mesh file: " + ec.message());
   if (bytes > kMaxMeshFileBytes) {
-    throw Error(where, "mesh file of " + std::to_string(bytes >> 20) + " MiB is over the limit of " +
-                           std::to_string(kMaxMeshFileBytes >> 20) + " MiB");
+    throw Error(where, "mesh file of " + std::to_string(bytes >> 20) +
+                           " MiB is over the limit of " + std::to_string(kMaxMeshFileBytes >> 20) +
+                           " MiB");
   }
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path.string(), kRvizImportFlags);
-  if (!scene || !scene->mRootNode) throw Error(where, std::string("cannot read mesh file: ") + importer.GetErrorString());
+  if (!scene || !scene->mRootNode)
+    throw Error(where, std::string("cannot read mesh file: ") + importer.GetErrorString());
   MeshFile file;
-  Builder{path, *scene, UnitRescale(path), IsStlFile(path), file}.AddNode(*scene->mRootNode, aiMatrix4x4());
-  if (file.parts.empty()) throw Error(where, "no triangles in the mesh file");  // RViz: "No meshes found in file"
+  Builder{path, *scene, UnitRescale(path), IsStlFile(path), file}.AddNode(*scene->mRootNode,
+                                                                          aiMatrix4x4());
+  if (file.parts.empty())
+    throw Error(where, "no triangles in the mesh file");  // RViz: "No meshes found in file"
   return file;
 }
 

@@ -44,8 +44,9 @@ inline constexpr std::size_t kMaxMeshTriangles = 20'000'000;
 // Loads the mesh file at `path` (a file system path, see mesh_uri.h for URIs) as RViz does. Each
 // file is read once per process: later calls with a path naming the same file (canonical path)
 // return the same object. Thread-safe. Vertex colours and textures are ignored. Throws
-// urdfsnap::Error "PATH: ..." when the file is missing, unreadable, not a mesh assimp can read, holds
-// no triangles, is larger than kMaxMeshFileBytes or has more than kMaxMeshTriangles triangles.
+// urdfsnap::Error "PATH: ..." when the file is missing, unreadable, not a mesh assimp can read,
+// holds no triangles, is larger than kMaxMeshFileBytes or has more than kMaxMeshTriangles
+// triangles.
 std::shared_ptr<const MeshFile> LoadMeshFile(const std::string& path);
 
 }  // namespace urdfsnap::geometry

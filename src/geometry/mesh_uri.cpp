@@ -1,6 +1,7 @@
 // Mesh URI resolution. RViz hands every URI to resource_retriever, which knows package:// and
 // passes the rest to libcurl (so file:///abs works and plain paths fail); urdfsnap also accepts
-// plain paths, relative ones against the model file's folder, because it reads the URDF from a file.
+// plain paths, relative ones against the model file's folder, because it reads the URDF from a
+// file.
 #include "geometry/mesh_uri.h"
 
 #include <filesystem>
@@ -45,7 +46,8 @@ std::string ResolveMeshUri(const std::string& uri, const std::string& model_file
       throw Error(Where(model_file), "mesh '" + uri + "' not found: " + e.what());
     }
     const fs::path file = fs::path(dir) / rest.substr(slash + 1);
-    return Existing(file, uri, model_file, file.string() + " (package '" + name + "' is " + dir + ")");
+    return Existing(file, uri, model_file,
+                    file.string() + " (package '" + name + "' is " + dir + ")");
   }
   if (uri.starts_with(kFileScheme)) {
     const std::string path = uri.substr(kFileScheme.size());
@@ -56,10 +58,12 @@ std::string ResolveMeshUri(const std::string& uri, const std::string& model_file
   }
   if (const size_t scheme = uri.find("://"); scheme != std::string::npos) {
     throw Error(Where(model_file), "mesh '" + uri + "': unsupported URI scheme '" +
-                                       uri.substr(0, scheme) + "://' (expected package:// or file://)");
+                                       uri.substr(0, scheme) +
+                                       "://' (expected package:// or file://)");
   }
   const fs::path path(uri);
-  const fs::path file = path.is_absolute() || model_file.empty() ? path : fs::path(model_file).parent_path() / path;
+  const fs::path file =
+      path.is_absolute() || model_file.empty() ? path : fs::path(model_file).parent_path() / path;
   return Existing(file, uri, model_file, fs::absolute(file).lexically_normal().string());
 }
 

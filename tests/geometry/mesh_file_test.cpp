@@ -2,6 +2,8 @@
 // robot_link.cpp): faceted STL with rebuilt normals, COLLADA materials, unit and up axis, assimp's
 // default material, OBJ/MTL colours with smooth normals, the cache and the errors; then the zoo's
 // reference meshes when ../shared is present.
+#include "geometry/mesh_file.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -9,10 +11,10 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "common/error.h"
-#include "geometry/mesh_file.h"
 #include "mesh_test_files.h"
 
 namespace urdfsnap::geometry {
@@ -37,15 +39,20 @@ std::vector<Triangle> Cube() {
   return triangles;
 }
 
-Eigen::Vector3f FaceNormal(const Triangle& t) { return (t[1] - t[0]).cross(t[2] - t[0]).normalized(); }
+Eigen::Vector3f FaceNormal(const Triangle& t) {
+  return (t[1] - t[0]).cross(t[2] - t[0]).normalized();
+}
 
-std::string BinaryStl(const std::vector<Triangle>& triangles) {
+// Facet normals from the winding, times `normal_sign`.
+std::string BinaryStl(const std::vector<Triangle>& triangles, float normal_sign = 1.f) {
   std::string out(80, ' ');
-  const auto put = [&out](const void* data, size_t n) { out.append(static_cast<const char*>(data), n); };
+  const auto put = [&out](const void* data, size_t n) {
+    out.append(static_cast<const char*>(data), n);
+  };
   const auto count = static_cast<std::uint32_t>(triangles.size());
   put(&count, 4);
   for (const Triangle& t : triangles) {
-    const Eigen::Vector3f n = FaceNormal(t);
+    const Eigen::Vector3f n = normal_sign * FaceNormal(t);
     put(n.data(), 12);
     for (const Eigen::Vector3f& p : t) put(p.data(), 12);
     put("\0\0", 2);
@@ -59,7 +66,8 @@ std::string AsciiStlZeroNormals(const std::vector<Triangle>& triangles) {
   for (const Triangle& t : triangles) {
     out += " facet normal 0 0 0\n  outer loop\n";
     for (const Eigen::Vector3f& p : t) {
-      out += "   vertex " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(p.z()) + "\n";
+      out += "   vertex " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " +
+             std::to_string(p.z()) + "\n";
     }
     out += "  endloop\n endfacet\n";
   }
@@ -80,37 +88,48 @@ std::string Dae(const std::string& asset, const std::vector<std::string>& colour
                 const std::vector<DaeGeometry>& geometries) {
   std::string effects, materials, geoms, nodes;
   for (size_t i = 0; i < colours.size(); ++i) {
-    const std::string id = "m" + std::to_string(i);
-    effects += std::string("<effect id=\"") + id + "-fx\"><profile_COMMON><technique sid=\"common\"><lambert><diffuse><color>" +
+    const std::string id = std::string("m").append(std::to_string(i));
+    effects += std::string("<effect id=\"") + id +
+               "-fx\"><profile_COMMON><technique sid=\"common\"><lambert><diffuse><color>" +
                colours[i] + "</color></diffuse></lambert></technique></profile_COMMON></effect>\n";
-    materials += std::string("<material id=\"") + id + "\" name=\"" + id + "\"><instance_effect url=\"#" + id + "-fx\"/></material>\n";
+    materials += std::string("<material id=\"") + id + "\" name=\"" + id +
+                 "\"><instance_effect url=\"#" + id + "-fx\"/></material>\n";
   }
   for (size_t i = 0; i < geometries.size(); ++i) {
     const DaeGeometry& g = geometries[i];
-    const std::string id = "g" + std::to_string(i);
+    const std::string id = std::string("g").append(std::to_string(i));
     std::string floats, ps;
     for (const float f : g.positions) floats += std::to_string(f) + " ";
     for (const int k : g.indices) ps += std::to_string(k) + " ";
-    geoms += "<geometry id=\"" + id + "\"><mesh><source id=\"" + id + "-p\"><float_array id=\"" + id + "-a\" count=\"" +
-             std::to_string(g.positions.size()) + "\">" + floats + "</float_array><technique_common><accessor source=\"#" +
-             id + "-a\" count=\"" + std::to_string(g.positions.size() / 3) +
-             "\" stride=\"3\"><param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/><param name=\"Z\" "
-             "type=\"float\"/></accessor></technique_common></source><vertices id=\"" + id +
-             "-v\"><input semantic=\"POSITION\" source=\"#" + id + "-p\"/></vertices><triangles " +
-             (g.material.empty() ? "" : "material=\"sym\" ") + "count=\"" + std::to_string(g.indices.size() / 3) +
-             "\"><input semantic=\"VERTEX\" source=\"#" + id + "-v\" offset=\"0\"/><p>" + ps + "</p></triangles></mesh></geometry>\n";
-    const std::string bind = g.material.empty() ? "" :
-        "<bind_material><technique_common><instance_material symbol=\"sym\" target=\"#" + g.material +
-        "\"/></technique_common></bind_material>";
-    nodes += "<node id=\"n" + std::to_string(i) + "\">" + g.node_xml + "<instance_geometry url=\"#" + id + "\">" +
-             bind + "</instance_geometry></node>\n";
+    geoms += "<geometry id=\"" + id + "\"><mesh><source id=\"" + id + "-p\"><float_array id=\"" +
+             id + "-a\" count=\"" + std::to_string(g.positions.size()) + "\">" + floats +
+             "</float_array><technique_common><accessor source=\"#" + id + "-a\" count=\"" +
+             std::to_string(g.positions.size() / 3) +
+             "\" stride=\"3\"><param name=\"X\" type=\"float\"/><param name=\"Y\" "
+             "type=\"float\"/><param name=\"Z\" "
+             "type=\"float\"/></accessor></technique_common></source><vertices id=\"" +
+             id + "-v\"><input semantic=\"POSITION\" source=\"#" + id +
+             "-p\"/></vertices><triangles " + (g.material.empty() ? "" : "material=\"sym\" ") +
+             "count=\"" + std::to_string(g.indices.size() / 3) +
+             "\"><input semantic=\"VERTEX\" source=\"#" + id + "-v\" offset=\"0\"/><p>" + ps +
+             "</p></triangles></mesh></geometry>\n";
+    const std::string bind =
+        g.material.empty()
+            ? ""
+            : "<bind_material><technique_common><instance_material symbol=\"sym\" target=\"#" +
+                  g.material + "\"/></technique_common></bind_material>";
+    nodes += "<node id=\"n" + std::to_string(i) + "\">" + g.node_xml +
+             "<instance_geometry url=\"#" + id + "\">" + bind + "</instance_geometry></node>\n";
   }
   return "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
-         "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n<asset>" + asset +
-         "</asset>\n<library_effects>" + effects + "</library_effects>\n<library_materials>" + materials +
+         "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" "
+         "version=\"1.4.1\">\n<asset>" +
+         asset + "</asset>\n<library_effects>" + effects +
+         "</library_effects>\n<library_materials>" + materials +
          "</library_materials>\n<library_geometries>" + geoms +
          "</library_geometries>\n<library_visual_scenes><visual_scene id=\"s\">" + nodes +
-         "</visual_scene></library_visual_scenes>\n<scene><instance_visual_scene url=\"#s\"/></scene>\n</COLLADA>\n";
+         "</visual_scene></library_visual_scenes>\n<scene><instance_visual_scene "
+         "url=\"#s\"/></scene>\n</COLLADA>\n";
 }
 
 // One counter-clockwise triangle in the file's XY plane, facing +Z.
@@ -124,43 +143,57 @@ void ExpectWellFormed(const TriangleMesh& mesh) {
   for (const Eigen::Vector3f& n : mesh.normals) EXPECT_NEAR(n.norm(), 1.0, 1e-5);
 }
 
+Triangle TriangleAt(const TriangleMesh& mesh, int t) {
+  return {mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
+          mesh.positions[mesh.indices[3 * t + 2]]};
+}
+
 // Faceted: each corner's normal is its triangle's winding normal.
 void ExpectFlatFromWinding(const TriangleMesh& mesh) {
   for (int t = 0; t < mesh.triangle_count(); ++t) {
-    const Triangle tri{mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
-                       mesh.positions[mesh.indices[3 * t + 2]]};
+    const Triangle tri = TriangleAt(mesh, t);
     for (int c = 0; c < 3; ++c) {
-      EXPECT_TRUE(mesh.normals[mesh.indices[3 * t + c]].isApprox(FaceNormal(tri), 1e-5f)) << "triangle " << t;
+      EXPECT_TRUE(mesh.normals[mesh.indices[3 * t + c]].isApprox(FaceNormal(tri), 1e-5f))
+          << "triangle " << t;
     }
   }
 }
 
 using MeshFileTest = MeshFilesTest;
 
-TEST_F(MeshFileTest, BinaryStlTakesTheUrdfMaterialWithItsFacetNormals) {
-  const auto file = LoadMeshFile(Write("cube.stl", BinaryStl(Cube())));
-  EXPECT_EQ(file->triangle_count, 12u);
-  ASSERT_EQ(file->parts.size(), 1u);
-  EXPECT_TRUE(file->parts[0].takes_urdf_material);
-  ExpectWellFormed(file->parts[0].mesh);
-  ExpectFlatFromWinding(file->parts[0].mesh);
+TEST_F(MeshFileTest, StlTakesTheUrdfMaterialAndIsFaceted) {
+  // binary with correct facet normals; ASCII with every normal 0 0 0, rebuilt from the winding;
+  // an upper-case extension, which RViz lower-cases before comparing with ".stl"
+  const std::vector<std::string> paths = {Write("cube.stl", BinaryStl(Cube())),
+                                          Write("cube_ascii.STL", AsciiStlZeroNormals(Cube()))};
+  for (const std::string& path : paths) {
+    SCOPED_TRACE(path);
+    const auto file = LoadMeshFile(path);
+    EXPECT_EQ(file->triangle_count, 12u);
+    ASSERT_EQ(file->parts.size(), 1u);
+    EXPECT_TRUE(file->parts[0].takes_urdf_material);
+    ExpectWellFormed(file->parts[0].mesh);
+    ExpectFlatFromWinding(file->parts[0].mesh);
+  }
 }
 
-TEST_F(MeshFileTest, AsciiStlWithZeroNormalsGetsFlatNormalsFromTheWinding) {
-  // upper-case extension: RViz lower-cases it before comparing with ".stl"
-  const auto file = LoadMeshFile(Write("cube.STL", AsciiStlZeroNormals(Cube())));
-  EXPECT_EQ(file->triangle_count, 12u);
-  ASSERT_EQ(file->parts.size(), 1u);
-  EXPECT_TRUE(file->parts[0].takes_urdf_material);
-  ExpectWellFormed(file->parts[0].mesh);
-  ExpectFlatFromWinding(file->parts[0].mesh);
+TEST_F(MeshFileTest, StlFacetNormalsAreUsedAsGivenEvenWhenWrong) {
+  // inward normals are valid data to assimp: RViz draws those faces black
+  const auto file = LoadMeshFile(Write("inward.stl", BinaryStl(Cube(), -1.f)));
+  const TriangleMesh& mesh = file->parts[0].mesh;
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    const Triangle tri = TriangleAt(mesh, t);
+    EXPECT_TRUE(mesh.normals[mesh.indices[3 * t]].isApprox(-FaceNormal(tri), 1e-5f))
+        << "triangle " << t;
+  }
 }
 
 TEST_F(MeshFileTest, DaeKeepsTheDiffuseOfEachMaterialAndAppliesNodeTransforms) {
-  const std::string dae = Dae("<unit meter=\"1\"/><up_axis>Z_UP</up_axis>", {"0.1 0.2 0.9 1", "1 1 1 0.5"},
-                              {{kTrianglePositions, kTriangleIndices, "m0", ""},
-                               {kTrianglePositions, kTriangleIndices, "m1",
-                                "<translate>0 0 2</translate><rotate>0 0 1 90</rotate>"}});
+  const std::string dae =
+      Dae("<unit meter=\"1\"/><up_axis>Z_UP</up_axis>", {"0.1 0.2 0.9 1", "1 1 1 0.5"},
+          {{kTrianglePositions, kTriangleIndices, "m0", ""},
+           {kTrianglePositions, kTriangleIndices, "m1",
+            "<translate>0 0 2</translate><rotate>0 0 1 90</rotate>"}});
   const auto file = LoadMeshFile(Write("two.dae", dae));
   EXPECT_EQ(file->triangle_count, 2u);
   ASSERT_EQ(file->parts.size(), 2u);
@@ -183,8 +216,9 @@ TEST_F(MeshFileTest, DaeKeepsTheDiffuseOfEachMaterialAndAppliesNodeTransforms) {
 TEST_F(MeshFileTest, DaeUnitIsHonouredAndTheUpAxisRotationDropped) {
   // an L authored in millimetres in a Y_UP file: the bar's tip at y = 300 mm stays on +y
   const std::vector<float> positions = {0, 0, 0, 20, 0, 0, 0, 300, 0};
-  const std::string dae = Dae("<unit name=\"millimeter\" meter=\"0.001\"/><up_axis>Y_UP</up_axis>", {"1 0.5 0 1"},
-                              {{positions, kTriangleIndices, "m0", "<translate>0 0 10</translate>"}});
+  const std::string dae =
+      Dae("<unit name=\"millimeter\" meter=\"0.001\"/><up_axis>Y_UP</up_axis>", {"1 0.5 0 1"},
+          {{positions, kTriangleIndices, "m0", "<translate>0 0 10</translate>"}});
   const auto file = LoadMeshFile(Write("bracket_mm_yup.dae", dae));
   ASSERT_EQ(file->parts.size(), 1u);
   const TriangleMesh& mesh = file->parts[0].mesh;
@@ -194,7 +228,8 @@ TEST_F(MeshFileTest, DaeUnitIsHonouredAndTheUpAxisRotationDropped) {
 }
 
 TEST_F(MeshFileTest, DaeZUpIsUsedAsAuthored) {
-  const std::string dae = Dae("<up_axis>Z_UP</up_axis>", {}, {{kTrianglePositions, kTriangleIndices, "", ""}});
+  const std::string dae =
+      Dae("<up_axis>Z_UP</up_axis>", {}, {{kTrianglePositions, kTriangleIndices, "", ""}});
   const auto file = LoadMeshFile(Write("z_up.dae", dae));
   ASSERT_EQ(file->parts.size(), 1u);
   const TriangleMesh& mesh = file->parts[0].mesh;
@@ -210,12 +245,14 @@ TEST_F(MeshFileTest, DaeWithoutMaterialsKeepsAssimpsDefaultGrey) {
 }
 
 TEST_F(MeshFileTest, ObjKeepsMtlColoursAndItsSmoothNormals) {
-  Write("parts.mtl", "newmtl violet\nKd 0.5 0.2 0.8\nd 1\nnewmtl glow\nKd 1 1 1\nKe 0.25 0 0\nd 0.25\n");
+  Write("parts.mtl",
+        "newmtl violet\nKd 0.5 0.2 0.8\nd 1\nnewmtl glow\nKd 1 1 1\nKe 0.25 0 0\nd 0.25\n");
   // a quad with normals tilted outward at its corners (smooth, not the face's +z), and a triangle
   const std::string obj =
       "mtllib parts.mtl\n"
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\n"
-      "vn -0.6 -0.6 0.52915\nvn 0.6 -0.6 0.52915\nvn 0.6 0.6 0.52915\nvn -0.6 0.6 0.52915\nvn 0 0 1\n"
+      "vn -0.6 -0.6 0.52915\nvn 0.6 -0.6 0.52915\nvn 0.6 0.6 0.52915\nvn -0.6 0.6 0.52915\nvn 0 0 "
+      "1\n"
       "o body\nusemtl violet\nf 1//1 2//2 3//3 4//4\n"
       "o cover\nusemtl glow\nf 5//5 6//5 7//5\n";
   const auto file = LoadMeshFile(Write("knob.obj", obj));
@@ -229,12 +266,15 @@ TEST_F(MeshFileTest, ObjKeepsMtlColoursAndItsSmoothNormals) {
   EXPECT_TRUE(body->diffuse.isApprox(Eigen::Vector4f(0.5f, 0.2f, 0.8f, 1.f)));
   // RViz ignores the opacity (d) and keeps the emission (Ke) as self-illumination
   EXPECT_TRUE(cover->diffuse.isApprox(Eigen::Vector4f(1, 1, 1, 1))) << cover->diffuse.transpose();
-  EXPECT_TRUE(cover->emissive.isApprox(Eigen::Vector3f(0.25f, 0, 0))) << cover->emissive.transpose();
+  EXPECT_TRUE(cover->emissive.isApprox(Eigen::Vector3f(0.25f, 0, 0)))
+      << cover->emissive.transpose();
   EXPECT_TRUE(body->emissive.isZero());
   ExpectWellFormed(body->mesh);
   for (size_t v = 0; v < body->mesh.positions.size(); ++v) {
     const Eigen::Vector3f& p = body->mesh.positions[v];
-    const Eigen::Vector3f expected = Eigen::Vector3f(p.x() > 0.5f ? 0.6f : -0.6f, p.y() > 0.5f ? 0.6f : -0.6f, 0.52915f).normalized();
+    const Eigen::Vector3f expected =
+        Eigen::Vector3f(p.x() > 0.5f ? 0.6f : -0.6f, p.y() > 0.5f ? 0.6f : -0.6f, 0.52915f)
+            .normalized();
     EXPECT_TRUE(body->mesh.normals[v].isApprox(expected, 1e-4f)) << "vertex " << v;
   }
 }
@@ -248,19 +288,31 @@ TEST_F(MeshFileTest, EachFileIsLoadedOnce) {
   EXPECT_NE(LoadMeshFile((dir_ / "other.stl").string()), first);
 }
 
+TEST_F(MeshFileTest, ConcurrentCallersShareOneLoad) {
+  const std::string path = Write("shared.stl", BinaryStl(Cube()));
+  std::vector<std::shared_ptr<const MeshFile>> loaded(4);
+  std::vector<std::thread> threads;
+  for (auto& slot : loaded) threads.emplace_back([&slot, &path] { slot = LoadMeshFile(path); });
+  for (std::thread& thread : threads) thread.join();
+  for (const auto& file : loaded) EXPECT_EQ(file, loaded[0]);
+}
+
 void ExpectErrorNaming(const std::string& path, const std::string& what) {
   try {
     LoadMeshFile(path);
     FAIL() << "no error for " << path;
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find(std::filesystem::path(path).filename().string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(std::filesystem::path(path).filename().string()),
+              std::string::npos)
+        << e.what();
     EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
   }
 }
 
 TEST_F(MeshFileTest, ErrorsNameTheFile) {
   ExpectErrorNaming((dir_ / "missing.stl").string(), "cannot read mesh file");
-  ExpectErrorNaming(Write("garbage.dae", std::string("\x01\x02garbage\xff not a mesh", 20)), "cannot read mesh file");
+  ExpectErrorNaming(Write("garbage.dae", std::string("\x01\x02garbage\xff not a mesh", 20)),
+                    "cannot read mesh file");
   ExpectErrorNaming(Write("empty.stl", ""), "cannot read mesh file");
   // a file that failed is not cached: once fixed it loads
   const std::string fixed = Write("empty.stl", BinaryStl(Cube()));
@@ -295,7 +347,8 @@ TEST(ZooMeshes, LoadAsTheReferenceImagesShow) {
   EXPECT_LT(box.sizes().z(), 0.1f);
 
   const auto plain = LoadMeshFile((meshes / "plain_nomat.dae").string());
-  for (const MeshPart& part : plain->parts) EXPECT_TRUE(part.diffuse.isApprox(Eigen::Vector4f(0.6f, 0.6f, 0.6f, 1.f)));
+  for (const MeshPart& part : plain->parts)
+    EXPECT_TRUE(part.diffuse.isApprox(Eigen::Vector4f(0.6f, 0.6f, 0.6f, 1.f)));
 
   const auto knob = LoadMeshFile((meshes / "knob.obj").string());
   EXPECT_GE(knob->parts.size(), 2u);

@@ -1,5 +1,7 @@
 // ResolveMeshUri: package:// through --package and package.xml folders, file://, relative and
 // absolute paths, and errors that name the URI and the places searched.
+#include "geometry/mesh_uri.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,7 +9,6 @@
 #include <string>
 
 #include "common/error.h"
-#include "geometry/mesh_uri.h"
 #include "mesh_test_files.h"
 
 namespace urdfsnap::geometry {
@@ -26,8 +27,10 @@ std::string ErrorOf(const std::string& uri, const std::string& model_file,
 }
 
 TEST_F(MeshUriTest, PackageUriThroughThePackageMap) {
-  const std::string mesh = Write("somewhere/robot_description/meshes/base.stl", "solid x\nendsolid x\n");
-  const std::map<std::string, std::string> packages{{"robot_description", (dir_ / "somewhere/robot_description").string()}};
+  const std::string mesh =
+      Write("somewhere/robot_description/meshes/base.stl", "solid x\nendsolid x\n");
+  const std::map<std::string, std::string> packages{
+      {"robot_description", (dir_ / "somewhere/robot_description").string()}};
   EXPECT_EQ(ResolveMeshUri("package://robot_description/meshes/base.stl", "", packages), mesh);
 }
 
@@ -51,21 +54,34 @@ TEST_F(MeshUriTest, MissingFilesNameTheUriAndThePlacesSearched) {
   const std::map<std::string, std::string> packages{{"robot", (dir_ / "robot").string()}};
 
   const std::string in_package = ErrorOf("package://robot/meshes/gone.stl", model, packages);
-  EXPECT_NE(in_package.find("robot.urdf: mesh 'package://robot/meshes/gone.stl' not found"), std::string::npos) << in_package;
-  EXPECT_NE(in_package.find((dir_ / "robot/meshes/gone.stl").string()), std::string::npos) << in_package;
+  EXPECT_NE(in_package.find("robot.urdf: mesh 'package://robot/meshes/gone.stl' not found"),
+            std::string::npos)
+      << in_package;
+  EXPECT_NE(in_package.find((dir_ / "robot/meshes/gone.stl").string()), std::string::npos)
+      << in_package;
 
-  const std::string no_package = ErrorOf("package://nowhere_description/meshes/a.stl", model, packages);
-  EXPECT_NE(no_package.find("mesh 'package://nowhere_description/meshes/a.stl' not found"), std::string::npos) << no_package;
-  EXPECT_NE(no_package.find("package 'nowhere_description' not found, searched: "), std::string::npos) << no_package;
+  const std::string no_package =
+      ErrorOf("package://nowhere_description/meshes/a.stl", model, packages);
+  EXPECT_NE(no_package.find("mesh 'package://nowhere_description/meshes/a.stl' not found"),
+            std::string::npos)
+      << no_package;
+  EXPECT_NE(no_package.find("package 'nowhere_description' not found, searched: "),
+            std::string::npos)
+      << no_package;
   EXPECT_NE(no_package.find(model), std::string::npos) << no_package;
 
   const std::string relative = ErrorOf("meshes/gone.dae", model, {});
-  EXPECT_NE(relative.find("mesh 'meshes/gone.dae' not found, searched: " + (dir_ / "robot/urdf/meshes/gone.dae").string()),
-            std::string::npos) << relative;
+  EXPECT_NE(relative.find("mesh 'meshes/gone.dae' not found, searched: " +
+                          (dir_ / "robot/urdf/meshes/gone.dae").string()),
+            std::string::npos)
+      << relative;
 
-  EXPECT_NE(ErrorOf("file:///no/such/mesh.stl", model, {}).find("searched: /no/such/mesh.stl"), std::string::npos);
-  EXPECT_NE(ErrorOf("http://example.com/a.stl", model, {}).find("unsupported URI scheme 'http://'"), std::string::npos);
-  EXPECT_NE(ErrorOf("package://robot", model, packages).find("expected package://PACKAGE/PATH"), std::string::npos);
+  EXPECT_NE(ErrorOf("file:///no/such/mesh.stl", model, {}).find("searched: /no/such/mesh.stl"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("http://example.com/a.stl", model, {}).find("unsupported URI scheme 'http://'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("package://robot", model, packages).find("expected package://PACKAGE/PATH"),
+            std::string::npos);
 }
 
 }  // namespace
