@@ -38,6 +38,7 @@ struct RenderOptions {
   std::string alpha;
   bool collision = false, no_visual = false, no_grid = false, no_aa = false;
   bool tf = false, no_tf_axes = false, no_tf_arrows = false;
+  bool allow_missing_meshes = false;
   std::string tf_scale;
 };
 
@@ -94,6 +95,9 @@ void Run(const RenderOptions& o) {
   ApplyView(o, config.view);
   ApplyScene(o, config.scene);
   const model::Robot robot = o.model.Load(warnings);
+  config.scene.model_file = o.model.path;
+  config.scene.packages = ParsePackageWords(o.model.packages);
+  config.scene.allow_missing_meshes = o.allow_missing_meshes;
   // .rviz files often name a frame outside the robot (map, odom); RViz would show nothing useful
   if (o.fixed_frame.empty() && !config.scene.fixed_frame.empty() &&
       robot.FindLink(config.scene.fixed_frame) < 0) {
@@ -153,6 +157,8 @@ void AddRenderCommand(CLI::App& app) {
   cmd->add_flag("--no-tf-arrows", o->no_tf_arrows, "TF display without parent arrows (RViz default shown)");
   cmd->add_option("--tf-scale", o->tf_scale, "TF marker scale (RViz default 1)");
   cmd->add_flag("--no-aa", o->no_aa, "no multisampling (RViz default 4x)");
+  cmd->add_flag("--allow-missing-meshes", o->allow_missing_meshes,
+                "draw the rest of the robot when a mesh file cannot be found (one warning each)");
   cmd->callback([o] { Run(*o); });
 }
 

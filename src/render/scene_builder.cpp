@@ -3,6 +3,8 @@
 #include "render/scene_builder.h"
 
 #include "common/error.h"
+#include "geometry/mesh_file.h"
+#include "geometry/mesh_uri.h"
 #include "render/link_colours.h"
 #include "render/primitive_meshes.h"
 #include "render/tf_markers.h"
@@ -20,32 +22,63 @@ Eigen::Isometry3d ToIsometry(const urdf::Pose& pose) {
   return X;
 }
 
-// The RViz mesh for a URDF primitive and the scale that sizes it (robot_link.cpp L580-609).
-// Returns false for geometry this build cannot draw.
-bool ShapeOf(const urdf::Geometry& geometry, std::shared_ptr<const geometry::TriangleMesh>& mesh,
-             Eigen::Vector3d& scale) {
+// One drawn mesh of a URDF geometry element and its colour.
+struct Part {
+  std::shared_ptr<const geometry::TriangleMesh> mesh;
+  Eigen::Vector4f rgba;
+};
+
+// A mesh file's sub-meshes: STL sub-meshes take the link's material, the others keep the file's
+// own diffuse colour (robot_link.cpp: only BaseWhite/BaseWhiteNoLighting sub-meshes get it).
+std::vector<Part> MeshParts(const std::string& link_name, const urdf::Mesh& mesh,
+                            const Eigen::Vector4f& link_rgba, const SceneOptions& options,
+                            Warnings& warnings) {
+  std::string path;
+  try {
+    path = geometry::ResolveMeshUri(mesh.filename, options.model_file, options.packages);
+  } catch (const Error& e) {
+    if (!options.allow_missing_meshes) throw Error("link '" + link_name + "': " + e.what());
+    warnings.Add("link '" + link_name + "': " + e.what() + " (not drawn: --allow-missing-meshes)");
+    return {};
+  }
+  const std::shared_ptr<const geometry::MeshFile> file = geometry::LoadMeshFile(path);
+  std::vector<Part> parts;
+  for (const auto& part : file->parts) {
+    // the aliasing pointer keeps the whole cached file alive while the scene uses a part of it
+    parts.push_back({std::shared_ptr<const geometry::TriangleMesh>(file, &part.mesh),
+                     part.takes_urdf_material ? link_rgba : part.diffuse});
+  }
+  return parts;
+}
+
+// RViz's meshes for a URDF geometry and the scale that sizes them (robot_link.cpp L580-640).
+std::vector<Part> PartsOf(const std::string& link_name, const urdf::Geometry& geometry,
+                          const Eigen::Vector4f& rgba, const SceneOptions& options,
+                          Eigen::Vector3d& scale, Warnings& warnings) {
   switch (geometry.type) {
     case urdf::Geometry::BOX: {
       const auto& box = static_cast<const urdf::Box&>(geometry);
-      mesh = UnitBoxMesh();
       scale = {box.dim.x, box.dim.y, box.dim.z};
-      return true;
+      return {{UnitBoxMesh(), rgba}};
     }
     case urdf::Geometry::CYLINDER: {
       const auto& cylinder = static_cast<const urdf::Cylinder&>(geometry);
-      mesh = UnitCylinderMesh();
       scale = {2 * cylinder.radius, 2 * cylinder.radius, cylinder.length};
-      return true;
+      return {{UnitCylinderMesh(), rgba}};
     }
     case urdf::Geometry::SPHERE: {
       const auto& sphere = static_cast<const urdf::Sphere&>(geometry);
-      mesh = UnitSphereMesh();
       scale = Eigen::Vector3d::Constant(2 * sphere.radius);
-      return true;
+      return {{UnitSphereMesh(), rgba}};
     }
-    default:
-      return false;
+    case urdf::Geometry::MESH: {
+      const auto& mesh = static_cast<const urdf::Mesh&>(geometry);
+      scale = {mesh.scale.x, mesh.scale.y, mesh.scale.z};
+      if (mesh.filename.empty()) return {};   // RViz skips it too
+      return MeshParts(link_name, mesh, rgba, options, warnings);
+    }
   }
+  return {};
 }
 
 struct ShapeElement {
@@ -53,21 +86,17 @@ struct ShapeElement {
   const urdf::Pose& origin;
 };
 
-void AddShape(const model::Link& link, const ShapeElement& element, Eigen::Vector4f rgba,
+void AddShape(const model::Link& link, const ShapeElement& element, const Eigen::Vector4f& rgba,
               const Eigen::Isometry3d& X_FL, const SceneOptions& options, Scene& scene,
               Warnings& warnings) {
   if (!element.geometry) return;
-  DrawItem item;
-  Eigen::Vector3d scale;
-  if (!ShapeOf(*element.geometry, item.mesh, scale)) {
-    warnings.Add("link '" + link.name + "': mesh geometry is not drawn by this build");
-    return;
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  for (auto& part : PartsOf(link.name, *element.geometry, rgba, options, scale, warnings)) {
+    part.rgba.w() *= static_cast<float>(options.alpha);
+    scene.items.push_back({std::move(part.mesh),
+                           X_FL * ToIsometry(element.origin) * Eigen::Scaling(scale), part.rgba,
+                           link.name});
   }
-  item.X_FG = X_FL * ToIsometry(element.origin) * Eigen::Scaling(scale);
-  rgba.w() *= static_cast<float>(options.alpha);
-  item.rgba = rgba;
-  item.link = link.name;
-  scene.items.push_back(std::move(item));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // which shapes are visible, where (in the fixed frame), and in which colour. GL-free.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,11 @@ struct TfOptions {
 
 struct SceneOptions {
   std::string fixed_frame;        // a link name; "" means the root link
+  // where mesh URIs are resolved from: relative paths and package.xml folders around this file,
+  // and the --package PKG=DIR map (see geometry/mesh_uri.h)
+  std::string model_file;
+  std::map<std::string, std::string> packages;
+  bool allow_missing_meshes = false;   // a mesh that cannot be found is a warning, not an error
   bool show_visual = true;        // RobotModel "Visual Enabled"
   bool show_collision = false;    // RobotModel "Collision Enabled"
   double alpha = 1.0;             // RobotModel "Alpha", multiplies every material's alpha
