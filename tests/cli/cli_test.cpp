@@ -120,6 +120,15 @@ TEST_F(CliTest, JointFileSetsThePose) {
   EXPECT_EQ(a.rgb, urdfsnap::image::ReadPng(Path("c.png")).rgb);
 }
 
+TEST_F(CliTest, XacroModelRendersExactlyLikeItsUrdf) {
+  const std::string xacro = (kSource / "models/mrm_description/urdf/mrm.xacro").string();
+  const Result x = RunUrdfsnap("render " + xacro + " -o " + Path("x.png") + " -j link_02__link_03=0.7");
+  ASSERT_EQ(x.status, 0) << x.output;
+  EXPECT_EQ(x.output, "");   // modern xacro: calls, no legacy warnings
+  ASSERT_EQ(RunUrdfsnap("render " + kMrm + " -o " + Path("u.png") + " -j link_02__link_03=0.7").status, 0);
+  EXPECT_EQ(urdfsnap::image::ReadPng(Path("x.png")).rgb, urdfsnap::image::ReadPng(Path("u.png")).rgb);
+}
+
 TEST_F(CliTest, InfoListsLinksJointsAndLimits) {
   const Result r = RunUrdfsnap("info " + kMrm);
   ASSERT_EQ(r.status, 0) << r.output;
