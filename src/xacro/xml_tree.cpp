@@ -8,8 +8,6 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "common/error.h"
 
@@ -51,9 +49,13 @@ Node* Node::NextSiblingElement() const {
 
 Node* NodePool::Allocate(Node::Type type) {
   Account(sizeof(Node));
-  nodes_.emplace_back();
-  nodes_.back().type = type;
-  return &nodes_.back();
+  if (used_in_block_ == kBlockNodes) {
+    blocks_.push_back(std::make_unique<Node[]>(kBlockNodes));
+    used_in_block_ = 0;
+  }
+  Node* node = &blocks_.back()[used_in_block_++];
+  node->type = type;
+  return node;
 }
 
 void NodePool::Account(size_t bytes) {
@@ -169,11 +171,12 @@ void Convert(const tinyxml2::XMLNode* from, Node* to, int file, NodePool& pool) 
 }  // namespace
 
 Node* ParseXmlFile(const std::string& path, int file_index, NodePool& pool) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(std::string(std::strerror(errno ? errno : ENOENT)) + ": " + path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  std::FILE* in = std::fopen(path.c_str(), "rb");
+  if (!in) throw IoError(std::string(std::strerror(errno)) + ": " + path);
+  std::string text;
+  char chunk[65536];
+  for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, in)) > 0;) text.append(chunk, n);
+  std::fclose(in);
   tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);
   if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
     std::string what = doc.ErrorStr() ? doc.ErrorStr() : "malformed XML";
@@ -189,6 +192,10 @@ Node* ParseXmlFile(const std::string& path, int file_index, NodePool& pool) {
 namespace {
 
 void Escape(std::string& out, const std::string& s) {
+  if (s.find_first_of("&<>\"") == std::string::npos) {
+    out += s;
+    return;
+  }
   for (char c : s) {
     switch (c) {
       case '&': out += "&amp;"; break;
@@ -204,27 +211,39 @@ bool IsBlank(const std::string& s) {
   return s.find_first_not_of(" \t\n\r\f\v") == std::string::npos;
 }
 
-void Write(std::string& out, const Node* n, const std::string& indent) {
+void Indent(std::string& out, int depth) { out.append(static_cast<size_t>(depth) * 2, ' '); }
+
+void Write(std::string& out, const Node* n, int depth) {
   switch (n->type) {
     case Node::Type::kText:
-      out += indent;
+      Indent(out, depth);
       Escape(out, n->data);
       out += '\n';
       return;
     case Node::Type::kCData:
-      out += "<![CDATA[" + n->data + "]]>";
+      out += "<![CDATA[";
+      out += n->data;
+      out += "]]>";
       return;
     case Node::Type::kComment:
-      out += indent + "<!--" + n->data + "-->\n";
+      Indent(out, depth);
+      out += "<!--";
+      out += n->data;
+      out += "-->\n";
       return;
     default: break;
   }
-  out += indent + "<" + n->name;
+  Indent(out, depth);
+  out += '<';
+  out += n->name;
   std::vector<const std::pair<std::string, std::string>*> attrs;
+  attrs.reserve(n->attributes.size());
   for (const auto& a : n->attributes) attrs.push_back(&a);
   std::sort(attrs.begin(), attrs.end(), [](auto* a, auto* b) { return a->first < b->first; });
   for (const auto* a : attrs) {
-    out += " " + a->first + "=\"";
+    out += ' ';
+    out += a->first;
+    out += "=\"";
     Escape(out, a->second);
     out += '"';
   }
@@ -235,16 +254,17 @@ void Write(std::string& out, const Node* n, const std::string& indent) {
   if (n->first == n->last && n->first->type == Node::Type::kText) {
     out += '>';
     Escape(out, n->first->data);
-    out += "</" + n->name + ">\n";
-    return;
+  } else {
+    out += ">\n";
+    for (const Node* c = n->first; c; c = c->next) {
+      if (c->type == Node::Type::kText && IsBlank(c->data)) continue;
+      Write(out, c, depth + 1);
+    }
+    Indent(out, depth);
   }
+  out += "</";
+  out += n->name;
   out += ">\n";
-  const std::string inner = indent + "  ";
-  for (const Node* c = n->first; c; c = c->next) {
-    if (c->type == Node::Type::kText && IsBlank(c->data)) continue;
-    Write(out, c, inner);
-  }
-  out += indent + "</" + n->name + ">\n";
 }
 
 }  // namespace
@@ -253,7 +273,7 @@ std::string WriteXml(const Node* document) {
   std::string out = "<?xml version=\"1.0\" ?>\n";
   for (const Node* c = document->first; c; c = c->next) {
     if (c->type == Node::Type::kText) continue;
-    Write(out, c, "");
+    Write(out, c, 0);
   }
   return out;
 }

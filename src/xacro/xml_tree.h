@@ -4,7 +4,7 @@
 #pragma once
 
 #include <cstddef>
-#include <deque>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -49,7 +49,9 @@ class NodePool {
   void Account(size_t bytes);
 
  private:
-  std::deque<Node> nodes_;
+  static constexpr size_t kBlockNodes = 4096;
+  std::vector<std::unique_ptr<Node[]>> blocks_;  // nodes are allocated a block at a time
+  size_t used_in_block_ = kBlockNodes;
   size_t bytes_ = 0;
   size_t max_bytes_;
 };
