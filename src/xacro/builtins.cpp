@@ -219,15 +219,7 @@ Value ToFloat(ValueList& a) {
 Value ToDict(ValueList& a, Kwargs& kw) {
   CheckArity("dict", a, 0, 1);
   std::vector<std::pair<Value, Value>> items;
-  auto put = [&items](const Value& key, const Value& value) {
-    for (auto& kv : items) {
-      if (Equal(kv.first, key)) {
-        kv.second = value;
-        return;
-      }
-    }
-    items.emplace_back(key, value);
-  };
+  auto put = [&items](const Value& key, const Value& value) { DictPut(items, key, value); };
   if (!a.empty()) {
     if (a[0].type == Value::Type::kDict) {
       for (const auto& kv : a[0].dict->items) put(kv.first, kv.second);

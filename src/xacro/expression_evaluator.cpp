@@ -80,15 +80,7 @@ class Evaluator {
         std::vector<std::pair<Value, Value>> items;
         for (size_t k = 0; k + 1 < e.kids.size(); k += 2) {
           Value key = Eval(*e.kids[k]);
-          Value value = Eval(*e.kids[k + 1]);
-          bool replaced = false;
-          for (auto& kv : items) {
-            if (Equal(kv.first, key)) {
-              kv.second = value;
-              replaced = true;
-            }
-          }
-          if (!replaced) items.emplace_back(std::move(key), std::move(value));
+          DictPut(items, std::move(key), Eval(*e.kids[k + 1]));
         }
         return Value::Dict(std::move(items));
       }

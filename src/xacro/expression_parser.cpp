@@ -299,6 +299,23 @@ class Parser {
     return comp;
   }
 
+  // the rest of "(...)" or "[...]" after the opening bracket: empty, a comprehension, a
+  // parenthesised expression (no comma in round brackets), or the items of a tuple or list
+  ExprPtr ParseDisplay(const char* close, Expr::Kind kind) {
+    auto display = Make(kind);
+    if (Accept(close)) return display;
+    ExprPtr first = ParseTest();
+    if (IsKeyword("for")) first = ParseComprehension(std::move(first));
+    if (first->kind == Expr::Kind::kListComp || (kind == Expr::Kind::kTuple && IsOp(close))) {
+      Expect(close);
+      return first;
+    }
+    display->kids.push_back(std::move(first));
+    while (Accept(",") && !IsOp(close)) display->kids.push_back(ParseTest());
+    Expect(close);
+    return display;
+  }
+
   ExprPtr ParseAtom() {
     const Token& t = Peek();
     if (t.kind == Token::Kind::kNumber) {
@@ -333,41 +350,8 @@ class Parser {
       ++pos_;
       return e;
     }
-    if (Accept("(")) {
-      if (Accept(")")) return Make(Expr::Kind::kTuple);
-      ExprPtr first = ParseTest();
-      if (IsKeyword("for")) {
-        first = ParseComprehension(std::move(first));
-        Expect(")");
-        return first;
-      }
-      if (Accept(")")) return first;
-      auto tuple = Make(Expr::Kind::kTuple);
-      tuple->kids.push_back(std::move(first));
-      while (Accept(",")) {
-        if (IsOp(")")) break;
-        tuple->kids.push_back(ParseTest());
-      }
-      Expect(")");
-      return tuple;
-    }
-    if (Accept("[")) {
-      auto list = Make(Expr::Kind::kList);
-      if (Accept("]")) return list;
-      ExprPtr first = ParseTest();
-      if (IsKeyword("for")) {
-        ExprPtr comp = ParseComprehension(std::move(first));
-        Expect("]");
-        return comp;
-      }
-      list->kids.push_back(std::move(first));
-      while (Accept(",")) {
-        if (IsOp("]")) break;
-        list->kids.push_back(ParseTest());
-      }
-      Expect("]");
-      return list;
-    }
+    if (Accept("(")) return ParseDisplay(")", Expr::Kind::kTuple);
+    if (Accept("[")) return ParseDisplay("]", Expr::Kind::kList);
     if (Accept("{")) {
       auto dict = Make(Expr::Kind::kDict);
       while (!Accept("}")) {

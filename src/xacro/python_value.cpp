@@ -260,6 +260,16 @@ int Compare(const Value& a, const Value& b, const char* op) {
                   "' and '" + TypeName(b) + "'");
 }
 
+void DictPut(std::vector<std::pair<Value, Value>>& items, Value key, Value value) {
+  for (auto& kv : items) {
+    if (Equal(kv.first, key)) {
+      kv.second = std::move(value);
+      return;
+    }
+  }
+  items.emplace_back(std::move(key), std::move(value));
+}
+
 Value Wrapped(Value v, bool wrap) {
   if (wrap && (v.type == Value::Type::kDict || v.type == Value::Type::kList)) v.wrapped = true;
   return v;

@@ -99,6 +99,9 @@ int Compare(const Value& a, const Value& b, const char* op = "<");
 // The items of an iterable value (list, tuple, str, dict keys), wrapped when the container is.
 ValueList Iterate(const Value& v);
 
+// Sets `key` in ordered dict items: replaces the value of an equal key, else appends.
+void DictPut(std::vector<std::pair<Value, Value>>& items, Value key, Value value);
+
 // A value read from a wrapped (yaml) container is wrapped in turn.
 Value Wrapped(Value v, bool wrap);
 

@@ -76,7 +76,6 @@ std::string PercentFormat(const std::string& format, const Value& args) {
     if (next >= positional.size()) throw EvalError("not enough arguments for format string");
     return positional[next++];
   };
-  bool used_mapping = false;
   std::string out;
   for (size_t k = 0; k < format.size(); ++k) {
     if (format[k] != '%') {
@@ -92,7 +91,6 @@ std::string PercentFormat(const std::string& format, const Value& args) {
       if (!mapping) throw EvalError("format requires a mapping");
       keyed = Subscript(args, Value::Str(format.substr(k + 1, close - k - 1)));
       value = &keyed;
-      used_mapping = true;
       k = close + 1;
     }
     std::string flags;
@@ -143,7 +141,6 @@ std::string PercentFormat(const std::string& format, const Value& args) {
     }
   }
   if (!mapping && next < positional.size()) throw EvalError("not all arguments converted during string formatting");
-  (void)used_mapping;
   return out;
 }
 

@@ -1,8 +1,8 @@
-// The xacro document tree: parsing with tinyxml2 (keeping line numbers), in-place editing, and
+// The xacro document tree: parsing with expat (keeping line numbers), in-place editing, and
 // xacro's pretty printer.
 #include "xacro/xml_tree.h"
 
-#include <tinyxml2.h>
+#include <expat.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -129,44 +129,66 @@ void ReplaceNode(Node* node, Node* by, bool content_only) {
 
 namespace {
 
-// XML attribute-value normalisation (what expat does): literal TAB/CR/LF become spaces
-std::string NormalizeAttribute(const char* value) {
-  std::string v = value;
-  for (char& c : v) {
-    if (c == '\t' || c == '\n' || c == '\r') c = ' ';
-  }
-  return v;
-}
+// Builds the tree from expat's callbacks. Expat is the parser Python's minidom (and so xacro)
+// uses: whitespace-only text is kept (xacro's comment handling counts its newlines), attribute
+// values are normalised, and error messages read the same ("mismatched tag: line 4, column 4").
+struct TreeBuilder {
+  XML_Parser parser;
+  NodePool& pool;
+  int file;
+  Node* current;
+  Node* cdata = nullptr;  // the CDATA section being read
 
-void Convert(const tinyxml2::XMLNode* from, Node* to, int file, NodePool& pool) {
-  for (const tinyxml2::XMLNode* c = from->FirstChild(); c; c = c->NextSibling()) {
-    Node* n = nullptr;
-    if (const auto* e = c->ToElement()) {
-      n = pool.Allocate(Node::Type::kElement);
-      n->name = e->Name();
-      size_t bytes = n->name.size();
-      for (const tinyxml2::XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
-        n->attributes.emplace_back(a->Name(), NormalizeAttribute(a->Value()));
-        bytes += n->attributes.back().first.size() + n->attributes.back().second.size();
-      }
-      pool.Account(bytes);
-      Convert(c, n, file, pool);
-    } else if (const auto* t = c->ToText()) {
-      n = pool.Allocate(t->CData() ? Node::Type::kCData : Node::Type::kText);
-      n->data = t->Value();
-      pool.Account(n->data.size());
-    } else if (const auto* k = c->ToComment()) {
-      n = pool.Allocate(Node::Type::kComment);
-      n->data = k->Value();
-      pool.Account(n->data.size());
-    } else {
-      continue;  // XML declaration, DOCTYPE
-    }
+  Node* Add(Node::Type type) {
+    Node* n = pool.Allocate(type);
     n->file = file;
-    n->line = c->GetLineNum();
-    AppendChild(to, n);
+    n->line = static_cast<int>(XML_GetCurrentLineNumber(parser));
+    AppendChild(current, n);
+    return n;
   }
-}
+
+  static void Start(void* data, const XML_Char* name, const XML_Char** attributes) {
+    auto* b = static_cast<TreeBuilder*>(data);
+    Node* n = b->Add(Node::Type::kElement);
+    n->name = name;
+    size_t bytes = n->name.size();
+    for (const XML_Char** a = attributes; *a; a += 2) {
+      n->attributes.emplace_back(a[0], a[1]);
+      bytes += n->attributes.back().first.size() + n->attributes.back().second.size();
+    }
+    b->pool.Account(bytes);
+    b->current = n;
+  }
+
+  static void End(void* data, const XML_Char*) {
+    auto* b = static_cast<TreeBuilder*>(data);
+    b->current = b->current->parent;
+  }
+
+  static void Text(void* data, const XML_Char* text, int length) {
+    auto* b = static_cast<TreeBuilder*>(data);
+    if (b->current->type == Node::Type::kDocument) return;  // whitespace outside the root
+    // expat delivers text in pieces (lines, entities): one node per run, as minidom builds it
+    Node* last = b->current->last;
+    Node* n = b->cdata ? b->cdata : (last && last->type == Node::Type::kText ? last : b->Add(Node::Type::kText));
+    n->data.append(text, static_cast<size_t>(length));
+    b->pool.Account(static_cast<size_t>(length));
+  }
+
+  static void Comment(void* data, const XML_Char* text) {
+    auto* b = static_cast<TreeBuilder*>(data);
+    b->Add(Node::Type::kComment)->data = text;
+  }
+
+  static void StartCData(void* data) {
+    auto* b = static_cast<TreeBuilder*>(data);
+    b->cdata = b->Add(Node::Type::kCData);
+  }
+
+  static void EndCData(void* data) {
+    static_cast<TreeBuilder*>(data)->cdata = nullptr;
+  }
+};
 
 }  // namespace
 
@@ -177,15 +199,25 @@ Node* ParseXmlFile(const std::string& path, int file_index, NodePool& pool) {
   char chunk[65536];
   for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, in)) > 0;) text.append(chunk, n);
   std::fclose(in);
-  tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);
-  if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
-    std::string what = doc.ErrorStr() ? doc.ErrorStr() : "malformed XML";
-    throw Error(SourceLocation{path, doc.ErrorLineNum()}, "XML parsing error: " + what);
-  }
-  if (!doc.RootElement()) throw Error(SourceLocation{path, 0}, "XML parsing error: no element found");
+
   Node* document = pool.Allocate(Node::Type::kDocument);
   document->file = file_index;
-  Convert(&doc, document, file_index, pool);
+  XML_Parser parser = XML_ParserCreate(nullptr);
+  TreeBuilder builder{parser, pool, file_index, document};
+  XML_SetUserData(parser, &builder);
+  XML_SetElementHandler(parser, &TreeBuilder::Start, &TreeBuilder::End);
+  XML_SetCharacterDataHandler(parser, &TreeBuilder::Text);
+  XML_SetCommentHandler(parser, &TreeBuilder::Comment);
+  XML_SetCdataSectionHandler(parser, &TreeBuilder::StartCData, &TreeBuilder::EndCData);
+  const bool ok = XML_Parse(parser, text.data(), static_cast<int>(text.size()), XML_TRUE) == XML_STATUS_OK;
+  const int line = static_cast<int>(XML_GetCurrentLineNumber(parser));
+  const int column = static_cast<int>(XML_GetCurrentColumnNumber(parser));
+  const std::string what = ok ? "" : XML_ErrorString(XML_GetErrorCode(parser));
+  XML_ParserFree(parser);
+  if (!ok) {
+    throw Error(SourceLocation{path, line},
+                "XML parsing error: " + what + ": line " + std::to_string(line) + ", column " + std::to_string(column));
+  }
   return document;
 }
 

@@ -66,13 +66,16 @@ void InsertChildrenBefore(Node* from, Node* before);
 // to just remove `node`.
 void ReplaceNode(Node* node, Node* by, bool content_only);
 
-// Parses the XML file `path` into a document node. Throws urdfsnap::Error
-// "XML parsing error: ..." with the line for malformed XML and "No such file or directory: PATH"
-// (as IoError) when it cannot be read. `file_index` is stored on every node.
+// A file that cannot be read; what() is "No such file or directory: PATH" (strerror: path).
 class IoError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// Parses the XML file `path` into a document node (comments and whitespace kept, XML declaration
+// and DOCTYPE dropped). Throws urdfsnap::Error "XML parsing error: mismatched tag: line 4,
+// column 4" for malformed XML and IoError when it cannot be read. `file_index` is stored on every
+// node.
 Node* ParseXmlFile(const std::string& path, int file_index, NodePool& pool);
 
 // Writes the document as xacro's pretty printer does: `<?xml version="1.0" ?>`, two-space

@@ -89,15 +89,7 @@ Value Convert(const YAML::Node& node, const std::function<Value(const std::strin
       std::vector<std::pair<Value, Value>> items;
       for (const auto& kv : node) {
         Value key = Convert(kv.first, evaluate);
-        Value value = Convert(kv.second, evaluate);
-        bool replaced = false;
-        for (auto& existing : items) {
-          if (Equal(existing.first, key)) {
-            existing.second = value;
-            replaced = true;
-          }
-        }
-        if (!replaced) items.emplace_back(std::move(key), std::move(value));
+        DictPut(items, std::move(key), Convert(kv.second, evaluate));
       }
       return Wrapped(Value::Dict(std::move(items)), true);
     }

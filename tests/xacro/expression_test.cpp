@@ -1,0 +1,168 @@
+// The Python expression subset: values and spelling of results, Python's operator semantics,
+// builtins and math, and the errors Python raises (including the __ guard).
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "xacro/builtins.h"
+#include "xacro/expression_evaluator.h"
+#include "xacro/expression_parser.h"
+
+namespace urdfsnap::xacro {
+namespace {
+
+class Names : public NameLookup {
+ public:
+  Names() : globals_(MakeGlobalSymbols({}, {}, [this](const std::string& w) { warnings.push_back(w); })) {
+    locals_["x"] = Value::Integer(3);
+    locals_["name"] = Value::Str("gripper_left");
+    locals_["xyz"] = Value::List({Value::Float(0.1), Value::Float(0.2), Value::Float(0.3)});
+  }
+  Value Lookup(const std::string& name) override {
+    if (auto it = locals_.find(name); it != locals_.end()) return it->second;
+    if (auto it = globals_.find(name); it != globals_.end()) return it->second;
+    throw EvalError("name '" + name + "' is not defined");
+  }
+  std::vector<std::string> warnings;
+
+ private:
+  std::unordered_map<std::string, Value> globals_;
+  std::map<std::string, Value> locals_;
+};
+
+std::string Eval(const std::string& text) {
+  Names names;
+  return ToStr(Evaluate(*ParseExpression(text), names));
+}
+
+std::string EvalFailure(const std::string& text) {
+  try {
+    Eval(text);
+  } catch (const EvalError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+struct Case {
+  const char* expr;
+  const char* expected;
+};
+
+TEST(Expression, Arithmetic) {
+  const Case cases[] = {
+      {"1 + 2", "3"}, {"10 - 4.5", "5.5"}, {"10 / 4", "2.5"}, {"10 / 2", "5.0"}, {"7 // 2", "3"},
+      {"-7 // 2", "-4"}, {"7 % 3", "1"}, {"-7 % 3", "2"}, {"7 % -3", "-2"}, {"7.5 % 2", "1.5"},
+      {"-7.5 // 2", "-4.0"}, {"2 ** 10", "1024"}, {"2 ** -1", "0.5"}, {"-2 ** 2", "-4"},
+      {"(-2) ** 2", "4"}, {"2 + 3 * 4 ** 2", "50"}, {"2 ** 64", "18446744073709551616"},
+      {"10 ** 20", "100000000000000000000"}, {"1_000 + 1", "1001"}, {"0x10 + 0o17 + 0b101", "36"},
+      {"True * 3", "3"}, {"3 * 0.5", "1.5"}, {"0.1 + 0.2", "0.30000000000000004"}, {"1e-7", "1e-07"},
+      {"-(-3)", "3"}, {"~5", "-6"}, {"6 & 3 | 8 ^ 1", "11"}, {"1 << 4", "16"}, {"12 / 4", "3.0"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(Eval(c.expr), c.expected) << c.expr;
+}
+
+TEST(Expression, ComparisonsAndLogic) {
+  const Case cases[] = {
+      {"1 < 2 < 3", "True"}, {"1 < 3 < 2", "False"}, {"x == 3.0", "True"}, {"0 or 'a'", "a"},
+      {"'' and 1", ""}, {"1 and [] or 5", "5"}, {"not x", "False"}, {"'left' in name", "True"},
+      {"4 not in xyz", "True"}, {"None is None", "True"}, {"x is not None", "True"},
+      {"'gpu' if x > 2 else 'cpu'", "gpu"}, {"'a' if 0 else ('b' if 1 else 'c')", "b"},
+      {"[1, 2] < [1, 3]", "True"}, {"'abc' < 'abd'", "True"}, {"True == 1", "True"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(Eval(c.expr), c.expected) << c.expr;
+}
+
+TEST(Expression, StringsListsDicts) {
+  const Case cases[] = {
+      {"name + '_x'", "gripper_left_x"}, {"'ab' * 3", "ababab"}, {"name.upper()", "GRIPPER_LEFT"},
+      {"'a-b-c'.replace('-', '_')", "a_b_c"}, {"'%s_%d' % ('p', 3)", "p_3"}, {"'%.3f' % (1/3)", "0.333"},
+      {"'%g' % 0.0001", "0.0001"}, {"'%.2e' % 12345.678", "1.23e+04"}, {"'%d' % 3.7", "3"},
+      {"'%5s|%-4d|%03d' % ('a', 7, 5)", "    a|7   |005"}, {"'%(k)s' % dict(k=1)", "1"},
+      {"'a b c'.split()[1]", "b"}, {"'a,b,,c'.split(',')", "['a', 'b', '', 'c']"},
+      {"'/'.join(['x', 'y'])", "x/y"}, {"name[1:3]", "ri"}, {"name[::-1][:4]", "tfel"},
+      {"name[-4:]", "left"}, {"'  pad '.strip()", "pad"}, {"\"dq\" 'concat'", "dqconcat"},
+      {"'it\\'s'", "it's"}, {"python.repr('it\\'s')", "\"it's\""}, {"str(1.5) + 'm'", "1.5m"},
+      {"name.startswith(('arm', 'grip'))", "True"}, {"'x'.join('abc')", "axbxc"},
+      {"xyz", "[0.1, 0.2, 0.3]"}, {"xyz[-1]", "0.3"}, {"xyz[1:]", "[0.2, 0.3]"}, {"(1,)", "(1,)"},
+      {"(1, 2)", "(1, 2)"}, {"[]", "[]"}, {"[[1, 2], [3, 4]][1][0]", "3"},
+      {"[v * 2 for v in xyz]", "[0.2, 0.4, 0.6]"}, {"[a + b for a, b in [(1, 2), (3, 4)]]", "[3, 7]"},
+      {"[i for i in python.range(6) if i % 2 if i > 1]", "[3, 5]"},
+      {"[(i, j) for i in [1, 2] for j in 'ab']", "[(1, 'a'), (1, 'b'), (2, 'a'), (2, 'b')]"},
+      {"dict(lower=-1.57, upper=1.57)", "{'lower': -1.57, 'upper': 1.57}"},
+      {"dict(a=1)['a']", "1"}, {"list(dict(a=1, b=2).keys())", "['a', 'b']"},
+      {"dict(a=1).get('z', 9)", "9"}, {"len(name)", "12"}, {"len('é')", "1"},
+      {"python.sum(x for x in xyz)", "0.6000000000000001"}, {"sorted([3, 1, 2])", "[1, 2, 3]"},
+      {"python.sorted([3, 1, 2], reverse=True)", "[3, 2, 1]"}, {"list(map(str, [1, 2]))", "['1', '2']"},
+      {"python.zip([1, 2], 'ab')", "[(1, 'a'), (2, 'b')]"}, {"python.enumerate('ab')", "[(0, 'a'), (1, 'b')]"},
+      {"python.any([0, 1])", "True"}, {"python.abs(-2)", "2"}, {"python.divmod(-7, 2)", "(-4, 1)"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(Eval(c.expr), c.expected) << c.expr;
+}
+
+TEST(Expression, BuiltinsAndMath) {
+  const Case cases[] = {
+      {"pi", "3.141592653589793"}, {"math.pi", "3.141592653589793"}, {"tau", "6.283185307179586"},
+      {"e", "2.718281828459045"}, {"sin(0)", "0.0"}, {"sin(pi)", "1.2246467991473532e-16"},
+      {"radians(180)", "3.141592653589793"}, {"degrees(pi)", "180.0"}, {"sqrt(16)", "4.0"},
+      {"floor(2.7)", "2"}, {"ceil(2.1)", "3"}, {"math.floor(-0.5)", "-1"}, {"atan2(1, 1)", "0.7853981633974483"},
+      {"hypot(3, 4)", "5.0"}, {"pow(2, 3)", "8.0"}, {"fabs(-2)", "2.0"}, {"log(e)", "1.0"},
+      {"log(8, 2)", "3.0"}, {"round(2.675, 2)", "2.67"}, {"round(2.5)", "2"}, {"round(3.5)", "4"},
+      {"round(-0.5)", "0"}, {"round(7.0)", "7"}, {"int('42') + int(3.9)", "45"}, {"int(-2.9)", "-2"},
+      {"float('1.25')", "1.25"}, {"float('inf')", "inf"}, {"min(3, 1, 2)", "1"}, {"max(xyz)", "0.3"},
+      {"str(True)", "True"}, {"inf", "inf"}, {"math.isclose(0.1 + 0.2, 0.3)", "True"},
+      {"math.factorial(25)", "15511210043330985984000000"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(Eval(c.expr), c.expected) << c.expr;
+}
+
+TEST(Expression, DeprecatedDirectNamesWarn) {
+  Names names;
+  EXPECT_EQ(ToStr(Evaluate(*ParseExpression("range(3)"), names)), "[0, 1, 2]");
+  ASSERT_EQ(names.warnings.size(), 1u);
+  EXPECT_EQ(names.warnings[0], "Using range() directly is deprecated. Use python.range() instead.");
+}
+
+TEST(Expression, ErrorsArePythonsErrors) {
+  const Case cases[] = {
+      {"1 / 0", "division by zero"},
+      {"1 // 0", "integer division or modulo by zero"},
+      {"1.0 / 0", "float division by zero"},
+      {"undefined_name", "name 'undefined_name' is not defined"},
+      {"true", "name 'true' is not defined"},
+      {"1 +* 2", "invalid syntax (<expression>, line 1)"},
+      {" {'a': 1", "invalid syntax (<expression>, line 1)"},
+      {"007", "leading zeros in decimal integer literals are not permitted (<expression>, line 1)"},
+      {"__import__('os').getcwd()", "Use of invalid name(s): __import__"},
+      {"().__class__", "Use of invalid name(s): __class__"},
+      {"'a' + 1", "can only concatenate str (not \"int\") to str"},
+      {"'a' < 1", "'<' not supported between instances of 'str' and 'int'"},
+      {"xyz[5]", "list index out of range"},
+      {"dict(a=1)['b']", "'b'"},
+      {"x()", "'int' object is not callable"},
+      {"name.nosuch", "'str' object has no attribute 'nosuch'"},
+      {"math.nosuch", "module 'math' has no attribute 'nosuch'"},
+      {"sqrt(-1)", "math domain error"},
+      {"int('x')", "invalid literal for int() with base 10: 'x'"},
+      {"'a' * 10 ** 12", "result of repetition is too large (limit 16777216)"},
+      {"2 ** 200", "integer overflow: the result needs more than 127 bits"},
+      {"lambda: 1", "lambda expressions are not supported"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(EvalFailure(c.expr), c.expected) << c.expr;
+}
+
+TEST(Expression, NestingIsBounded) {
+  EXPECT_EQ(EvalFailure(std::string(1000, '(') + "1" + std::string(1000, ')')),
+            "too many nested parentheses (<expression>, line 1)");
+  std::string chain = "1";
+  for (int k = 0; k < 15000; ++k) chain += "+1";
+  EXPECT_EQ(EvalFailure(chain), "expression too long (more than 20000 tokens)");
+  std::string ok = "1";
+  for (int k = 0; k < 5000; ++k) ok += "+1";
+  EXPECT_EQ(Eval(ok), "5001");
+}
+
+}  // namespace
+}  // namespace urdfsnap::xacro
