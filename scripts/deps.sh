@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   liburdfdom-dev libeigen3-dev libosmesa6-dev libstb-dev zlib1g-dev
-  libtinyxml2-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
+  libtinyxml2-dev libexpat1-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libbenchmark-dev fonts-liberation python3
 )
 missing=()
