@@ -49,8 +49,9 @@ Node* Node::NextSiblingElement() const {
 
 Node* NodePool::Allocate(Node::Type type) {
   Account(sizeof(Node));
-  if (used_in_block_ == kBlockNodes) {
-    blocks_.push_back(std::make_unique<Node[]>(kBlockNodes));
+  if (used_in_block_ == block_size_) {
+    block_size_ = std::min<size_t>(4096, block_size_ == 0 ? 64 : block_size_ * 2);
+    blocks_.push_back(std::make_unique<Node[]>(block_size_));
     used_in_block_ = 0;
   }
   Node* node = &blocks_.back()[used_in_block_++];
@@ -180,6 +181,13 @@ struct TreeBuilder {
     b->Add(Node::Type::kComment)->data = text;
   }
 
+  static void Instruction(void* data, const XML_Char* target, const XML_Char* text) {
+    auto* b = static_cast<TreeBuilder*>(data);
+    Node* n = b->Add(Node::Type::kProcessingInstruction);
+    n->name = target;
+    n->data = text;
+  }
+
   static void StartCData(void* data) {
     auto* b = static_cast<TreeBuilder*>(data);
     b->cdata = b->Add(Node::Type::kCData);
@@ -208,6 +216,7 @@ Node* ParseXmlFile(const std::string& path, int file_index, NodePool& pool) {
   XML_SetElementHandler(parser, &TreeBuilder::Start, &TreeBuilder::End);
   XML_SetCharacterDataHandler(parser, &TreeBuilder::Text);
   XML_SetCommentHandler(parser, &TreeBuilder::Comment);
+  XML_SetProcessingInstructionHandler(parser, &TreeBuilder::Instruction);
   XML_SetCdataSectionHandler(parser, &TreeBuilder::StartCData, &TreeBuilder::EndCData);
   const bool ok = XML_Parse(parser, text.data(), static_cast<int>(text.size()), XML_TRUE) == XML_STATUS_OK;
   const int line = static_cast<int>(XML_GetCurrentLineNumber(parser));
@@ -262,6 +271,10 @@ void Write(std::string& out, const Node* n, int depth) {
       out += "<!--";
       out += n->data;
       out += "-->\n";
+      return;
+    case Node::Type::kProcessingInstruction:
+      Indent(out, depth);
+      out += "<?" + n->name + " " + n->data + "?>\n";
       return;
     default: break;
   }

@@ -13,10 +13,10 @@
 namespace urdfsnap::xacro {
 
 struct Node {
-  enum class Type { kDocument, kElement, kText, kCData, kComment };
+  enum class Type { kDocument, kElement, kText, kCData, kComment, kProcessingInstruction };
   Type type = Type::kElement;
-  std::string name;  // element tag
-  std::string data;  // text, CDATA or comment content
+  std::string name;  // element tag; processing instruction target
+  std::string data;  // text, CDATA, comment or processing instruction content
   std::vector<std::pair<std::string, std::string>> attributes;  // in document order
   Node* parent = nullptr;
   Node* first = nullptr;
@@ -49,9 +49,11 @@ class NodePool {
   void Account(size_t bytes);
 
  private:
-  static constexpr size_t kBlockNodes = 4096;
-  std::vector<std::unique_ptr<Node[]>> blocks_;  // nodes are allocated a block at a time
-  size_t used_in_block_ = kBlockNodes;
+  // nodes are allocated a block at a time, blocks growing from 64 to 4096 nodes (small documents
+  // touch little memory, large ones make few allocations)
+  std::vector<std::unique_ptr<Node[]>> blocks_;
+  size_t block_size_ = 0;
+  size_t used_in_block_ = 0;
   size_t bytes_ = 0;
   size_t max_bytes_;
 };
