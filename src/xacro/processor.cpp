@@ -484,8 +484,8 @@ void Processor::GrabProperty(Node* node, const Symbols& symbols) {
     lazy = false;
   } else if (scope && *scope == "parent") {
     if (!symbols->parent()) {
-      warnings_.Add(Located(name + ": no parent scope at global scope "));
-      return;
+      // the reference fails here too (it tries to store into its dict of global symbols)
+      throw EvalError(name + ": no parent scope at global scope");
     }
     target = symbols->parent().get();
     lazy = false;

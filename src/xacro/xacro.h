@@ -20,7 +20,7 @@ struct Options {
 
   // Limits that end hostile or runaway input with an error instead of exhausting memory.
   int max_include_depth = 100;                    // nested xacro:include
-  int max_macro_depth = 500;                      // nested macro calls (Python's xacro: ~330)
+  int max_macro_depth = 330;  // nested macro calls (where Python's recursion limit stops xacro)
   size_t max_document_bytes = size_t{256} << 20;  // nodes and text created while expanding
 };
 

@@ -289,7 +289,11 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"fatal", "<a v=\"${xacro.fatal('stop', 1)}\"/>", "stop 1"},
         ErrorCase{"element_name", "<xacro:element xacro:name=\"${''}\"/>", "xacro:element: empty name"},
         ErrorCase{"yaml_missing", "<a v=\"${xacro.load_yaml('none.yaml')}\"/>", "No such file or directory"},
-        ErrorCase{"malformed", "<a></b>", "XML parsing error"}),
+        ErrorCase{"malformed", "<a></b>", "XML parsing error: mismatched tag"},
+        ErrorCase{"parent_scope_at_top", "<xacro:property name=\"p\" value=\"1\" scope=\"parent\"/>", "no parent scope at global scope"},
+        ErrorCase{"empty_expression", "<a v=\"${}\"/>", "invalid syntax"},
+        ErrorCase{"macro_dot", "<xacro:macro name=\"a.b\"/>", "macro names must not contain '.'"},
+        ErrorCase{"missing_attribute", "<xacro:insert_block/>", "xacro:insert_block: missing attribute 'name'"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Processor, ErrorsNameTheIncludeChainAndMacro) {
@@ -325,7 +329,7 @@ TEST(Processor, HostileInputIsBounded) {
 
   const std::string forever = "<xacro:macro name=\"f\" params=\"i\"><xacro:f i=\"${i + 1}\"/></xacro:macro><xacro:f i=\"0\"/>";
   const std::string depth = ExpandError(Robot(forever));
-  EXPECT_THAT(depth, HasSubstr("maximum macro recursion depth (500) exceeded in macro 'f'"));
+  EXPECT_THAT(depth, HasSubstr("maximum macro recursion depth (330) exceeded in macro 'f'"));
   EXPECT_THAT(depth, HasSubstr("more times"));
 
   TestFiles files;
