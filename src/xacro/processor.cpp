@@ -84,6 +84,10 @@ Processor::Processor(const Options& options, Warnings& warnings)
   barrier_->data = "\n\n";
 }
 
+Processor::~Processor() {
+  for (const auto& table : namespaces_) table->Clear();
+}
+
 std::vector<std::pair<std::string, Value>> Processor::XacroMembers() {
   auto message = [this](const std::string& kind) {
     return Value::Callable(kind, [this, kind](ValueList& a, Kwargs&) {
@@ -284,6 +288,17 @@ void Processor::RemovePreviousComments(Node* node) {
   }
 }
 
+void Processor::Recycle(Node* node) {
+  // the comment barrier may sit among the node's children: it lives on
+  for (const Node* p = barrier_->parent; p; p = p->parent) {
+    if (p == node) {
+      RemoveChild(barrier_);
+      break;
+    }
+  }
+  pool_.Release(node);
+}
+
 void Processor::EvalAll(Node* node, const Macros& macros, const Symbols& symbols) {
   current_ = node;
   for (size_t k = 0; k < node->attributes.size();) {
@@ -381,6 +396,7 @@ void Processor::ProcessInclude(Node* node, const Macros& macros, const Symbols& 
     ns_macros = std::make_shared<MacroTable>();
     macros->SetNamespace(name, ns_macros);
     ns_symbols = std::make_shared<Table>(symbols, &table_context_, true);
+    namespaces_.push_back(ns_symbols);
     symbols->Set(name, Value::Scope(ns_symbols), true);
   }
   const std::string* optional_attr = node->Attribute("optional");
@@ -665,6 +681,9 @@ void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& m
   }
   ReplaceNode(node, body, true);
   macro_stack_.pop_back();
+  // the call (with its blocks) and the emptied body copy are no longer referenced
+  Recycle(body);
+  Recycle(node);
 }
 
 Result Processor::Run(const std::string& path) {

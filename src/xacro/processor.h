@@ -21,6 +21,9 @@ namespace urdfsnap::xacro {
 class Processor : public TextEvaluator {
  public:
   Processor(const Options& options, Warnings& warnings);
+  ~Processor() override;
+  Processor(const Processor&) = delete;
+  Processor& operator=(const Processor&) = delete;
 
   // Expands the file; throws urdfsnap::Error with location and include/macro chain.
   Result Run(const std::string& path);
@@ -49,6 +52,8 @@ class Processor : public TextEvaluator {
   bool HandleMacroCall(Node* node, const Macros& macros, const Symbols& symbols);
   void ExpandMacro(Node* node, const std::string& name, const Macros& macros, const Symbols& symbols);
   void RemovePreviousComments(Node* node);
+  // Gives a node that left the document (and its subtree) back to the pool.
+  void Recycle(Node* node);
 
   Value EvalExpression(const std::string& text, const Symbols& symbols);
   std::string AbsFilename(const std::string& spec) const;
@@ -65,6 +70,7 @@ class Processor : public TextEvaluator {
   std::vector<OpenFile> file_stack_;
   std::vector<std::shared_ptr<const Macro>> macro_stack_;  // kept alive for error messages
   std::vector<std::string> dependencies_;
+  std::vector<std::shared_ptr<Table>> namespaces_;  // include ns= tables, cleared at the end
   std::unordered_map<std::string, ExprPtr> expression_cache_;
   const Node* current_ = nullptr;  // the node being processed, for error locations
   Node* barrier_ = nullptr;        // xacro's _empty_text_node: stops comment removal

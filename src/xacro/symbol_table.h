@@ -59,6 +59,13 @@ class Table : public std::enable_shared_from_this<Table> {
   const std::shared_ptr<Table>& parent() const { return parent_; }
   bool is_namespace() const { return is_namespace_; }
   TableContext* context() const { return context_; }
+  // Drops every property and the link to the parent: a namespace table stored in its parent
+  // forms a reference cycle that the end of a run breaks this way.
+  void Clear() {
+    entries_.clear();
+    parent_.reset();
+  }
+
   // The top-level table (whose parent is the globals).
   Table* Top();
 

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 
 #include "common/error.h"
 
@@ -49,6 +50,18 @@ Node* Node::NextSiblingElement() const {
 
 Node* NodePool::Allocate(Node::Type type) {
   Account(sizeof(Node));
+  if (!free_.empty()) {
+    Node* node = free_.back();
+    free_.pop_back();
+    node->type = type;
+    node->name.clear();
+    node->data.clear();
+    node->attributes.clear();
+    node->parent = node->first = node->last = node->prev = node->next = nullptr;
+    node->file = -1;
+    node->line = 0;
+    return node;
+  }
   if (used_in_block_ == block_size_) {
     block_size_ = std::min<size_t>(4096, block_size_ == 0 ? 64 : block_size_ * 2);
     blocks_.push_back(std::make_unique<Node[]>(block_size_));
@@ -59,6 +72,18 @@ Node* NodePool::Allocate(Node::Type type) {
   return node;
 }
 
+void NodePool::Release(Node* node) {
+  RemoveChild(node);
+  std::vector<Node*> pending{node};
+  while (!pending.empty()) {
+    Node* n = pending.back();
+    pending.pop_back();
+    for (Node* c = n->first; c; c = c->next) pending.push_back(c);
+    bytes_ -= std::min(bytes_, sizeof(Node));
+    free_.push_back(n);
+  }
+}
+
 void NodePool::Account(size_t bytes) {
   bytes_ += bytes;
   if (bytes_ > max_bytes_) {
@@ -66,6 +91,14 @@ void NodePool::Account(size_t bytes) {
                 " MiB (runaway macro expansion?)");
   }
 }
+
+namespace {
+
+bool IsIndentation(const std::string& s) {
+  return s.find_first_not_of(" \t\n\r") == std::string::npos && std::count(s.begin(), s.end(), '\n') <= 1;
+}
+
+}  // namespace
 
 Node* NodePool::Clone(const Node* node) {
   Node* copy = Allocate(node->type);
@@ -77,7 +110,13 @@ Node* NodePool::Clone(const Node* node) {
   size_t bytes = node->name.size() + node->data.size();
   for (const auto& [k, v] : node->attributes) bytes += k.size() + v.size();
   Account(bytes);
-  for (const Node* c = node->first; c; c = c->next) AppendChild(copy, Clone(c));
+  for (const Node* c = node->first; c; c = c->next) {
+    // Indentation between siblings is half of a typical macro body and never printed. xacro's
+    // comment handling skips such text (at most one newline) as if it were absent, so copies leave
+    // it out; a blank line (two newlines) and the only child of an element are kept.
+    if (c->type == Node::Type::kText && node->first != node->last && IsIndentation(c->data)) continue;
+    AppendChild(copy, Clone(c));
+  }
   return copy;
 }
 
@@ -134,11 +173,20 @@ namespace {
 // uses: whitespace-only text is kept (xacro's comment handling counts its newlines), attribute
 // values are normalised, and error messages read the same ("mismatched tag: line 4, column 4").
 struct TreeBuilder {
+  // Python's recursion limit stops xacro on documents nested about this deep
+  static constexpr int kMaxDepth = 1000;
+
+  TreeBuilder(XML_Parser p, NodePool& nodes, const std::string& file_path, int file_index, Node* document)
+      : parser(p), pool(nodes), path(file_path), file(file_index), current(document) {}
+
   XML_Parser parser;
   NodePool& pool;
+  const std::string& path;
   int file;
   Node* current;
   Node* cdata = nullptr;  // the CDATA section being read
+  int depth = 0;
+  std::exception_ptr error;  // what stopped the parser (exceptions must not cross expat's C frames)
 
   Node* Add(Node::Type type) {
     Node* n = pool.Allocate(type);
@@ -148,53 +196,72 @@ struct TreeBuilder {
     return n;
   }
 
-  static void Start(void* data, const XML_Char* name, const XML_Char** attributes) {
+  template <typename Body>
+  static void Guarded(void* data, Body body) {
     auto* b = static_cast<TreeBuilder*>(data);
-    Node* n = b->Add(Node::Type::kElement);
-    n->name = name;
-    size_t bytes = n->name.size();
-    for (const XML_Char** a = attributes; *a; a += 2) {
-      n->attributes.emplace_back(a[0], a[1]);
-      bytes += n->attributes.back().first.size() + n->attributes.back().second.size();
+    if (b->error) return;
+    try {
+      body(*b);
+    } catch (...) {
+      b->error = std::current_exception();
+      XML_StopParser(b->parser, XML_FALSE);
     }
-    b->pool.Account(bytes);
-    b->current = n;
+  }
+
+  static void Start(void* data, const XML_Char* name, const XML_Char** attributes) {
+    Guarded(data, [&](TreeBuilder& b) {
+      if (++b.depth > kMaxDepth) {
+        throw Error(SourceLocation{b.path, static_cast<int>(XML_GetCurrentLineNumber(b.parser))},
+                    "elements nested more than " + std::to_string(kMaxDepth) + " deep");
+      }
+      Node* n = b.Add(Node::Type::kElement);
+      n->name = name;
+      size_t bytes = n->name.size();
+      for (const XML_Char** a = attributes; *a; a += 2) {
+        n->attributes.emplace_back(a[0], a[1]);
+        bytes += n->attributes.back().first.size() + n->attributes.back().second.size();
+      }
+      b.pool.Account(bytes);
+      b.current = n;
+    });
   }
 
   static void End(void* data, const XML_Char*) {
-    auto* b = static_cast<TreeBuilder*>(data);
-    b->current = b->current->parent;
+    Guarded(data, [](TreeBuilder& b) {
+      --b.depth;
+      b.current = b.current->parent;
+    });
   }
 
   static void Text(void* data, const XML_Char* text, int length) {
-    auto* b = static_cast<TreeBuilder*>(data);
-    if (b->current->type == Node::Type::kDocument) return;  // whitespace outside the root
-    // expat delivers text in pieces (lines, entities): one node per run, as minidom builds it
-    Node* last = b->current->last;
-    Node* n = b->cdata ? b->cdata : (last && last->type == Node::Type::kText ? last : b->Add(Node::Type::kText));
-    n->data.append(text, static_cast<size_t>(length));
-    b->pool.Account(static_cast<size_t>(length));
+    Guarded(data, [&](TreeBuilder& b) {
+      if (b.current->type == Node::Type::kDocument) return;  // whitespace outside the root
+      // expat delivers text in pieces (lines, entities): one node per run, as minidom builds it
+      Node* last = b.current->last;
+      Node* n = b.cdata ? b.cdata : (last && last->type == Node::Type::kText ? last : b.Add(Node::Type::kText));
+      n->data.append(text, static_cast<size_t>(length));
+      b.pool.Account(static_cast<size_t>(length));
+    });
   }
 
   static void Comment(void* data, const XML_Char* text) {
-    auto* b = static_cast<TreeBuilder*>(data);
-    b->Add(Node::Type::kComment)->data = text;
+    Guarded(data, [&](TreeBuilder& b) { b.Add(Node::Type::kComment)->data = text; });
   }
 
   static void Instruction(void* data, const XML_Char* target, const XML_Char* text) {
-    auto* b = static_cast<TreeBuilder*>(data);
-    Node* n = b->Add(Node::Type::kProcessingInstruction);
-    n->name = target;
-    n->data = text;
+    Guarded(data, [&](TreeBuilder& b) {
+      Node* n = b.Add(Node::Type::kProcessingInstruction);
+      n->name = target;
+      n->data = text;
+    });
   }
 
   static void StartCData(void* data) {
-    auto* b = static_cast<TreeBuilder*>(data);
-    b->cdata = b->Add(Node::Type::kCData);
+    Guarded(data, [](TreeBuilder& b) { b.cdata = b.Add(Node::Type::kCData); });
   }
 
   static void EndCData(void* data) {
-    static_cast<TreeBuilder*>(data)->cdata = nullptr;
+    Guarded(data, [](TreeBuilder& b) { b.cdata = nullptr; });
   }
 };
 
@@ -211,7 +278,7 @@ Node* ParseXmlFile(const std::string& path, int file_index, NodePool& pool) {
   Node* document = pool.Allocate(Node::Type::kDocument);
   document->file = file_index;
   XML_Parser parser = XML_ParserCreate(nullptr);
-  TreeBuilder builder{parser, pool, file_index, document};
+  TreeBuilder builder{parser, pool, path, file_index, document};
   XML_SetUserData(parser, &builder);
   XML_SetElementHandler(parser, &TreeBuilder::Start, &TreeBuilder::End);
   XML_SetCharacterDataHandler(parser, &TreeBuilder::Text);
@@ -223,6 +290,7 @@ Node* ParseXmlFile(const std::string& path, int file_index, NodePool& pool) {
   const int column = static_cast<int>(XML_GetCurrentColumnNumber(parser));
   const std::string what = ok ? "" : XML_ErrorString(XML_GetErrorCode(parser));
   XML_ParserFree(parser);
+  if (builder.error) std::rethrow_exception(builder.error);
   if (!ok) {
     throw Error(SourceLocation{path, line},
                 "XML parsing error: " + what + ": line " + std::to_string(line) + ", column " + std::to_string(column));
@@ -254,7 +322,9 @@ bool IsBlank(const std::string& s) {
 
 void Indent(std::string& out, int depth) { out.append(static_cast<size_t>(depth) * 2, ' '); }
 
-void Write(std::string& out, const Node* n, int depth) {
+using AttributeList = std::vector<const std::pair<std::string, std::string>*>;
+
+void Write(std::string& out, const Node* n, int depth, AttributeList& attrs) {
   switch (n->type) {
     case Node::Type::kText:
       Indent(out, depth);
@@ -281,8 +351,7 @@ void Write(std::string& out, const Node* n, int depth) {
   Indent(out, depth);
   out += '<';
   out += n->name;
-  std::vector<const std::pair<std::string, std::string>*> attrs;
-  attrs.reserve(n->attributes.size());
+  attrs.clear();
   for (const auto& a : n->attributes) attrs.push_back(&a);
   std::sort(attrs.begin(), attrs.end(), [](auto* a, auto* b) { return a->first < b->first; });
   for (const auto* a : attrs) {
@@ -303,7 +372,7 @@ void Write(std::string& out, const Node* n, int depth) {
     out += ">\n";
     for (const Node* c = n->first; c; c = c->next) {
       if (c->type == Node::Type::kText && IsBlank(c->data)) continue;
-      Write(out, c, depth + 1);
+      Write(out, c, depth + 1, attrs);
     }
     Indent(out, depth);
   }
@@ -316,9 +385,11 @@ void Write(std::string& out, const Node* n, int depth) {
 
 std::string WriteXml(const Node* document) {
   std::string out = "<?xml version=\"1.0\" ?>\n";
+  out.reserve(size_t{1} << 16);
+  AttributeList attrs;
   for (const Node* c = document->first; c; c = c->next) {
     if (c->type == Node::Type::kText) continue;
-    Write(out, c, 0);
+    Write(out, c, 0, attrs);
   }
   return out;
 }

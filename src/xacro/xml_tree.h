@@ -47,6 +47,8 @@ class NodePool {
   Node* Clone(const Node* node);
   // Counts `bytes` more of document content (attribute values, text).
   void Account(size_t bytes);
+  // Unlinks `node` and gives it and its subtree back for reuse; nothing may refer to them.
+  void Release(Node* node);
 
  private:
   // nodes are allocated a block at a time, blocks growing from 64 to 4096 nodes (small documents
@@ -54,6 +56,7 @@ class NodePool {
   std::vector<std::unique_ptr<Node[]>> blocks_;
   size_t block_size_ = 0;
   size_t used_in_block_ = 0;
+  std::vector<Node*> free_;  // released nodes, reused first (their strings keep their capacity)
   size_t bytes_ = 0;
   size_t max_bytes_;
 };

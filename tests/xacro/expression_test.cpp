@@ -160,8 +160,8 @@ TEST(Expression, NestingIsBounded) {
   for (int k = 0; k < 15000; ++k) chain += "+1";
   EXPECT_EQ(EvalFailure(chain), "expression too long (more than 20000 tokens)");
   std::string ok = "1";
-  for (int k = 0; k < 5000; ++k) ok += "+1";
-  EXPECT_EQ(Eval(ok), "5001");
+  for (int k = 0; k < 1000; ++k) ok += "+1";
+  EXPECT_EQ(Eval(ok), "1001");
 }
 
 }  // namespace
