@@ -101,7 +101,8 @@ void AddXacroCommand(CLI::App& app) {
                 "Modern strict behaviour: tags without the xacro: prefix are never macro calls");
   cmd->add_flag("--deps", flags->deps, "Print the files the document depends on instead of the document");
   cmd->add_flag("-q", flags->quiet, "Accepted for compatibility");
-  cmd->add_option("--package", flags->packages, "PKG=DIR: where $(find PKG) points (repeatable)");
+  cmd->add_option("--package", flags->packages, "PKG=DIR: where $(find PKG) points (repeatable)")
+      ->allow_extra_args(false);
   cmd->callback([flags] { Run(*flags); });
 }
 
