@@ -113,8 +113,9 @@ Node* NodePool::Clone(const Node* node) {
   for (const Node* c = node->first; c; c = c->next) {
     // Indentation between siblings is half of a typical macro body and never printed. xacro's
     // comment handling skips such text (at most one newline) as if it were absent, so copies leave
-    // it out; a blank line (two newlines) and the only child of an element are kept.
-    if (c->type == Node::Type::kText && node->first != node->last && IsIndentation(c->data)) continue;
+    // it out; a blank line (two newlines) and the first and last child (where that handling places
+    // its marker against later comment removal) are kept.
+    if (c->type == Node::Type::kText && c != node->first && c != node->last && IsIndentation(c->data)) continue;
     AppendChild(copy, Clone(c));
   }
   return copy;
