@@ -3,12 +3,15 @@
 #include "xacro/xml_tree.h"
 
 #include <expat.h>
+#include <sys/mman.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <new>
 
 #include "common/error.h"
 
@@ -62,14 +65,46 @@ Node* NodePool::Allocate(Node::Type type) {
     node->line = 0;
     return node;
   }
-  if (used_in_block_ == block_size_) {
-    block_size_ = std::min<size_t>(4096, block_size_ == 0 ? 64 : block_size_ * 2);
-    blocks_.push_back(std::make_unique<Node[]>(block_size_));
-    used_in_block_ = 0;
-  }
-  Node* node = &blocks_.back()[used_in_block_++];
+  if (blocks_.empty() || used_in_block_ == blocks_.back().capacity) AddBlock();
+  Node* node = new (&blocks_.back().nodes[used_in_block_++]) Node();
   node->type = type;
   return node;
+}
+
+void NodePool::AddBlock() {
+  constexpr size_t kHuge = size_t{2} << 20;
+  const size_t previous = blocks_.empty() ? 0 : blocks_.back().capacity;
+  const size_t capacity = previous == 0 ? 64 : std::min(previous * 2, kHuge / sizeof(Node));
+  Block block{nullptr, capacity, nullptr};
+  if (capacity * sizeof(Node) * 2 > kHuge) {
+    // a 2 MiB-aligned region (map twice the size, keep the aligned middle) marked for huge pages
+    void* raw = mmap(nullptr, 2 * kHuge, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (raw != MAP_FAILED) {
+      const auto start = reinterpret_cast<uintptr_t>(raw);
+      const uintptr_t aligned = (start + kHuge - 1) & ~(kHuge - 1);
+      if (aligned > start) munmap(raw, aligned - start);
+      if (aligned + kHuge < start + 2 * kHuge) munmap(reinterpret_cast<void*>(aligned + kHuge), start + 2 * kHuge - aligned - kHuge);
+      madvise(reinterpret_cast<void*>(aligned), kHuge, MADV_HUGEPAGE);
+      block.mapping = reinterpret_cast<void*>(aligned);
+      block.nodes = static_cast<Node*>(block.mapping);
+      block.capacity = kHuge / sizeof(Node);
+    }
+  }
+  if (!block.nodes) block.nodes = static_cast<Node*>(::operator new(capacity * sizeof(Node)));
+  blocks_.push_back(block);
+  used_in_block_ = 0;
+}
+
+NodePool::~NodePool() {
+  for (size_t b = 0; b < blocks_.size(); ++b) {
+    const size_t constructed = b + 1 == blocks_.size() ? used_in_block_ : blocks_[b].capacity;
+    for (size_t k = 0; k < constructed; ++k) blocks_[b].nodes[k].~Node();
+    if (blocks_[b].mapping) {
+      munmap(blocks_[b].mapping, size_t{2} << 20);
+    } else {
+      ::operator delete(blocks_[b].nodes);
+    }
+  }
 }
 
 void NodePool::Release(Node* node) {

@@ -42,6 +42,10 @@ struct Node {
 class NodePool {
  public:
   explicit NodePool(size_t max_bytes) : max_bytes_(max_bytes) {}
+  ~NodePool();
+  NodePool(const NodePool&) = delete;
+  NodePool& operator=(const NodePool&) = delete;
+
   Node* Allocate(Node::Type type);
   // A deep copy of `node` (unlinked).
   Node* Clone(const Node* node);
@@ -51,10 +55,17 @@ class NodePool {
   void Release(Node* node);
 
  private:
-  // nodes are allocated a block at a time, blocks growing from 64 to 4096 nodes (small documents
-  // touch little memory, large ones make few allocations)
-  std::vector<std::unique_ptr<Node[]>> blocks_;
-  size_t block_size_ = 0;
+  // Nodes are constructed in place in blocks that grow from 64 nodes (small documents touch little
+  // memory) to 2 MiB huge-page regions (large documents take few page faults, which dominate the
+  // cost of building big trees).
+  struct Block {
+    Node* nodes;
+    size_t capacity;
+    void* mapping;  // the mmap'd region of a huge-page block, else nullptr
+  };
+  void AddBlock();
+
+  std::vector<Block> blocks_;
   size_t used_in_block_ = 0;
   std::vector<Node*> free_;  // released nodes, reused first (their strings keep their capacity)
   size_t bytes_ = 0;
