@@ -19,13 +19,10 @@ namespace {
 constexpr std::string_view kPackageScheme = "package://";
 constexpr std::string_view kFileScheme = "file://";
 
-SourceLocation Where(const std::string& model_file) { return SourceLocation{model_file}; }
-
-std::string Existing(const fs::path& file, const std::string& uri, const std::string& model_file,
-                     const std::string& searched) {
+std::string Existing(const fs::path& file, const std::string& uri, const std::string& searched) {
   std::error_code ec;
   if (fs::is_regular_file(file, ec)) return fs::absolute(file, ec).lexically_normal().string();
-  throw Error(Where(model_file), "mesh '" + uri + "' not found, searched: " + searched);
+  throw Error("mesh '" + uri + "' not found, searched: " + searched);
 }
 
 }  // namespace
@@ -36,35 +33,35 @@ std::string ResolveMeshUri(const std::string& uri, const std::string& model_file
     const std::string rest = uri.substr(kPackageScheme.size());
     const size_t slash = rest.find('/');
     if (slash == 0 || slash == std::string::npos || slash + 1 == rest.size()) {
-      throw Error(Where(model_file), "mesh '" + uri + "': expected package://PACKAGE/PATH");
+      throw Error("mesh '" + uri + "': expected package://PACKAGE/PATH");
     }
     const std::string name = rest.substr(0, slash);
     std::string dir;
     try {
       dir = FindPackage(name, PackageSearch{packages, model_file});
     } catch (const Error& e) {
-      throw Error(Where(model_file), "mesh '" + uri + "' not found: " + e.what());
+      throw Error("mesh '" + uri + "' not found: " + e.what());
     }
     const fs::path file = fs::path(dir) / rest.substr(slash + 1);
-    return Existing(file, uri, model_file,
-                    file.string() + " (package '" + name + "' is " + dir + ")");
+    return Existing(file, uri, file.string() + " (package '" + name + "' is " + dir + ")");
   }
   if (uri.starts_with(kFileScheme)) {
     const std::string path = uri.substr(kFileScheme.size());
     if (!path.starts_with('/')) {
-      throw Error(Where(model_file), "mesh '" + uri + "': expected file:///ABSOLUTE/PATH");
+      throw Error("mesh '" + uri + "': expected file:///ABSOLUTE/PATH");
     }
-    return Existing(path, uri, model_file, path);
+    return Existing(path, uri, path);
   }
   if (const size_t scheme = uri.find("://"); scheme != std::string::npos) {
-    throw Error(Where(model_file), "mesh '" + uri + "': unsupported URI scheme '" +
-                                       uri.substr(0, scheme) +
-                                       "://' (expected package:// or file://)");
+    throw Error("mesh '" + uri + "': unsupported URI scheme '" + uri.substr(0, scheme) +
+                "://' (expected package:// or file://)");
   }
   const fs::path path(uri);
   const fs::path file =
       path.is_absolute() || model_file.empty() ? path : fs::path(model_file).parent_path() / path;
-  return Existing(file, uri, model_file, fs::absolute(file).lexically_normal().string());
+  return Existing(file, uri, fs::absolute(file).lexically_normal().string());
 }
+
+bool IsPlainPath(const std::string& uri) { return uri.find("://") == std::string::npos; }
 
 }  // namespace urdfsnap::geometry

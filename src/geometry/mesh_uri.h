@@ -15,8 +15,12 @@ namespace urdfsnap::geometry {
 //   /ABS               as is;
 //   REL                relative to the folder of `model_file` (the working folder when it is "").
 // Throws urdfsnap::Error naming the URI and every place searched when the file does not exist, and
-// for other schemes (http://, ...).
+// for other schemes (http://, ...); the caller adds where the URI was written.
 std::string ResolveMeshUri(const std::string& uri, const std::string& model_file,
                            const std::map<std::string, std::string>& packages);
+
+// True for a URI without a scheme ("meshes/a.stl", "/abs/a.stl"): urdfsnap resolves it, but RViz
+// and every ROS tool that uses resource_retriever do not.
+bool IsPlainPath(const std::string& uri);
 
 }  // namespace urdfsnap::geometry

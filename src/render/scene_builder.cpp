@@ -30,18 +30,33 @@ struct Part {
 
 // A mesh file's sub-meshes: STL sub-meshes take the link's material, the others keep the file's
 // own diffuse colour (robot_link.cpp: only BaseWhite/BaseWhiteNoLighting sub-meshes get it).
-std::vector<Part> MeshParts(const std::string& link_name, const urdf::Mesh& mesh,
+// Errors and warnings point at the link's element in the model file.
+std::vector<Part> MeshParts(const model::Link& link, const urdf::Mesh& mesh,
                             const Eigen::Vector4f& link_rgba, const SceneOptions& options,
                             Warnings& warnings) {
+  const SourceLocation where{options.model_file, link.line};
+  const std::string culprit = "link '" + link.name + "': ";
   std::string path;
   try {
     path = geometry::ResolveMeshUri(mesh.filename, options.model_file, options.packages);
   } catch (const Error& e) {
-    if (!options.allow_missing_meshes) throw Error("link '" + link_name + "': " + e.what());
-    warnings.Add("link '" + link_name + "': " + e.what() + " (not drawn: --allow-missing-meshes)");
+    if (!options.allow_missing_meshes) throw Error(where, culprit + e.what());
+    warnings.Add(Error(where, culprit + e.what() + " (not drawn: --allow-missing-meshes)").what());
     return {};
   }
-  const std::shared_ptr<const geometry::MeshFile> file = geometry::LoadMeshFile(path);
+  if (geometry::IsPlainPath(mesh.filename)) {
+    // one warning per model (the collector drops repeats), not one per mesh
+    warnings.Add(Error(SourceLocation{options.model_file},
+                       "mesh filenames without package:// or file:// are found by urdfsnap, "
+                       "but not by RViz and other ROS tools")
+                     .what());
+  }
+  std::shared_ptr<const geometry::MeshFile> file;
+  try {
+    file = geometry::LoadMeshFile(path);
+  } catch (const Error& e) {
+    throw Error(where, culprit + e.what());
+  }
   std::vector<Part> parts;
   for (const auto& part : file->parts) {
     // the aliasing pointer keeps the whole cached file alive while the scene uses a part of it
@@ -52,7 +67,7 @@ std::vector<Part> MeshParts(const std::string& link_name, const urdf::Mesh& mesh
 }
 
 // RViz's meshes for a URDF geometry and the scale that sizes them (robot_link.cpp L580-640).
-std::vector<Part> PartsOf(const std::string& link_name, const urdf::Geometry& geometry,
+std::vector<Part> PartsOf(const model::Link& link, const urdf::Geometry& geometry,
                           const Eigen::Vector4f& rgba, const SceneOptions& options,
                           Eigen::Vector3d& scale, Warnings& warnings) {
   switch (geometry.type) {
@@ -75,7 +90,7 @@ std::vector<Part> PartsOf(const std::string& link_name, const urdf::Geometry& ge
       const auto& mesh = static_cast<const urdf::Mesh&>(geometry);
       scale = {mesh.scale.x, mesh.scale.y, mesh.scale.z};
       if (mesh.filename.empty()) return {};   // RViz skips it too
-      return MeshParts(link_name, mesh, rgba, options, warnings);
+      return MeshParts(link, mesh, rgba, options, warnings);
     }
   }
   return {};
@@ -91,7 +106,7 @@ void AddShape(const model::Link& link, const ShapeElement& element, const Eigen:
               Warnings& warnings) {
   if (!element.geometry) return;
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
-  for (auto& part : PartsOf(link.name, *element.geometry, rgba, options, scale, warnings)) {
+  for (auto& part : PartsOf(link, *element.geometry, rgba, options, scale, warnings)) {
     part.rgba.w() *= static_cast<float>(options.alpha);
     scene.items.push_back({std::move(part.mesh),
                            X_FL * ToIsometry(element.origin) * Eigen::Scaling(scale), part.rgba,

@@ -1,0 +1,110 @@
+// Scene building with mesh files: errors and warnings point at the link in the model file, a
+// missing mesh is skipped with --allow-missing-meshes, plain paths get one portability warning.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/error.h"
+#include "model/forward_kinematics.h"
+#include "render/scene_builder.h"
+
+namespace urdfsnap::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kAsciiStl =
+    "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+    "endloop\nendfacet\nendsolid t\n";
+
+// Two links on lines 3 and 6 of the model, each drawing the mesh `uri`.
+std::string TwoMeshLinks(const std::string& uri) {
+  const std::string visual = "<visual><geometry><mesh filename=\"" + uri + "\"/></geometry></visual>";
+  return "<?xml version=\"1.0\"?>\n<robot name=\"m\">\n<link name=\"base\">\n" + visual +
+         "\n</link>\n<link name=\"arm\">\n" + visual +
+         "\n</link>\n<joint name=\"j\" type=\"fixed\"><parent link=\"base\"/><child link=\"arm\"/>"
+         "</joint>\n</robot>\n";
+}
+
+class SceneMeshTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("urdfsnap_scene_mesh_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "meshes");
+    std::ofstream(dir_ / "meshes/tri.stl") << kAsciiStl;
+    options_.model_file = (dir_ / "robot.urdf").string();
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Scene Build(const std::string& uri) {
+    const model::Robot robot = model::LoadRobot(TwoMeshLinks(uri), options_.model_file, warnings_);
+    return BuildScene(robot, model::ComputeLinkPoses(robot, {0.0}), options_, warnings_);
+  }
+  std::string ErrorOf(const std::string& uri) {
+    try {
+      Build(uri);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "no error";
+  }
+  size_t CountWarnings(const std::string& needle) const {
+    return std::count_if(warnings_.messages().begin(), warnings_.messages().end(),
+                         [&](const std::string& m) { return m.find(needle) != std::string::npos; });
+  }
+
+  fs::path dir_;
+  SceneOptions options_;
+  Warnings warnings_;
+};
+
+TEST_F(SceneMeshTest, MissingMeshNamesModelLineLinkUriAndPlaceSearched) {
+  const std::string error = ErrorOf("package://m_description/meshes/gone.stl");
+  EXPECT_EQ(error.find(options_.model_file + ":3: link 'base': mesh "
+                       "'package://m_description/meshes/gone.stl' not found"),
+            0u)
+      << error;
+  EXPECT_NE(error.find("package 'm_description' not found, searched: "), std::string::npos)
+      << error;
+}
+
+TEST_F(SceneMeshTest, AllowMissingMeshesDrawsTheRestWithOneWarningPerLink) {
+  options_.allow_missing_meshes = true;
+  const Scene scene = Build("meshes/gone.stl");
+  EXPECT_TRUE(scene.items.empty());
+  EXPECT_EQ(CountWarnings("--allow-missing-meshes"), 2u);
+  EXPECT_EQ(CountWarnings(":6: link 'arm': mesh 'meshes/gone.stl' not found, searched: " +
+                          (dir_ / "meshes/gone.stl").string()),
+            1u);
+}
+
+TEST_F(SceneMeshTest, UnreadableMeshIsAnErrorEvenWhenMissingOnesAreAllowed) {
+  std::ofstream(dir_ / "meshes/tri.stl", std::ios::trunc) << "this is not a mesh";
+  options_.allow_missing_meshes = true;
+  const std::string error = ErrorOf("meshes/tri.stl");
+  EXPECT_EQ(error.find(options_.model_file + ":3: link 'base': "), 0u) << error;
+}
+
+TEST_F(SceneMeshTest, PlainPathIsDrawnWithOnePortabilityWarning) {
+  const Scene scene = Build("meshes/tri.stl");
+  EXPECT_EQ(scene.items.size(), 2u);
+  EXPECT_EQ(CountWarnings(options_.model_file +
+                          ": mesh filenames without package:// or file:// are found by urdfsnap, "
+                          "but not by RViz and other ROS tools"),
+            1u);
+}
+
+TEST_F(SceneMeshTest, FileUriHasNoPortabilityWarning) {
+  const Scene scene = Build("file://" + (dir_ / "meshes/tri.stl").string());
+  EXPECT_EQ(scene.items.size(), 2u);
+  EXPECT_TRUE(warnings_.empty());
+}
+
+}  // namespace
+}  // namespace urdfsnap::render
