@@ -1,4 +1,5 @@
-// The pipeline benchmark of the core issue: prints a table with, for the mrm robot at 640x480,
+// The pipeline benchmark: prints a table with, at 640x480, for the mrm robot (or MODEL) and for a
+// generated robot of 200,000 mesh triangles (heavy_robot.h):
 //   - the whole `urdfsnap render` process, model file to PNG on disk (median of N runs),
 //   - per frame over 200 poses in one process: FK + scene, draw with 4x MSAA + read back,
 //   - PNG encoding of one frame,
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <random>
@@ -19,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "heavy_robot.h"
 #include "image/png_writer.h"
 #include "model/forward_kinematics.h"
 #include "model/joint_values.h"
@@ -75,25 +78,32 @@ std::string ReadText(const std::string& path) {
   return text.str();
 }
 
-}  // namespace
+struct Figures {
+  double process = 0;  // whole `urdfsnap render` process, seconds (median)
+  double scene = 0;    // per frame: joints + FK + scene building
+  double draw = 0;     // per frame: draw (4x MSAA) + read back
+  double png = 0;      // per frame: PNG encoding
+  double fk = 0;       // forward kinematics of all links
+  std::size_t links = 0, triangles = 0;
+};
 
-int main(int argc, char** argv) {
+Figures Measure(const std::string& binary, const std::string& model_path, int process_runs) {
   using namespace urdfsnap;
-  const std::string binary = argc > 1 ? argv[1] : URDFSNAP_BINARY;
-  const std::string model_path =
-      argc > 2 ? argv[2] : std::string(URDFSNAP_SOURCE_DIR) + "/models/mrm_description/urdf/mrm.urdf";
+  Figures figures;
   const std::string out = "/tmp/urdfsnap_bench_" + std::to_string(getpid()) + ".png";
 
   // whole process, after two warm-up runs fill Mesa's shader cache
   const std::vector<std::string> command = {binary, "render", model_path, "-o", out};
   RunProcess(command);
   RunProcess(command);
-  const double process = MedianTime(20, [&] { RunProcess(command); });
+  figures.process = MedianTime(process_runs, [&] { RunProcess(command); });
   std::remove(out.c_str());
 
   // per frame, one process, one context
   Warnings warnings;
   const model::Robot robot = model::LoadRobot(ReadText(model_path), model_path, warnings);
+  render::SceneOptions options;
+  options.model_file = model_path;
   render::Renderer renderer(4);
   std::mt19937 random(42);
   std::uniform_real_distribution<double> angle(-3.0, 3.0);
@@ -107,13 +117,18 @@ int main(int argc, char** argv) {
     const auto t0 = Clock::now();
     const auto positions = model::ResolveJointPositions(robot, pose, true, warnings);
     const render::Scene scene =
-        render::BuildScene(robot, model::ComputeLinkPoses(robot, positions), {}, warnings);
+        render::BuildScene(robot, model::ComputeLinkPoses(robot, positions), options, warnings);
     const auto t1 = Clock::now();
     frame = renderer.Render(scene, render::OrbitView{}, 640, 480);
     scene_times.push_back(Seconds(t0, t1));
     draw_times.push_back(Seconds(t1, Clock::now()));
+    if (figures.triangles == 0) {
+      for (const auto& item : scene.items) figures.triangles += item.mesh->indices.size() / 3;
+    }
   }
-  const double png = MedianTime(50, [&] { image::EncodePng(frame); });
+  figures.scene = Median(scene_times);
+  figures.draw = Median(draw_times);
+  figures.png = MedianTime(50, [&] { image::EncodePng(frame); });
 
   // forward kinematics alone
   const auto positions = model::ResolveJointPositions(robot, poses[0], true, warnings);
@@ -124,14 +139,31 @@ int main(int argc, char** argv) {
     model::ComputeLinkPoses(robot, positions, X_RL);
     asm volatile("" : : "r"(X_RL.data()) : "memory");
   }
-  const double fk = Seconds(t0, Clock::now()) / fk_runs;
+  figures.fk = Seconds(t0, Clock::now()) / fk_runs;
+  figures.links = robot.links().size();
+  return figures;
+}
 
-  std::printf("| measurement (mrm, 640x480)                  | median      |\n");
-  std::printf("|---------------------------------------------|-------------|\n");
-  std::printf("| whole `urdfsnap render` process, URDF → PNG | %8.1f ms |\n", process * 1e3);
-  std::printf("| per frame: joints + FK + scene building     | %8.4f ms |\n", Median(scene_times) * 1e3);
-  std::printf("| per frame: draw (4x MSAA) + read back       | %8.3f ms |\n", Median(draw_times) * 1e3);
-  std::printf("| per frame: PNG encoding                     | %8.3f ms |\n", png * 1e3);
-  std::printf("| FK alone, all %zu links                      | %8.3f µs |\n", robot.links().size(), fk * 1e6);
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string binary = argc > 1 ? argv[1] : URDFSNAP_BINARY;
+  const std::string mrm = argc > 2 ? argv[2]
+                                   : std::string(URDFSNAP_SOURCE_DIR) +
+                                         "/models/mrm_description/urdf/mrm.urdf";
+  const std::string heavy_dir = "/tmp/urdfsnap_bench_heavy_" + std::to_string(getpid());
+  const std::string heavy = urdfsnap::bench::WriteHeavyRobot(heavy_dir, 200000);
+  const Figures a = Measure(binary, mrm, 20);
+  const Figures b = Measure(binary, heavy, 10);
+  std::filesystem::remove_all(heavy_dir);
+
+  std::printf("| measurement, 640x480, median                 | mrm          | heavy (meshes) |\n");
+  std::printf("|----------------------------------------------|--------------|----------------|\n");
+  std::printf("| triangles drawn                              | %12zu | %14zu |\n", a.triangles, b.triangles);
+  std::printf("| whole `urdfsnap render` process, URDF → PNG  | %9.1f ms | %11.1f ms |\n", a.process * 1e3, b.process * 1e3);
+  std::printf("| per frame: joints + FK + scene building      | %9.4f ms | %11.4f ms |\n", a.scene * 1e3, b.scene * 1e3);
+  std::printf("| per frame: draw (4x MSAA) + read back        | %9.3f ms | %11.3f ms |\n", a.draw * 1e3, b.draw * 1e3);
+  std::printf("| per frame: PNG encoding                      | %9.3f ms | %11.3f ms |\n", a.png * 1e3, b.png * 1e3);
+  std::printf("| FK alone, all links (%zu / %zu)                 | %9.3f µs | %11.3f µs |\n", a.links, b.links, a.fk * 1e6, b.fk * 1e6);
   return 0;
 }

@@ -13,6 +13,7 @@
 #include "image/png_writer.h"
 #include "model/forward_kinematics.h"
 #include "model/joint_values.h"
+#include "render/gl_context.h"
 #include "render/renderer.h"
 #include "render/rviz_config.h"
 #include "render/scene_builder.h"
@@ -88,6 +89,7 @@ void ApplyScene(const RenderOptions& o, render::SceneOptions& scene) {
 }
 
 void Run(const RenderOptions& o) {
+  render::StartLoadingGl();  // overlaps loading Mesa with reading the model
   const ImageSize size = ParseImageSize(o.size, "--size");
   Warnings warnings;
   render::RvizConfig config;

@@ -8,6 +8,7 @@
 #include <dlfcn.h>
 
 #include <array>
+#include <future>
 #include <mutex>
 #include <string>
 
@@ -82,5 +83,20 @@ class OsMesaContext final : public GlContext {
 }  // namespace
 
 std::unique_ptr<GlContext> CreateOsMesaContext() { return std::make_unique<OsMesaContext>(); }
+
+void StartLoadingGl() {
+  // a static future: its destructor at exit waits for the load instead of unloading under it
+  static std::once_flag started;
+  static std::future<void> loading;
+  std::call_once(started, [] {
+    loading = std::async(std::launch::async, [] {
+      try {
+        LoadOsMesa();
+      } catch (const Error&) {
+        // CreateOsMesaContext tries again and reports it
+      }
+    });
+  });
+}
 
 }  // namespace urdfsnap::render

@@ -16,4 +16,9 @@ class GlContext {
 // An OpenGL 3.3 core-profile context from OSMesa. Throws urdfsnap::Error when Mesa cannot make one.
 std::unique_ptr<GlContext> CreateOsMesaContext();
 
+// Starts loading libOSMesa (and LLVM behind it, ~0.1 s) on a background thread, so that a command
+// can read its model meanwhile; CreateOsMesaContext waits for it. Optional, and safe to call
+// more than once; a failure is reported by CreateOsMesaContext.
+void StartLoadingGl();
+
 }  // namespace urdfsnap::render

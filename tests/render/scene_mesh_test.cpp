@@ -20,11 +20,14 @@ constexpr const char* kAsciiStl =
     "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
     "endloop\nendfacet\nendsolid t\n";
 
-// Two links on lines 3 and 6 of the model, each drawing the mesh `uri`.
-std::string TwoMeshLinks(const std::string& uri) {
-  const std::string visual = "<visual><geometry><mesh filename=\"" + uri + "\"/></geometry></visual>";
-  return "<?xml version=\"1.0\"?>\n<robot name=\"m\">\n<link name=\"base\">\n" + visual +
-         "\n</link>\n<link name=\"arm\">\n" + visual +
+std::string MeshVisual(const std::string& uri) {
+  return "<visual><geometry><mesh filename=\"" + uri + "\"/></geometry></visual>";
+}
+
+// Two links on lines 3 and 6 of the model, drawing the meshes `base_uri` and `arm_uri`.
+std::string TwoMeshLinks(const std::string& base_uri, const std::string& arm_uri) {
+  return "<?xml version=\"1.0\"?>\n<robot name=\"m\">\n<link name=\"base\">\n" +
+         MeshVisual(base_uri) + "\n</link>\n<link name=\"arm\">\n" + MeshVisual(arm_uri) +
          "\n</link>\n<joint name=\"j\" type=\"fixed\"><parent link=\"base\"/><child link=\"arm\"/>"
          "</joint>\n</robot>\n";
 }
@@ -42,18 +45,21 @@ class SceneMeshTest : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  Scene Build(const std::string& uri) {
-    const model::Robot robot = model::LoadRobot(TwoMeshLinks(uri), options_.model_file, warnings_);
+  Scene Build(const std::string& uri) { return Build(uri, uri); }
+  Scene Build(const std::string& base_uri, const std::string& arm_uri) {
+    const model::Robot robot =
+        model::LoadRobot(TwoMeshLinks(base_uri, arm_uri), options_.model_file, warnings_);
     return BuildScene(robot, model::ComputeLinkPoses(robot, {0.0}), options_, warnings_);
   }
-  std::string ErrorOf(const std::string& uri) {
+  std::string ErrorOf(const std::string& base_uri, const std::string& arm_uri) {
     try {
-      Build(uri);
+      Build(base_uri, arm_uri);
     } catch (const Error& e) {
       return e.what();
     }
     return "no error";
   }
+  std::string ErrorOf(const std::string& uri) { return ErrorOf(uri, uri); }
   size_t CountWarnings(const std::string& needle) const {
     return std::count_if(warnings_.messages().begin(), warnings_.messages().end(),
                          [&](const std::string& m) { return m.find(needle) != std::string::npos; });
@@ -89,6 +95,19 @@ TEST_F(SceneMeshTest, UnreadableMeshIsAnErrorEvenWhenMissingOnesAreAllowed) {
   options_.allow_missing_meshes = true;
   const std::string error = ErrorOf("meshes/tri.stl");
   EXPECT_EQ(error.find(options_.model_file + ":3: link 'base': "), 0u) << error;
+}
+
+TEST_F(SceneMeshTest, FilesLoadedInParallelStillReportTheFirstLinksError) {
+  std::ofstream(dir_ / "meshes/a.stl") << "garbage a";
+  std::ofstream(dir_ / "meshes/b.stl") << "garbage b";
+  const std::string error = ErrorOf("meshes/a.stl", "meshes/b.stl");
+  EXPECT_EQ(error.find(options_.model_file + ":3: link 'base': "), 0u) << error;
+  EXPECT_NE(error.find("a.stl"), std::string::npos) << error;
+}
+
+TEST_F(SceneMeshTest, TwoFilesAreBothDrawn) {
+  std::ofstream(dir_ / "meshes/other.stl") << kAsciiStl;
+  EXPECT_EQ(Build("meshes/tri.stl", "meshes/other.stl").items.size(), 2u);
 }
 
 TEST_F(SceneMeshTest, PlainPathIsDrawnWithOnePortabilityWarning) {
