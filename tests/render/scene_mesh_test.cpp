@@ -21,7 +21,8 @@ constexpr const char* kAsciiStl =
     "endloop\nendfacet\nendsolid t\n";
 
 std::string MeshVisual(const std::string& uri) {
-  return "<visual><geometry><mesh filename=\"" + uri + "\"/></geometry></visual>";
+  return "<visual><origin xyz=\"0 0 1\"/><geometry><mesh filename=\"" + uri +
+         "\" scale=\"2 3 -1\"/></geometry></visual>";
 }
 
 // Two links on lines 3 and 6 of the model, drawing the meshes `base_uri` and `arm_uri`.
@@ -108,6 +109,15 @@ TEST_F(SceneMeshTest, FilesLoadedInParallelStillReportTheFirstLinksError) {
 TEST_F(SceneMeshTest, TwoFilesAreBothDrawn) {
   std::ofstream(dir_ / "meshes/other.stl") << kAsciiStl;
   EXPECT_EQ(Build("meshes/tri.stl", "meshes/other.stl").items.size(), 2u);
+}
+
+TEST_F(SceneMeshTest, MeshScaleAndOriginAreInThePose) {
+  const Scene scene = Build("meshes/tri.stl");
+  ASSERT_EQ(scene.items.size(), 2u);
+  const Eigen::Affine3d& X_FG = scene.items[0].X_FG;
+  EXPECT_TRUE(X_FG.linear().isApprox(Eigen::Vector3d(2, 3, -1).asDiagonal().toDenseMatrix()));
+  EXPECT_TRUE(X_FG.translation().isApprox(Eigen::Vector3d(0, 0, 1)));
+  EXPECT_LT(X_FG.linear().determinant(), 0);  // mirrored: the renderer flips its front faces
 }
 
 TEST_F(SceneMeshTest, PlainPathIsDrawnWithOnePortabilityWarning) {
