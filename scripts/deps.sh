@@ -6,7 +6,7 @@ packages=(
   cmake g++ make pkg-config
   liburdfdom-dev libeigen3-dev libosmesa6-dev libstb-dev zlib1g-dev
   libtinyxml2-dev libexpat1-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
-  googletest libgtest-dev libbenchmark-dev fonts-liberation python3
+  googletest libgtest-dev libbenchmark-dev fonts-liberation libfreetype-dev python3
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -38,7 +38,7 @@ struct RenderOptions {
   std::string background;
   std::string alpha;
   bool collision = false, no_visual = false, no_grid = false, no_aa = false;
-  bool tf = false, no_tf_axes = false, no_tf_arrows = false;
+  bool tf = false, no_tf_names = false, no_tf_axes = false, no_tf_arrows = false;
   bool allow_missing_meshes = false;
   std::string tf_scale;
 };
@@ -83,6 +83,7 @@ void ApplyScene(const RenderOptions& o, render::SceneOptions& scene) {
   if (o.no_visual) scene.show_visual = false;
   if (o.no_grid) scene.grid.enabled = false;
   if (o.tf) scene.tf.enabled = true;
+  if (o.no_tf_names) scene.tf.show_names = false;
   if (o.no_tf_axes) scene.tf.show_axes = false;
   if (o.no_tf_arrows) scene.tf.show_arrows = false;
   if (!o.tf_scale.empty()) scene.tf.marker_scale = ParseInRange(o.tf_scale, "--tf-scale", 0, 1e6);
@@ -154,7 +155,8 @@ void AddRenderCommand(CLI::App& app) {
   cmd->add_flag("--collision", o->collision, "show collision geometry (RViz default off)");
   cmd->add_flag("--no-visual", o->no_visual, "hide visual geometry (RViz default shown)");
   cmd->add_flag("--no-grid", o->no_grid, "hide the grid (RViz default shown)");
-  cmd->add_flag("--tf", o->tf, "show the TF display: axes and parent arrows (RViz default off)");
+  cmd->add_flag("--tf", o->tf, "show the TF display: frame names, axes and parent arrows (RViz default off)");
+  cmd->add_flag("--no-tf-names", o->no_tf_names, "TF display without frame names (RViz default shown)");
   cmd->add_flag("--no-tf-axes", o->no_tf_axes, "TF display without axes (RViz default shown)");
   cmd->add_flag("--no-tf-arrows", o->no_tf_arrows, "TF display without parent arrows (RViz default shown)");
   cmd->add_option("--tf-scale", o->tf_scale, "TF marker scale (RViz default 1)");

@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <unordered_map>
+#include <variant>
 #include <vector>
 
 #include "render/framebuffer.h"
 #include "render/gl_api.h"
 #include "render/gl_context.h"
 #include "render/gpu_mesh.h"
+#include "render/gpu_texture.h"
 #include "render/shader_program.h"
 
 namespace urdfsnap::render {
@@ -21,8 +23,24 @@ constexpr float kOpaqueAlpha = 0.9998f;
 
 struct Transparent {
   double depth;            // squared distance from the eye, for back-to-front order
-  const DrawItem* item;    // exactly one of item and lines is set
-  const LineSet* lines;
+  std::variant<const DrawItem*, const LineSet*, const TextLabel*> what;
+};
+
+// GPU copies of scene data, made on first use and kept for later frames. Keyed by the source's
+// address; the shared_ptr kept beside each copy keeps that address from being reused.
+template <typename Source, typename Gpu>
+class GpuCache {
+ public:
+  const Gpu& Get(const std::shared_ptr<const Source>& source) {
+    auto it = entries_.find(source.get());
+    if (it == entries_.end()) {
+      it = entries_.try_emplace(source.get(), source, std::make_unique<Gpu>(*source)).first;
+    }
+    return *it->second.second;
+  }
+
+ private:
+  std::unordered_map<const Source*, std::pair<std::shared_ptr<const Source>, std::unique_ptr<Gpu>>> entries_;
 };
 
 }  // namespace
@@ -32,21 +50,32 @@ struct Renderer::Impl {
       : samples(samples),
         context(CreateOsMesaContext()),
         lit("lit.vert", "lit.frag"),
-        line("line.vert", "line.frag") {
-    glGenVertexArrays(1, &line_array);
-    glGenBuffers(1, &line_buffer);
+        line("line.vert", "line.frag"),
+        text("text.vert", "text.frag") {
+    glGenVertexArrays(1, &stream_array);
+    glGenBuffers(1, &stream_buffer);
   }
   ~Impl() {
-    glDeleteBuffers(1, &line_buffer);
-    glDeleteVertexArrays(1, &line_array);
+    glDeleteBuffers(1, &stream_buffer);
+    glDeleteVertexArrays(1, &stream_array);
   }
 
-  const GpuMesh& Upload(const std::shared_ptr<const geometry::TriangleMesh>& mesh) {
-    auto it = meshes.find(mesh.get());
-    if (it == meshes.end()) {
-      it = meshes.try_emplace(mesh.get(), mesh, std::make_unique<GpuMesh>(*mesh)).first;
+  // Fills the stream buffer with `floats` and sets up attribute i from `sizes[i]` of each vertex.
+  void Stream(const std::vector<float>& floats, std::initializer_list<int> sizes) {
+    glBindVertexArray(stream_array);
+    glBindBuffer(GL_ARRAY_BUFFER, stream_buffer);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(floats.size() * sizeof(float)),
+                 floats.data(), GL_STREAM_DRAW);
+    int stride = 0;
+    for (int size : sizes) stride += size;
+    int offset = 0, index = 0;
+    for (int size : sizes) {
+      glEnableVertexAttribArray(index);
+      glVertexAttribPointer(index++, size, GL_FLOAT, GL_FALSE, stride * static_cast<GLsizei>(sizeof(float)),
+                            reinterpret_cast<const void*>(offset * sizeof(float)));
+      offset += size;
     }
-    return *it->second.second;
+    for (; index < 2; ++index) glDisableVertexAttribArray(index);
   }
 
   void DrawItem(const render::DrawItem& item, const Eigen::Matrix4d& V, const Eigen::Matrix4d& PV) {
@@ -57,32 +86,59 @@ struct Renderer::Impl {
     lit.Set("diffuse", item.rgba);
     // a mirroring scale turns the winding around; Ogre flips culling for such nodes, and so do we
     glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
-    Upload(item.mesh).Draw();
+    meshes.Get(item.mesh).Draw();
   }
 
   void DrawLines(const LineSet& lines, const Eigen::Matrix4d& PV) {
     line.Use();
     line.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
     line.Set("colour", lines.rgba);
-    glBindVertexArray(line_array);
-    glBindBuffer(GL_ARRAY_BUFFER, line_buffer);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.points.size() * sizeof(Eigen::Vector3f)),
-                 lines.points.data(), GL_STREAM_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Eigen::Vector3f), nullptr);
+    std::vector<float> floats;
+    floats.reserve(lines.points.size() * 3);
+    for (const auto& p : lines.points) floats.insert(floats.end(), p.data(), p.data() + 3);
+    Stream(floats, {3});
     glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.points.size()));
+  }
+
+  // movable_text.cpp: depth-checked, no depth write, depth bias (1, 1), which Ogre's GL render
+  // system applies as glPolygonOffset(-1, -1); two triangles per character, as MovableText's
+  void DrawLabel(const TextLabel& label, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
+    if (label.quads.empty()) return;
+    text.Use();
+    text.Set("projection", Eigen::Matrix4f(P.cast<float>()));
+    text.Set("anchor_view", Eigen::Vector3f((V * label.anchor.homogeneous()).head<3>().cast<float>()));
+    text.Set("colour", label.rgba);
+    text.Set("glyphs", 0);
+    textures.Get(label.texture).Bind(0);
+    std::vector<float> floats;
+    floats.reserve(label.quads.size() * 24);
+    for (const auto& q : label.quads) {
+      const float corners[6][4] = {
+          {q.min.x(), q.max.y(), q.uv_min.x(), q.uv_max.y()},   // upper left
+          {q.min.x(), q.min.y(), q.uv_min.x(), q.uv_min.y()},   // lower left
+          {q.max.x(), q.max.y(), q.uv_max.x(), q.uv_max.y()},   // upper right
+          {q.max.x(), q.max.y(), q.uv_max.x(), q.uv_max.y()},   // upper right
+          {q.min.x(), q.min.y(), q.uv_min.x(), q.uv_min.y()},   // lower left
+          {q.max.x(), q.min.y(), q.uv_max.x(), q.uv_min.y()}};  // lower right
+      for (const auto& corner : corners) floats.insert(floats.end(), corner, corner + 4);
+    }
+    Stream(floats, {2, 2});
+    glFrontFace(GL_CCW);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(-1.f, -1.f);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(label.quads.size() * 6));
+    glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
   int samples;
   std::unique_ptr<GlContext> context;
   ShaderProgram lit;
   ShaderProgram line;
-  unsigned line_array = 0, line_buffer = 0;
+  ShaderProgram text;
+  unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
   std::unique_ptr<Framebuffer> framebuffer;
-  // keyed by the mesh's address; the shared_ptr keeps that address from being reused
-  std::unordered_map<const geometry::TriangleMesh*,
-                     std::pair<std::shared_ptr<const geometry::TriangleMesh>, std::unique_ptr<GpuMesh>>>
-      meshes;
+  GpuCache<geometry::TriangleMesh, GpuMesh> meshes;
+  GpuCache<TextureImage, GpuTexture> textures;
 };
 
 Renderer::Renderer(int samples) : impl_(std::make_unique<Impl>(samples)) {}
@@ -99,7 +155,8 @@ image::Image Renderer::Render(const Scene& scene, const OrbitView& view, int wid
   r.framebuffer->Bind();
 
   const Eigen::Matrix4d V = ViewMatrix(view);
-  const Eigen::Matrix4d PV = ProjectionMatrix(view, static_cast<double>(width) / height) * V;
+  const Eigen::Matrix4d P = ProjectionMatrix(view, static_cast<double>(width) / height);
+  const Eigen::Matrix4d PV = P * V;
   const Eigen::Vector3d eye = EyePosition(view);
 
   glClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
@@ -119,14 +176,18 @@ image::Image Renderer::Render(const Scene& scene, const OrbitView& view, int wid
     if (item.rgba.w() >= kOpaqueAlpha) {
       r.DrawItem(item, V, PV);
     } else {
-      transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item, nullptr});
+      transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
     }
   }
   for (const auto& lines : scene.lines) {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     for (const auto& p : lines.points) centre += p.cast<double>();
     if (!lines.points.empty()) centre /= static_cast<double>(lines.points.size());
-    transparent.push_back({(centre - eye).squaredNorm(), nullptr, &lines});
+    transparent.push_back({(centre - eye).squaredNorm(), &lines});
+  }
+  // Ogre sorts MovableText with the transparent objects by its node's position, the anchor
+  for (const auto& label : scene.labels) {
+    transparent.push_back({(label.anchor - eye).squaredNorm(), &label});
   }
 
   // then blended geometry back to front, depth-tested but not writing depth
@@ -136,11 +197,13 @@ image::Image Renderer::Render(const Scene& scene, const OrbitView& view, int wid
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDepthMask(GL_FALSE);
   for (const auto& t : transparent) {
-    if (t.item) {
+    if (const auto* item = std::get_if<const DrawItem*>(&t.what)) {
       r.lit.Use();
-      r.DrawItem(*t.item, V, PV);
+      r.DrawItem(**item, V, PV);
+    } else if (const auto* lines = std::get_if<const LineSet*>(&t.what)) {
+      r.DrawLines(**lines, PV);
     } else {
-      r.DrawLines(*t.lines, PV);
+      r.DrawLabel(*std::get<const TextLabel*>(t.what), V, P);
     }
   }
   glDepthMask(GL_TRUE);

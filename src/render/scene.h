@@ -10,6 +10,8 @@
 #include <Eigen/Geometry>
 
 #include "geometry/triangle_mesh.h"
+#include "render/text_layout.h"
+#include "render/texture_image.h"
 
 namespace urdfsnap::render {
 
@@ -27,10 +29,21 @@ struct LineSet {
   Eigen::Vector4f rgba{1, 1, 1, 1};
 };
 
+// Unlit text that faces the camera (TF frame names): quads in the camera's image plane, x right and
+// y up in metres, hung at an anchor point, textured with a luminance-alpha glyph texture, blended,
+// depth-tested without depth writes and pulled slightly towards the camera (movable_text.cpp).
+struct TextLabel {
+  std::shared_ptr<const TextureImage> texture;
+  std::vector<GlyphQuad> quads;
+  Eigen::Vector3d anchor = Eigen::Vector3d::Zero();   // in the fixed frame
+  Eigen::Vector4f rgba{1, 1, 1, 1};
+};
+
 struct Scene {
   Eigen::Vector3f background{48 / 255.f, 48 / 255.f, 48 / 255.f};
   std::vector<DrawItem> items;
   std::vector<LineSet> lines;           // transparent overlays such as the grid
+  std::vector<TextLabel> labels;        // blended with the transparent geometry
 };
 
 }  // namespace urdfsnap::render

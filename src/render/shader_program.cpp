@@ -83,4 +83,10 @@ void ShaderProgram::Set(const char* name, const Eigen::Vector4f& value) const {
   glUniform4fv(Location(name), 1, value.data());
 }
 
+void ShaderProgram::Set(const char* name, const Eigen::Vector3f& value) const {
+  glUniform3fv(Location(name), 1, value.data());
+}
+
+void ShaderProgram::Set(const char* name, int value) const { glUniform1i(Location(name), value); }
+
 }  // namespace urdfsnap::render

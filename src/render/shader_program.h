@@ -22,6 +22,8 @@ class ShaderProgram {
   void Set(const char* name, const Eigen::Matrix4f& value) const;
   void Set(const char* name, const Eigen::Matrix3f& value) const;
   void Set(const char* name, const Eigen::Vector4f& value) const;
+  void Set(const char* name, const Eigen::Vector3f& value) const;
+  void Set(const char* name, int value) const;   // also a sampler's texture unit
 
  private:
   int Location(const char* name) const;

@@ -1,8 +1,10 @@
 // TF axes and parent arrows built from RViz's unit cylinder and cone, sized and coloured as RViz's
-// TF display sizes and colours them.
+// TF display sizes and colours them, and the frame names as camera-facing text labels.
 #include "render/tf_markers.h"
 
+#include "render/glyph_atlas.h"
 #include "render/primitive_meshes.h"
+#include "render/text_layout.h"
 
 namespace urdfsnap::render {
 
@@ -18,6 +20,9 @@ constexpr double kHeadDiameter = 0.04;
 constexpr double kHeadLength = 0.1;
 const Eigen::Vector4f kShaftColour{0.8f, 0.8f, 0.3f, 1};
 const Eigen::Vector4f kHeadColour{1.0f, 0.1f, 0.6f, 1};
+// tf_display.cpp: `new MovableText(frame, "Liberation Sans", 0.1)`, white, H_CENTER and V_BELOW,
+// its node at the frame's origin and scaled by the marker scale
+constexpr float kNameHeight = 0.1f;
 
 void Add(const std::shared_ptr<const geometry::TriangleMesh>& mesh, const Eigen::Affine3d& X_FG,
          const Eigen::Vector4f& rgba, Scene& scene) {
@@ -59,6 +64,17 @@ void AddParentArrow(const Eigen::Vector3d& from, const Eigen::Vector3d& to, doub
       kHeadColour, scene);
 }
 
+void AddNames(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_FL, double scale,
+              Scene& scene) {
+  std::vector<std::string> names;
+  for (const auto& link : robot.links()) names.push_back(link.name);
+  const GlyphAtlas atlas = BuildGlyphAtlas(FindLiberationSans(), CodePointsOf(names));
+  for (size_t i = 0; i < names.size(); ++i) {
+    scene.labels.push_back({atlas.texture, LayOutText(atlas, names[i], kNameHeight * static_cast<float>(scale)),
+                            X_FL[i].translation(), Eigen::Vector4f::Ones()});
+  }
+}
+
 }  // namespace
 
 void AddTfMarkers(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_FL,
@@ -71,6 +87,7 @@ void AddTfMarkers(const model::Robot& robot, const std::vector<Eigen::Isometry3d
       AddParentArrow(X_FL[i].translation(), X_FL[parent].translation(), options.marker_scale, scene);
     }
   }
+  if (options.show_names) AddNames(robot, X_FL, options.marker_scale, scene);
 }
 
 }  // namespace urdfsnap::render

@@ -1,5 +1,6 @@
-// RViz's TF display as draw items: per frame its axes, and an arrow from each frame to its parent
-// (src/rviz/default_plugin/tf_display.cpp, ogre_helpers/axes.cpp, ogre_helpers/arrow.cpp).
+// RViz's TF display as draw items: per frame its axes, its name, and an arrow from each frame to its
+// parent (src/rviz/default_plugin/tf_display.cpp, ogre_helpers/axes.cpp, ogre_helpers/arrow.cpp,
+// ogre_helpers/movable_text.cpp).
 #pragma once
 
 #include <vector>
@@ -12,7 +13,8 @@
 
 namespace urdfsnap::render {
 
-// Adds the axes and parent arrows of every link frame. X_FL: link poses in the fixed frame.
+// Adds the axes, names and parent arrows of every link frame, as `options` ask. X_FL: link poses in
+// the fixed frame. Throws urdfsnap::Error when names are asked for and Liberation Sans is missing.
 void AddTfMarkers(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_FL,
                   const TfOptions& options, Scene& scene);
 

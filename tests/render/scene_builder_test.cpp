@@ -107,5 +107,31 @@ TEST_F(SceneBuilderTest, GridIsElevenPlusElevenLinesOverTenMetres) {
   EXPECT_TRUE(Build(no_grid).lines.empty());
 }
 
+TEST_F(SceneBuilderTest, TfDisplayGivesAxesArrowsAndANameAtEachFrame) {
+  SceneOptions options;
+  options.show_visual = false;
+  options.tf.enabled = true;
+  const Scene scene = Build(options, 0.5);
+  // three axes per frame, and a shaft and head from arm to its parent
+  EXPECT_EQ(scene.items.size(), 3u * 2 + 2);
+  ASSERT_EQ(scene.labels.size(), 2u);
+  EXPECT_TRUE(scene.labels[0].anchor.isZero());
+  EXPECT_TRUE(scene.labels[1].anchor.isApprox(Eigen::Vector3d(0, 0, 1.5)));
+  for (const auto& label : scene.labels) {
+    ASSERT_FALSE(label.quads.empty());
+    EXPECT_TRUE(label.rgba.isApprox(Eigen::Vector4f::Ones()));   // white
+    EXPECT_FLOAT_EQ(label.quads[0].min.y(), -0.1f);              // 0.1 m, below the origin
+  }
+  EXPECT_EQ(scene.labels[0].quads.size(), 4u);   // "base"
+
+  options.tf.marker_scale = 2;
+  EXPECT_FLOAT_EQ(Build(options).labels[0].quads[0].min.y(), -0.2f);
+  options.tf.show_names = false;
+  options.tf.show_axes = false;
+  const Scene arrows_only = Build(options);
+  EXPECT_TRUE(arrows_only.labels.empty());
+  EXPECT_EQ(arrows_only.items.size(), 2u);
+}
+
 }  // namespace
 }  // namespace urdfsnap::render

@@ -1,0 +1,24 @@
+// A TextureImage uploaded to the GPU: 2 channels as GL_RG8 (luminance in r, alpha in g), 4 as
+// GL_RGBA8; bilinear filtering without mipmaps and clamped edges, as Ogre sets up font textures.
+// Internal to the render library; needs a current GL context.
+#pragma once
+
+#include "render/texture_image.h"
+
+namespace urdfsnap::render {
+
+class GpuTexture {
+ public:
+  explicit GpuTexture(const TextureImage& image);
+  ~GpuTexture();
+  GpuTexture(const GpuTexture&) = delete;
+  GpuTexture& operator=(const GpuTexture&) = delete;
+
+  // Binds the texture to texture unit `unit`.
+  void Bind(int unit) const;
+
+ private:
+  unsigned id_ = 0;
+};
+
+}  // namespace urdfsnap::render
