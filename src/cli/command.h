@@ -21,5 +21,7 @@ void PrintWarnings(const Warnings& warnings);
 void AddRenderCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);
 void AddXacroCommand(CLI::App& app);
+void AddDiffCommand(CLI::App& app);
+void AddSnapshotCommand(CLI::App& app);
 
 }  // namespace urdfsnap::cli

@@ -4,6 +4,7 @@
 
 #include "cli/command.h"
 #include "cli/model_source.h"
+#include "request/model_request.h"
 #include "model/robot_description.h"
 
 namespace urdfsnap::cli {
@@ -14,7 +15,7 @@ void AddInfoCommand(CLI::App& app) {
   model->AddOptions(*cmd);
   cmd->callback([model] {
     Warnings warnings;
-    const model::Robot robot = model->Load(warnings);
+    const model::Robot robot = request::LoadModel(model->ToRequest(), warnings);
     PrintWarnings(warnings);
     std::fputs(model::DescribeRobot(robot).c_str(), stdout);
   });

@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
   urdfsnap::cli::AddRenderCommand(app);
   urdfsnap::cli::AddInfoCommand(app);
   urdfsnap::cli::AddXacroCommand(app);
+  urdfsnap::cli::AddDiffCommand(app);
+  urdfsnap::cli::AddSnapshotCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

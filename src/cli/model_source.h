@@ -1,15 +1,13 @@
-// The MODEL argument shared by `render` and `info`: a URDF file, or a xacro file expanded in
-// process with NAME:=VALUE words, --package and --xacro-ns, loaded into a model::Robot.
+// The MODEL argument shared by `render` and `info` as typed: a URDF or xacro file, NAME:=VALUE
+// words, --package PKG=DIR and --xacro-ns, turned into a request::ModelRequest.
 #pragma once
 
-#include <map>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "common/warnings.h"
-#include "model/robot.h"
+#include "request/model_request.h"
 
 namespace urdfsnap::cli {
 
@@ -21,12 +19,8 @@ struct ModelSource {
 
   // Adds MODEL, the NAME:=VALUE words, --package and --xacro-ns to a subcommand.
   void AddOptions(CLI::App& command);
-  // Reads the file (expanding xacro when the name ends in .xacro or NAME:=VALUE words are given,
-  // or the robot declares the xacro namespace) and loads the robot. Throws urdfsnap::Error.
-  model::Robot Load(Warnings& warnings) const;
+  // The words parsed; throws urdfsnap::Error for a word that is not NAME:=VALUE or PKG=DIR.
+  request::ModelRequest ToRequest() const;
 };
-
-// "PKG=DIR" words to a map; throws urdfsnap::Error for a word without '='.
-std::map<std::string, std::string> ParsePackageWords(const std::vector<std::string>& words);
 
 }  // namespace urdfsnap::cli

@@ -8,8 +8,12 @@
 
 namespace urdfsnap::image {
 
+std::string SizeText(const Image& image) {
+  return std::to_string(image.width) + "x" + std::to_string(image.height);
+}
+
 void CheckImage(const Image& image, std::string_view role) {
-  const std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
+  const std::string size = SizeText(image);
   if (image.width <= 0 || image.height <= 0 || image.width > kMaxImageSide ||
       image.height > kMaxImageSide) {
     throw Error(std::string(role) + ": image size " + size + " is outside 1x1 to " +

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -21,5 +22,8 @@ inline constexpr int kMaxImageSide = 16384;
 // Throws urdfsnap::Error naming `role` ("EncodePng", "expected image", ...) unless the image has a
 // positive size within kMaxImageSide and rgb holds exactly width * height * 3 bytes.
 void CheckImage(const Image& image, std::string_view role);
+
+// "640x480".
+std::string SizeText(const Image& image);
 
 }  // namespace urdfsnap::image

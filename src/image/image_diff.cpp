@@ -2,6 +2,7 @@
 #include "image/image_diff.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -9,10 +10,6 @@
 
 namespace urdfsnap::image {
 namespace {
-
-std::string SizeText(const Image& image) {
-  return std::to_string(image.width) + "x" + std::to_string(image.height);
-}
 
 void CheckComparable(const Image& expected, const Image& actual) {
   CheckImage(expected, "expected image");
@@ -57,6 +54,25 @@ DiffStats CompareImages(const Image& expected, const Image& actual, int delta) {
   stats.mean_delta = delta_sum / pixel_count;
   stats.fraction_over = stats.pixels_over / pixel_count;
   return stats;
+}
+
+bool WithinTolerance(const DiffStats& stats, const DiffTolerance& tolerance) {
+  return stats.fraction_over <= tolerance.max_fraction && stats.mean_delta <= tolerance.max_mean;
+}
+
+std::string DescribeDiff(const DiffStats& stats, const DiffTolerance& tolerance) {
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "max delta %d, mean delta %.3f (limit %g), %d pixels (%.3f%%) over %d (limit %g%%)",
+                stats.max_delta, stats.mean_delta, tolerance.max_mean, stats.pixels_over,
+                100 * stats.fraction_over, tolerance.max_delta, 100 * tolerance.max_fraction);
+  std::string line = text;
+  if (stats.pixels_over > 0) {
+    std::snprintf(text, sizeof text, ", in x %d..%d, y %d..%d", stats.min_x, stats.max_x,
+                  stats.min_y, stats.max_y);
+    line += text;
+  }
+  return line;
 }
 
 Image MakeDiffImage(const Image& expected, const Image& actual, int delta) {

@@ -1,57 +1,22 @@
 // The urdfsnap binary as users meet it: exit statuses, one-line errors naming the culprit, and
 // output files that are either complete or untouched.
-#include <sys/wait.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "cli_fixture.h"
 #include "image/png_reader.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path kSource = URDFSNAP_SOURCE_DIR;
-const std::string kMrm = (kSource / "models/mrm_description/urdf/mrm.urdf").string();
-
-struct Result {
-  int status;
-  std::string output;   // stdout and stderr together
-};
-
-Result RunUrdfsnap(const std::string& arguments) {
-  const std::string command = std::string(URDFSNAP_BINARY) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-class CliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("urdfsnap_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string Write(const std::string& name, const std::string& text) const {
-    std::ofstream(Path(name)) << text;
-    return Path(name);
-  }
-  fs::path dir_;
-};
+using urdfsnap::cli_test::CliTest;
+using urdfsnap::cli_test::kMrm;
+using urdfsnap::cli_test::kSource;
+using urdfsnap::cli_test::Result;
+using urdfsnap::cli_test::RunUrdfsnap;
 
 TEST_F(CliTest, RendersThePngAtTheRequestedSize) {
   const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("a.png") + " --size 320x200 -j link_01__link_02=0.5");

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-namespace urdfsnap::cli {
+namespace urdfsnap::request {
 
 struct ImageSize {
   int width = 640;
@@ -22,4 +22,4 @@ Eigen::Vector3d ParseVector3(const std::string& text, const std::string& option)
 // A finite number; throws urdfsnap::Error naming `option`.
 double ParseFinite(const std::string& text, const std::string& option);
 
-}  // namespace urdfsnap::cli
+}  // namespace urdfsnap::request

@@ -1,5 +1,5 @@
 // Strict parsing of option values: the whole text must be used, numbers must be finite.
-#include "cli/value_parsing.h"
+#include "request/value_parsing.h"
 
 #include <charconv>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "common/error.h"
 #include "image/image.h"
 
-namespace urdfsnap::cli {
+namespace urdfsnap::request {
 
 namespace {
 
@@ -62,4 +62,4 @@ Eigen::Vector3d ParseVector3(const std::string& text, const std::string& option)
   return v;
 }
 
-}  // namespace urdfsnap::cli
+}  // namespace urdfsnap::request

@@ -1,0 +1,227 @@
+// ReadSuite: yaml-cpp walks the suite file; every key of a case is checked where it stands, so an
+// error names the suite file and the line of the offending key.
+#include "snapshot/suite_file.h"
+
+#include <filesystem>
+#include <set>
+
+#include <yaml-cpp/yaml.h>
+
+#include "common/error.h"
+#include "model/number_text.h"
+
+namespace urdfsnap::snapshot {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int LineOf(const YAML::Node& node) { return node.Mark().line + 1; }
+
+bool IsCaseName(const std::string& name) {
+  if (name.empty()) return false;
+  for (char ch : name) {
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-' && ch != '.') return false;
+  }
+  return true;
+}
+
+class SuiteReader {
+ public:
+  explicit SuiteReader(const std::string& path)
+      : path_(path), dir_(fs::path(path).parent_path()) {}
+
+  Suite Read() {
+    YAML::Node root;
+    try {
+      root = YAML::LoadFile(path_);
+    } catch (const YAML::BadFile&) {
+      throw Error(SourceLocation{path_, 0}, "cannot read the suite file");
+    } catch (const YAML::Exception& e) {
+      throw Error(SourceLocation{path_, e.mark.line + 1}, "bad YAML: " + e.msg);
+    }
+    if (!root.IsMap()) throw ErrorAt(root, "expected a map with 'cases:' (and optionally 'defaults:')");
+    SnapshotCase defaults;
+    YAML::Node cases;
+    bool has_cases = false;
+    for (const auto& pair : root) {
+      const YAML::Node& key_node = pair.first;
+      const YAML::Node& value = pair.second;
+      const std::string key = key_node.Scalar();
+      if (key == "defaults") {
+        ApplyKeys(value, defaults, true);
+      } else if (key == "cases") {
+        cases = value;
+        has_cases = true;
+      } else {
+        throw ErrorAt(key_node, "unknown key '" + key + "' (expected 'defaults' or 'cases')");
+      }
+    }
+    if (!has_cases || !cases.IsSequence() || cases.size() == 0) {
+      throw ErrorAt(has_cases ? cases : root, "expected 'cases:' with a list of cases");
+    }
+    Suite suite{path_, {}};
+    std::set<std::string> names;
+    for (const YAML::Node& node : cases) {
+      SnapshotCase c = defaults;
+      c.line = LineOf(node);
+      ApplyKeys(node, c, false);
+      if (c.name.empty()) throw ErrorAt(node, "the case has no 'name'");
+      if (!names.insert(c.name).second) throw ErrorAt(node, "a second case named '" + c.name + "'");
+      if (c.request.model.path.empty()) throw ErrorAt(node, "case '" + c.name + "' has no 'model'");
+      if (c.golden.empty()) c.golden = Resolve(c.name + ".png");
+      suite.cases.push_back(std::move(c));
+    }
+    return suite;
+  }
+
+ private:
+  Error ErrorAt(const YAML::Node& node, const std::string& what) const {
+    return Error(SourceLocation{path_, LineOf(node)}, what);
+  }
+
+  // A path in the suite is relative to the suite file's folder.
+  std::string Resolve(const std::string& path) const {
+    if (fs::path(path).is_absolute()) return path;
+    return (dir_ / path).lexically_normal().string();
+  }
+
+  // A scalar, or a list of scalars joined with ',' (focal: [0, 0, 0.5] as --focal 0,0,0.5).
+  std::string Text(const YAML::Node& value, const std::string& key) const {
+    if (value.IsScalar()) return value.Scalar();
+    if (value.IsSequence() && value.size() > 0) {
+      std::string text;
+      for (const YAML::Node& item : value) {
+        if (!item.IsScalar()) break;
+        text += (text.empty() ? "" : ",") + item.Scalar();
+      }
+      if (!text.empty()) return text;
+    }
+    throw ErrorAt(value, "'" + key + "': expected a value");
+  }
+
+  bool Flag(const YAML::Node& value, const std::string& key) const {
+    bool flag = false;
+    if (!value.IsScalar() || !YAML::convert<bool>::decode(value, flag)) {
+      throw ErrorAt(value, "'" + key + "': expected true or false, got '" + Text(value, key) + "'");
+    }
+    return flag;
+  }
+
+  double Number(const YAML::Node& value, const std::string& key, double low, double high) const {
+    double number = 0;
+    const std::string text = Text(value, key);
+    if (!model::ParseNumber(text, number) || number < low || number > high) {
+      throw ErrorAt(value, "'" + key + "': expected a number from " + model::FormatNumber(low) +
+                               " to " + model::FormatNumber(high) + ", got '" + text + "'");
+    }
+    return number;
+  }
+
+  // {KEY: VALUE} as pairs of text, in file order.
+  std::vector<std::pair<std::string, std::string>> Pairs(const YAML::Node& value,
+                                                         const std::string& key) const {
+    if (!value.IsMap()) throw ErrorAt(value, "'" + key + "': expected a map");
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (const auto& pair : value) {
+      pairs.emplace_back(pair.first.Scalar(), Text(pair.second, key + ": " + pair.first.Scalar()));
+    }
+    return pairs;
+  }
+
+  void ApplyJoints(const YAML::Node& value, request::RenderRequest& request) const {
+    if (value.IsScalar()) {
+      request.joint_file = Resolve(value.Scalar());
+      return;
+    }
+    if (!value.IsMap()) throw ErrorAt(value, "'joints': expected a map {joint: value} or a joint file");
+    for (const auto& pair : value) {
+      const std::string name = pair.first.Scalar();
+      request.joints.emplace_back(name, Number(pair.second, "joints: " + name, -1e9, 1e9));
+    }
+  }
+
+  bool ApplyRenderOption(const std::string& key, const YAML::Node& value,
+                         request::RenderRequest& request) const {
+    for (const request::TextOption& option : request::TextOptions()) {
+      if (key != option.name) continue;
+      const std::string text = Text(value, key);
+      request.*option.field = option.is_path ? Resolve(text) : text;
+      return true;
+    }
+    for (const request::FlagOption& option : request::FlagOptions()) {
+      if (key != option.name) continue;
+      request.*option.field = Flag(value, key);
+      return true;
+    }
+    return false;
+  }
+
+  void ApplyKey(const YAML::Node& key_node, const YAML::Node& value, SnapshotCase& c) const {
+    const std::string key = key_node.Scalar();
+    request::RenderRequest& r = c.request;
+    if (key == "model") {
+      r.model.path = Resolve(Text(value, key));
+    } else if (key == "args") {
+      r.model.xacro_args = Pairs(value, key);
+    } else if (key == "packages") {
+      for (const auto& [package, dir] : Pairs(value, key)) r.model.packages[package] = Resolve(dir);
+    } else if (key == "xacro-ns") {
+      r.model.xacro_ns = Flag(value, key);
+    } else if (key == "joints") {
+      ApplyJoints(value, r);
+    } else if (key == "max-delta") {
+      c.tolerance.max_delta = static_cast<int>(Number(value, key, 0, 255));
+    } else if (key == "max-fraction") {
+      c.tolerance.max_fraction = Number(value, key, 0, 1);
+    } else if (key == "max-mean") {
+      c.tolerance.max_mean = Number(value, key, 0, 255);
+    } else if (!ApplyRenderOption(key, value, r)) {
+      throw ErrorAt(key_node, KnownKeysHint(key));
+    }
+  }
+
+  std::string KnownKeysHint(const std::string& key) const {
+    std::string keys = "name, golden, model, args, packages, xacro-ns, joints, max-delta, max-fraction, max-mean";
+    for (const auto& option : request::TextOptions()) keys += std::string(", ") + option.name;
+    for (const auto& option : request::FlagOptions()) keys += std::string(", ") + option.name;
+    return "unknown key '" + key + "' (known: " + keys + ")";
+  }
+
+  void ApplyKeys(const YAML::Node& map, SnapshotCase& c, bool is_defaults) const {
+    if (!map.IsMap()) throw ErrorAt(map, is_defaults ? "'defaults': expected a map" : "expected a case: a map with 'name:'");
+    std::set<std::string> seen;
+    for (const auto& pair : map) {
+      const YAML::Node& key_node = pair.first;
+      const YAML::Node& value = pair.second;
+      const std::string key = key_node.Scalar();
+      if (!seen.insert(key).second) throw ErrorAt(key_node, "'" + key + "' is given twice");
+      if (key == "name" || key == "golden") {
+        if (is_defaults) throw ErrorAt(key_node, "'" + key + "' belongs to a case, not to 'defaults'");
+        if (key == "golden") {
+          c.golden = Resolve(Text(value, key));
+        } else if (c.name = Text(value, key); !IsCaseName(c.name)) {
+          throw ErrorAt(value, "case name '" + c.name + "': use letters, digits, '_', '-' and '.'");
+        }
+        continue;
+      }
+      ApplyKey(key_node, value, c);
+      c.option_lines[key] = LineOf(key_node);
+    }
+  }
+
+  std::string path_;
+  fs::path dir_;
+};
+
+}  // namespace
+
+Suite ReadSuite(const std::string& path) { return SuiteReader(path).Read(); }
+
+std::string OptionLabel(const Suite& suite, const SnapshotCase& c, std::string_view name) {
+  const auto found = c.option_lines.find(std::string(name));
+  const int line = found == c.option_lines.end() ? c.line : found->second;
+  return suite.path + ":" + std::to_string(line) + ": " + std::string(name);
+}
+
+}  // namespace urdfsnap::snapshot

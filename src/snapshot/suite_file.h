@@ -1,0 +1,50 @@
+// Snapshot suites: a YAML file listing views of robots (cases) and the golden image of each.
+//
+//   defaults:                      # optional: keys every case starts from
+//     model: ../urdf/robot.xacro   # paths are relative to the suite file
+//     size: 640x480
+//   cases:
+//     - name: home                 # [A-Za-z0-9_.-], unique; golden default: home.png
+//     - name: reach
+//       joints: {shoulder: 0.5, elbow: -1.0}   # or the name of a joint file
+//       args: {use_gripper: "true"}            # xacro NAME:=VALUE
+//       fit: true
+//       golden: goldens/reach.png
+//
+// Case keys: name, golden, model, args, packages (PKG: DIR), xacro-ns, joints, every view and
+// display option of `urdfsnap render` under its option name without the dashes (yaw, fit,
+// background, rviz, tf, no-grid, ...), and the tolerance of `urdfsnap diff` (max-delta,
+// max-fraction, max-mean).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "image/image_diff.h"
+#include "request/render_request.h"
+
+namespace urdfsnap::snapshot {
+
+struct SnapshotCase {
+  std::string name;
+  int line = 0;               // of the case in the suite file
+  request::RenderRequest request;
+  std::string golden;         // path of the golden PNG (relative to the working directory)
+  image::DiffTolerance tolerance;
+  std::map<std::string, int> option_lines;  // the line each option was given on
+};
+
+struct Suite {
+  std::string path;
+  std::vector<SnapshotCase> cases;
+};
+
+// Reads the suite at `path`. Throws urdfsnap::Error "PATH:LINE: ..." for bad YAML, unknown or
+// repeated keys, values of the wrong kind, a case without a model, bad or repeated case names.
+Suite ReadSuite(const std::string& path);
+
+// The label for option `name` of `c` in error messages: "suite.yaml:12: yaw".
+std::string OptionLabel(const Suite& suite, const SnapshotCase& c, std::string_view name);
+
+}  // namespace urdfsnap::snapshot

@@ -1,0 +1,36 @@
+// What the command-line tests share: running the urdfsnap binary and a fresh folder per test.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace urdfsnap::cli_test {
+
+inline const std::filesystem::path kSource = URDFSNAP_SOURCE_DIR;
+inline const std::string kMrm = (kSource / "models/mrm_description/urdf/mrm.urdf").string();
+
+struct Result {
+  int status;          // exit status, -1 when killed by a signal
+  std::string output;  // stdout and stderr together
+};
+
+// Runs "urdfsnap ARGUMENTS" through the shell (so "VAR=value" words may come first via `env`).
+Result RunUrdfsnap(const std::string& arguments, const std::string& environment = "");
+
+// The bytes of a file ("" when it cannot be read).
+std::string ReadBytes(const std::string& path);
+
+// A fresh, empty folder per test, removed afterwards.
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override;
+  void TearDown() override;
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  // Writes `text` to the file `name` in the folder and returns its path.
+  std::string Write(const std::string& name, const std::string& text) const;
+  std::filesystem::path dir_;
+};
+
+}  // namespace urdfsnap::cli_test
