@@ -86,5 +86,35 @@ TEST(MakeDiffImageTest, MagentaOverDimmedGrey) {
   EXPECT_EQ(diff.rgb, (std::vector<std::uint8_t>{64, 64, 64, 127, 127, 127, 255, 0, 255}));
 }
 
+// 100x100 images: the default tolerance allows 1 pixel in 10,000 over a delta of 8 and a mean of 0.1.
+TEST(DiffToleranceTest, FractionAndMeanLimits) {
+  const DiffTolerance tolerance;
+  const Image expected = Filled(100, 100, 48, 48, 48);
+  Image actual = expected;
+  SetPixel(actual, 10, 20, 48, 48, 57);  // one pixel 9 over: at the fraction limit, still a match
+  DiffStats stats = CompareImages(expected, actual, tolerance.max_delta);
+  EXPECT_EQ(stats.pixels_over, 1);
+  EXPECT_TRUE(WithinTolerance(stats, tolerance));
+  SetPixel(actual, 11, 20, 48, 48, 57);  // a second one is too many
+  EXPECT_FALSE(WithinTolerance(CompareImages(expected, actual, tolerance.max_delta), tolerance));
+  // a faint change everywhere: no pixel over 8, but the mean delta of 5 is far over 0.1
+  stats = CompareImages(expected, Filled(100, 100, 53, 48, 48), tolerance.max_delta);
+  EXPECT_EQ(stats.pixels_over, 0);
+  EXPECT_FALSE(WithinTolerance(stats, tolerance));
+}
+
+TEST(DiffToleranceTest, DescriptionHasTheFiguresAndTheRegion) {
+  const Image expected = Filled(100, 100, 0, 0, 0);
+  Image actual = expected;
+  SetPixel(actual, 3, 4, 200, 0, 0);
+  SetPixel(actual, 7, 9, 0, 100, 0);
+  const DiffTolerance tolerance;
+  EXPECT_EQ(DescribeDiff(CompareImages(expected, actual, 8), tolerance),
+            "max delta 200, mean delta 0.030 (limit 0.1), 2 pixels (0.020%) over 8 (limit 0.01%), "
+            "in x 3..7, y 4..9");
+  EXPECT_EQ(DescribeDiff(CompareImages(expected, expected, 8), tolerance),
+            "max delta 0, mean delta 0.000 (limit 0.1), 0 pixels (0.000%) over 8 (limit 0.01%)");
+}
+
 }  // namespace
 }  // namespace urdfsnap::image

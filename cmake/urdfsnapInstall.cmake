@@ -1,0 +1,29 @@
+# `cmake --install`: the urdfsnap binary, the stage libraries with their headers (under
+# include/urdfsnap/<stage>/, included as "<stage>/<file>.h" as inside the project) and the CMake
+# package urdfsnapConfig.cmake with urdfsnap_add_snapshot_test().
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(urdfsnap_libraries urdfsnap_common urdfsnap_xacro urdfsnap_model urdfsnap_geometry
+  urdfsnap_image urdfsnap_scene urdfsnap_render urdfsnap_request urdfsnap_snapshot)
+set(urdfsnap_include_dir ${CMAKE_INSTALL_INCLUDEDIR}/urdfsnap)
+set(urdfsnap_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/urdfsnap)
+
+install(TARGETS urdfsnap ${urdfsnap_libraries} EXPORT urdfsnapTargets
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  INCLUDES DESTINATION ${urdfsnap_include_dir})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${urdfsnap_include_dir}
+  FILES_MATCHING PATTERN "*.h" PATTERN "cli" EXCLUDE)
+install(EXPORT urdfsnapTargets NAMESPACE urdfsnap:: DESTINATION ${urdfsnap_package_dir})
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/urdfsnapConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/urdfsnapConfig.cmake INSTALL_DESTINATION ${urdfsnap_package_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/urdfsnapConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES
+  ${PROJECT_BINARY_DIR}/urdfsnapConfig.cmake
+  ${PROJECT_BINARY_DIR}/urdfsnapConfigVersion.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/urdfsnapSnapshotTest.cmake
+  DESTINATION ${urdfsnap_package_dir})

@@ -1,0 +1,88 @@
+// The HTML report of a failing snapshot in a real browser (headless Chromium): the three images
+// load and the swipe slider moves the clip between expected and actual. Skipped when Chromium is
+// not installed (it is not one of scripts/deps.sh's packages: apt-get install chromium).
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.h"
+#include "image/png_reader.h"
+
+namespace urdfsnap::cli_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The first of the usual Chromium names on PATH, or "".
+std::string FindChromium() {
+  for (const char* name : {"chromium", "chromium-browser", "google-chrome"}) {
+    if (std::system(("command -v " + std::string(name) + " >/dev/null 2>&1").c_str()) == 0) return name;
+  }
+  return "";
+}
+
+class ReportBrowserTest : public CliTest {
+ protected:
+  void SetUp() override {
+    CliTest::SetUp();
+    chromium_ = FindChromium();
+    if (chromium_.empty()) GTEST_SKIP() << "no chromium on PATH";
+    // the elbow golden against the arm moved by 0.1 rad: a failing case with all three images
+    fs::copy_file(kSource / "tests/golden/mrm_elbow.png", Path("elbow.png"));
+    Write("suite.yaml", "cases:\n  - name: elbow\n    model: " + kMrm +
+                            "\n    joints: {link_01__link_02: 0.6, link_02__link_03: -1.0}\n");
+    const Result r = RunUrdfsnap("snapshot check " + Path("suite.yaml") + " --report " + Path("report"));
+    ASSERT_EQ(r.status, 1) << r.output;
+  }
+
+  // Runs headless Chromium on `page` with `arguments`, returning its stdout.
+  std::string Browse(const std::string& arguments, const std::string& page) const {
+    const std::string command = chromium_ + " --headless --no-sandbox --disable-gpu --hide-scrollbars " +
+                                arguments + " file://" + page + " 2>/dev/null";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string output;
+    char buffer[4096];
+    size_t n;
+    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
+    pclose(pipe);
+    return output;
+  }
+
+  std::string chromium_;
+};
+
+TEST_F(ReportBrowserTest, ShowsTheThreeImages) {
+  Browse("--window-size=1300,1400 --screenshot=" + Path("shot.png"), Path("report/index.html"));
+  const image::Image shot = image::ReadPng(Path("shot.png"));
+  // the diff image's magenta and the robot's red must be on the page, i.e. the PNGs loaded
+  int magenta = 0, red = 0;
+  for (size_t i = 0; i < shot.rgb.size(); i += 3) {
+    const auto* p = &shot.rgb[i];
+    magenta += p[0] > 200 && p[1] < 60 && p[2] > 200;
+    red += p[0] > 100 && p[1] < 30 && p[2] < 30;
+  }
+  EXPECT_GT(magenta, 300);
+  EXPECT_GT(red, 3000);
+}
+
+TEST_F(ReportBrowserTest, SliderSwipesBetweenExpectedAndActual) {
+  // the report's own page, plus a script that moves the slider as a user's drag would
+  std::ifstream in(Path("report/index.html"));
+  std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto end = html.rfind("</body>");
+  ASSERT_NE(end, std::string::npos);
+  html.insert(end, "<script>const s = document.querySelector('.slider'); s.value = 20;"
+                   " s.dispatchEvent(new Event('input'));</script>\n");
+  Write("report/driven.html", html);
+  const std::string initial = Browse("--dump-dom", Path("report/index.html"));
+  EXPECT_NE(initial.find("style=\"clip-path: inset(0px 0px 0px 50%);\""), std::string::npos) << initial;
+  const std::string moved = Browse("--dump-dom", Path("report/driven.html"));
+  EXPECT_NE(moved.find("style=\"clip-path: inset(0px 0px 0px 20%);\""), std::string::npos) << moved;
+  EXPECT_NE(moved.find("class=\"line\" style=\"left: 20%;\""), std::string::npos) << moved;
+}
+
+}  // namespace
+}  // namespace urdfsnap::cli_test
