@@ -44,7 +44,8 @@ void AddDiffCommand(CLI::App& app) {
   cmd->add_option("EXPECTED", o->expected, "the reference image (PNG)")->required();
   cmd->add_option("ACTUAL", o->actual, "the image to check (PNG), of the same size")->required();
   cmd->add_option("--diff", o->diff_output,
-                  "write a picture of the difference: changed pixels magenta over a dimmed EXPECTED");
+                  "write a picture of the difference: pixels over the delta magenta, smaller changes yellow, "
+                  "over a dimmed EXPECTED");
   cmd->add_option("--max-delta", o->tolerance.max_delta,
                   "a pixel counts as changed when a channel differs by more than N (0-255)")
       ->capture_default_str()->check(CLI::Range(0, 255));

@@ -1,4 +1,4 @@
-// Per-pixel comparison of two equally sized RGB images and the magenta-on-grey diff picture.
+// Per-pixel comparison of two equally sized RGB images and the magenta/yellow-on-grey diff picture.
 #include "image/image_diff.h"
 
 #include <algorithm>
@@ -80,11 +80,16 @@ Image MakeDiffImage(const Image& expected, const Image& actual, int delta) {
   Image diff{expected.width, expected.height, std::vector<std::uint8_t>(expected.rgb.size())};
   for (std::size_t i = 0; i < diff.rgb.size() / 3; ++i) {
     std::uint8_t* out = &diff.rgb[3 * i];
-    if (PixelDelta(expected, actual, i) > delta) {
+    const int pixel_delta = PixelDelta(expected, actual, i);
+    if (pixel_delta > delta) {
       out[0] = 255, out[1] = 0, out[2] = 255;
       continue;
     }
-    // Rec. 601 luma in 0..255, squeezed into 64..127 so that no grey comes near the magenta
+    if (pixel_delta > 0) {
+      out[0] = 255, out[1] = 200, out[2] = 0;
+      continue;
+    }
+    // Rec. 601 luma in 0..255, squeezed into 64..127 so that no grey comes near magenta or yellow
     const std::uint8_t* in = &expected.rgb[3 * i];
     const int luma = (77 * in[0] + 150 * in[1] + 29 * in[2]) >> 8;
     std::fill_n(out, 3, static_cast<std::uint8_t>(64 + luma / 4));

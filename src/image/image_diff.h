@@ -42,8 +42,10 @@ std::string DescribeDiff(const DiffStats& stats, const DiffTolerance& tolerance)
 // urdfsnap::Error if either image is inconsistent or their sizes differ (naming both sizes).
 DiffStats CompareImages(const Image& expected, const Image& actual, int delta);
 
-// A picture of the difference: pixels whose delta is over `delta` in magenta (255, 0, 255), the
-// rest a dimmed grey (64..127) copy of `expected` so that the robot's outline stays readable.
+// A picture of the difference: pixels whose delta is over `delta` in magenta (255, 0, 255), pixels
+// changed by less in yellow (255, 200, 0) (a faint change everywhere fails on the mean delta and
+// must show too), the rest a dimmed grey (64..127) copy of `expected` so that the robot's outline
+// stays readable.
 // Throws like CompareImages.
 Image MakeDiffImage(const Image& expected, const Image& actual, int delta);
 

@@ -93,7 +93,7 @@ std::string CaseSection(const fs::path& dir, const CaseResult& r) {
   }
   if (!r.diff.rgb.empty()) {
     image::WritePng(r.diff, (dir / diff).string());
-    html << Figure(diff, "diff: changed pixels magenta over the dimmed expected image");
+    html << Figure(diff, "diff: magenta over the delta, yellow changed less, over the dimmed expected image");
   }
   html << "</div>\n";
   if (!r.expected.rgb.empty() && !r.actual.rgb.empty() && !r.diff.rgb.empty()) {

@@ -73,17 +73,20 @@ TEST(CompareImagesTest, InconsistentImageIsAnError) {
   EXPECT_THROW(CompareImages(Filled(2, 2, 0, 0, 0), broken, 0), Error);
 }
 
-TEST(MakeDiffImageTest, MagentaOverDimmedGrey) {
-  Image expected = Filled(3, 1, 0, 0, 0);
+TEST(MakeDiffImageTest, MagentaAndYellowOverDimmedGrey) {
+  Image expected = Filled(4, 1, 0, 0, 0);
   SetPixel(expected, 1, 0, 255, 255, 255);
   SetPixel(expected, 2, 0, 255, 0, 0);
   Image actual = expected;
   SetPixel(actual, 2, 0, 0, 0, 0);
+  SetPixel(actual, 3, 0, 0, 8, 0);
   const Image diff = MakeDiffImage(expected, actual, 8);
-  EXPECT_EQ(diff.width, 3);
+  EXPECT_EQ(diff.width, 4);
   EXPECT_EQ(diff.height, 1);
-  // black -> 64, white -> 127 (luma squeezed into 64..127), the changed pixel magenta
-  EXPECT_EQ(diff.rgb, (std::vector<std::uint8_t>{64, 64, 64, 127, 127, 127, 255, 0, 255}));
+  // black -> 64, white -> 127 (luma squeezed into 64..127), the pixel changed by 255 magenta,
+  // the one changed by 8 (not over the delta) yellow
+  EXPECT_EQ(diff.rgb,
+            (std::vector<std::uint8_t>{64, 64, 64, 127, 127, 127, 255, 0, 255, 255, 200, 0}));
 }
 
 // 100x100 images: the default tolerance allows 1 pixel in 10,000 over a delta of 8 and a mean of 0.1.
