@@ -29,6 +29,24 @@ void PrintResult(const char* word, const std::string& name, const std::string& m
   std::fflush(stdout);
 }
 
+// The suite format in a few lines, with the option keys taken from the table `render` uses.
+std::string SuiteFormatHelp() {
+  std::string keys;
+  for (const auto& option : request::TextOptions()) keys += std::string(" ") + option.name;
+  for (const auto& option : request::FlagOptions()) keys += std::string(" ") + option.name + ":true";
+  return "\nSuite file (YAML; paths relative to it):\n"
+         "  defaults: {KEY: VALUE, ...}        keys every case starts from\n"
+         "  cases:\n"
+         "    - name: NAME                     letters, digits, _ - .\n"
+         "      golden: FILE.png               default NAME.png\n"
+         "      model: ROBOT.urdf|.xacro\n"
+         "      args: {NAME: VALUE}            xacro arguments\n"
+         "      packages: {PKG: DIR}\n"
+         "      joints: {JOINT: VALUE} | FILE  rad or m, or a joint file\n"
+         "      max-delta / max-fraction / max-mean: as for urdfsnap diff\n"
+         "  and render's options without the dashes:" + keys + "\n";
+}
+
 // Exit status of a run: 2 when a case could not be rendered (bad input), 1 when one differs.
 int ExitStatus(const std::vector<snapshot::CaseResult>& results) {
   int status = 0;
@@ -40,8 +58,8 @@ int ExitStatus(const std::vector<snapshot::CaseResult>& results) {
 }
 
 void Check(const SnapshotOptions& o) {
-  render::StartLoadingGl();  // overlaps loading Mesa with reading the suite and the first model
   const snapshot::Suite suite = snapshot::ReadSuite(o.suite);
+  render::StartLoadingGl();  // overlaps loading Mesa with reading the first model
   request::RenderSession session;
   Warnings warnings;
   std::vector<snapshot::CaseResult> results;
@@ -82,9 +100,9 @@ std::vector<const snapshot::SnapshotCase*> Selected(const snapshot::Suite& suite
 }
 
 void Update(const SnapshotOptions& o) {
-  render::StartLoadingGl();
   const snapshot::Suite suite = snapshot::ReadSuite(o.suite);
   const auto selected = Selected(suite, o.case_names);
+  render::StartLoadingGl();
   request::RenderSession session;
   Warnings warnings;
   std::vector<snapshot::CaseResult> results;
@@ -116,6 +134,7 @@ void AddSnapshotCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "snapshot", "Snapshot tests: render a suite of views and compare them with golden images");
   cmd->require_subcommand(1);
+  cmd->footer(SuiteFormatHelp());
   CLI::App* check = cmd->add_subcommand(
       "check", "Render every case and compare it with its golden: exit 0 if all match, 1 if any "
                "differs or has no golden, 2 on bad input");

@@ -218,7 +218,7 @@ class SuiteReader {
 
 Suite ReadSuite(const std::string& path) { return SuiteReader(path).Read(); }
 
-std::string OptionLabel(const Suite& suite, const SnapshotCase& c, std::string_view name) {
+std::string OptionLocation(const Suite& suite, const SnapshotCase& c, std::string_view name) {
   const auto found = c.option_lines.find(std::string(name));
   const int line = found == c.option_lines.end() ? c.line : found->second;
   return suite.path + ":" + std::to_string(line) + ": " + std::string(name);

@@ -19,6 +19,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "image/image_diff.h"
@@ -45,6 +46,6 @@ struct Suite {
 Suite ReadSuite(const std::string& path);
 
 // The label for option `name` of `c` in error messages: "suite.yaml:12: yaw".
-std::string OptionLabel(const Suite& suite, const SnapshotCase& c, std::string_view name);
+std::string OptionLocation(const Suite& suite, const SnapshotCase& c, std::string_view name);
 
 }  // namespace urdfsnap::snapshot
