@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Regenerates the golden images of tests/golden/suite.yaml from the current build after an
-# intended change: cases that are missing or no longer match (all with --force; only some with
-# their names). Look at every rewritten image before committing it.
-# usage: scripts/update-goldens.sh [--force] [CASE...]
+# Regenerates the golden images of urdfsnap's snapshot suites (tests/golden/suite.yaml and the
+# example project's) from the current build after an intended change: the cases that are missing
+# or no longer match, all of them with --force. Look at every rewritten image before committing it.
+# One suite's named cases: build/urdfsnap snapshot update SUITE CASE...
+# usage: scripts/update-goldens.sh [--force]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"
-"$root/build/urdfsnap" snapshot update "$root/tests/golden/suite.yaml" "$@"
-git -C "$root" status --short tests/golden
+for suite in tests/golden/suite.yaml examples/snapshot-testing/snapshots/suite.yaml; do
+  "$root/build/urdfsnap" snapshot update "$root/$suite" "$@"
+done
+git -C "$root" status --short tests/golden examples/snapshot-testing/snapshots
