@@ -163,7 +163,11 @@ class SuiteReader {
     if (key == "model") {
       r.model.path = Resolve(Text(value, key));
     } else if (key == "args") {
-      r.model.xacro_args = Pairs(value, key);
+      // a case's argument replaces the default of the same name, the others stay
+      for (auto& [name, text] : Pairs(value, key)) {
+        std::erase_if(r.model.xacro_args, [&](const auto& arg) { return arg.first == name; });
+        r.model.xacro_args.emplace_back(name, text);
+      }
     } else if (key == "packages") {
       for (const auto& [package, dir] : Pairs(value, key)) r.model.packages[package] = Resolve(dir);
     } else if (key == "xacro-ns") {

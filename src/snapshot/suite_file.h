@@ -14,7 +14,8 @@
 // Case keys: name, golden, model, args, packages (PKG: DIR), xacro-ns, joints, every view and
 // display option of `urdfsnap render` under its option name without the dashes (yaw, fit,
 // background, rviz, tf, no-grid, ...), and the tolerance of `urdfsnap diff` (max-delta,
-// max-fraction, max-mean).
+// max-fraction, max-mean). A case's keys replace those of `defaults`, except that `joints`, `args`
+// and `packages` add to them (a name given in both takes the case's value).
 #pragma once
 
 #include <map>

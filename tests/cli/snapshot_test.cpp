@@ -124,7 +124,8 @@ TEST_F(SnapshotTest, SuiteOutputIsByteIdenticalToRenderAndAcrossThreadCounts) {
        "--yaw 1.2 --background 255,255,255 --no-grid"},
       {"from_rviz", "    rviz: " + rviz + "\n    no-aa: true\n", "--rviz " + rviz + " --no-aa"},
   };
-  std::string yaml = "defaults:\n  model: " + kMrm + "\ncases:\n";
+  // the defaults' joints apply to every case, a case's joints add to them
+  std::string yaml = "defaults:\n  model: " + kMrm + "\n  joints: {link_02__link_03: 0.3}\ncases:\n";
   for (const View& v : views) yaml += "  - name: " + v.name + "\n    golden: " + v.name + ".png\n" + v.yaml;
   fs::create_directories(Path("t1"));
   fs::create_directories(Path("t8"));
@@ -134,14 +135,15 @@ TEST_F(SnapshotTest, SuiteOutputIsByteIdenticalToRenderAndAcrossThreadCounts) {
   ASSERT_EQ(RunUrdfsnap("snapshot update " + Path("t8/suite.yaml"), "LP_NUM_THREADS=8").status, 0);
   for (const View& v : views) {
     const std::string model = Contains(v.yaml, "model:") ? xacro : kMrm;
-    const Result r = RunUrdfsnap("render " + model + " " + v.flags + " -o " + Path(v.name + ".png"),
+    const std::string flags = "-j link_02__link_03=0.3 " + v.flags;
+    const Result r = RunUrdfsnap("render " + model + " " + flags + " -o " + Path(v.name + ".png"),
                                  "LP_NUM_THREADS=2");
     ASSERT_EQ(r.status, 0) << r.output;
     const std::string alone = ReadBytes(Path(v.name + ".png"));
     EXPECT_EQ(ReadBytes(Path("t1/" + v.name + ".png")), alone) << v.name;
     EXPECT_EQ(ReadBytes(Path("t8/" + v.name + ".png")), alone) << v.name;
     // and run after run
-    ASSERT_EQ(RunUrdfsnap("render " + model + " " + v.flags + " -o " + Path("again.png")).status, 0);
+    ASSERT_EQ(RunUrdfsnap("render " + model + " " + flags + " -o " + Path("again.png")).status, 0);
     EXPECT_EQ(ReadBytes(Path("again.png")), alone) << v.name;
   }
 }
