@@ -1,4 +1,5 @@
 // The unit box: six flat faces of four vertices each, as rviz_cube.mesh.
+#include "geometry/texture_coordinates.h"
 #include "geometry/triangle_mesh.h"
 
 namespace urdfsnap::geometry {
@@ -20,6 +21,7 @@ TriangleMesh MakeUnitBox() {
                           {first, first + 1, first + 2, first, first + 2, first + 3});
     }
   }
+  internal::AttachBoxUvs(mesh);
   return mesh;
 }
 

@@ -1,5 +1,6 @@
 // The unit cylinder: rviz_cylinder.mesh's 40-segment side with smooth normals and two flat caps.
 #include "geometry/circle_parts.h"
+#include "geometry/texture_coordinates.h"
 #include "geometry/triangle_mesh.h"
 
 namespace urdfsnap::geometry {
@@ -24,6 +25,7 @@ TriangleMesh MakeUnitCylinder(int segments) {
   }
   internal::AppendDiscFan(mesh, 0.5f, /*faces_up=*/true, segments);
   internal::AppendDiscFan(mesh, -0.5f, /*faces_up=*/false, segments);
+  internal::AttachCylinderUvs(mesh);
   return mesh;
 }
 

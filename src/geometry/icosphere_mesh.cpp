@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "geometry/texture_coordinates.h"
 #include "geometry/triangle_mesh.h"
 
 namespace urdfsnap::geometry {
@@ -70,6 +71,7 @@ class IcosphereBuilder {
         }
       }
     }
+    internal::AttachSphereUvs(mesh_);
     return std::move(mesh_);
   }
 

@@ -84,6 +84,17 @@ Eigen::Vector3f Emissive(const aiMaterial& material) {
   return {c.r, c.g, c.b};
 }
 
+// loadMaterials() in mesh_loader.cpp: a material with a texture gets a texture unit holding its
+// diffuse map, looked up beside the mesh file; the diffuse colour stays and tints it.
+std::string DiffuseTexture(const aiMaterial& material, const fs::path& mesh_path) {
+  aiString name;
+  if (material.GetTextureCount(aiTextureType_DIFFUSE) == 0 ||
+      material.GetTexture(aiTextureType_DIFFUSE, 0, &name) != aiReturn_SUCCESS || name.length == 0) {
+    return "";
+  }
+  return (mesh_path.parent_path() / name.C_Str()).string();
+}
+
 struct Builder {
   const fs::path& path;
   const aiScene& scene;
@@ -129,6 +140,7 @@ struct Builder {
     if (!is_stl) {
       part.diffuse = Diffuse(*scene.mMaterials[in.mMaterialIndex]);
       part.emissive = Emissive(*scene.mMaterials[in.mMaterialIndex]);
+      part.texture = DiffuseTexture(*scene.mMaterials[in.mMaterialIndex], path);
     }
     TriangleMesh& mesh = part.mesh;
     mesh.positions.reserve(in.mNumVertices);
@@ -139,6 +151,7 @@ struct Builder {
       mesh.positions.push_back(unit_scale *
                                (linear * Eigen::Vector3f(p.x, p.y, p.z) + translation));
       mesh.normals.push_back((normal_matrix * Eigen::Vector3f(n.x, n.y, n.z)).normalized());
+      if (in.HasTextureCoords(0)) mesh.uvs.emplace_back(in.mTextureCoords[0][v].x, in.mTextureCoords[0][v].y);
     }
     mesh.indices.reserve(3 * std::size_t{in.mNumFaces});
     for (unsigned f = 0; f < in.mNumFaces; ++f) {

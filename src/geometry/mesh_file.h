@@ -30,6 +30,10 @@ struct MeshPart {
   // The file's emissive colour, which RViz adds as the material's self-illumination (usually 0).
   // Meaningless when takes_urdf_material.
   Eigen::Vector3f emissive{0, 0, 0};
+  // The material's diffuse texture map: its name joined to the mesh file's folder, where RViz
+  // looks for it ("Assume textures are in paths relative to the mesh"); "" for none. The file is
+  // not opened here. Meaningless when takes_urdf_material.
+  std::string texture;
 };
 
 struct MeshFile {
@@ -43,7 +47,8 @@ inline constexpr std::size_t kMaxMeshTriangles = 20'000'000;
 
 // Loads the mesh file at `path` (a file system path, see mesh_uri.h for URIs) as RViz does. Each
 // file is read once per process: later calls with a path naming the same file (canonical path)
-// return the same object. Thread-safe. Vertex colours and textures are ignored. Throws
+// return the same object. Thread-safe. Vertex colours are ignored; the first set of texture
+// coordinates is kept (flipped so that v = 0 is the image's top, as RViz imports them). Throws
 // urdfsnap::Error "PATH: ..." when the file is missing, unreadable, not a mesh assimp can read,
 // holds no triangles, is larger than kMaxMeshFileBytes or has more than kMaxMeshTriangles
 // triangles.

@@ -14,6 +14,9 @@ struct TriangleMesh {
   std::vector<Eigen::Vector3f> positions;
   std::vector<Eigen::Vector3f> normals;  // unit length, one per position
   std::vector<std::uint32_t> indices;    // three per triangle, counter-clockwise seen from outside
+  // texture coordinates, one per position, or none; v = 0 is the image's top row (Ogre's and
+  // assimp's with aiProcess_FlipUVs)
+  std::vector<Eigen::Vector2f> uvs;
 
   int vertex_count() const { return static_cast<int>(positions.size()); }
   int triangle_count() const { return static_cast<int>(indices.size() / 3); }

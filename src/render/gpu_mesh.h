@@ -1,5 +1,5 @@
-// A TriangleMesh uploaded to the GPU (vertex array with interleaved position and normal, and an
-// index buffer). Internal to the render library; needs a current GL context.
+// A TriangleMesh uploaded to the GPU (vertex array with interleaved position, normal and texture
+// coordinates, and an index buffer). Internal to the render library; needs a current GL context.
 #pragma once
 
 #include "geometry/triangle_mesh.h"
@@ -13,7 +13,7 @@ class GpuMesh {
   GpuMesh(const GpuMesh&) = delete;
   GpuMesh& operator=(const GpuMesh&) = delete;
 
-  // Draws the triangles with the program in use (attribute 0 position, 1 normal).
+  // Draws the triangles with the program in use (attribute 0 position, 1 normal, 2 uv).
   void Draw() const;
 
  private:

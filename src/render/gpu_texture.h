@@ -1,6 +1,6 @@
-// A TextureImage uploaded to the GPU: 2 channels as GL_RG8 (luminance in r, alpha in g), 4 as
-// GL_RGBA8; bilinear filtering without mipmaps and clamped edges, as Ogre sets up font textures.
-// Internal to the render library; needs a current GL context.
+// A TextureImage uploaded to the GPU: 2 channels as GL_RG8 (luminance in r, alpha in g), clamped
+// and without mipmaps as Ogre's font textures; 4 as GL_RGBA8, repeated and mipmapped as Ogre's
+// image textures (texture_image.h). Internal to the render library; needs a current GL context.
 #pragma once
 
 #include "render/texture_image.h"

@@ -8,10 +8,10 @@ namespace urdfsnap::render {
 namespace {
 
 // RViz clones "RVIZ/ShadedRed" for a link without a usable material (robot_link.cpp L486-490).
-const Eigen::Vector4f kRed{1, 0, 0, 1};
+const LinkMaterial kRed{{1, 0, 0, 1}, ""};
 
 // RobotLink::getMaterialForLink: the colour RViz builds for `material` in `link`.
-Eigen::Vector4f MaterialColour(const urdf::Link& link, urdf::MaterialSharedPtr material) {
+LinkMaterial MaterialColour(const urdf::Link& link, urdf::MaterialSharedPtr material) {
   // "only the first visual's material actually comprises color values": look the name up there
   if (material && !material->name.empty()) {
     for (const auto& visual : link.visual_array) {
@@ -23,15 +23,16 @@ Eigen::Vector4f MaterialColour(const urdf::Link& link, urdf::MaterialSharedPtr m
   }
   if (!material && link.visual && link.visual->material) material = link.visual->material;
   if (!material) return kRed;
+  if (!material->texture_filename.empty()) return {{1, 1, 1, 1}, material->texture_filename};
   const urdf::Color& c = material->color;
-  return {c.r, c.g, c.b, c.a};
+  return {{c.r, c.g, c.b, c.a}, ""};
 }
 
 }  // namespace
 
 LinkColours ResolveLinkColours(const urdf::Link& link) {
   LinkColours colours;
-  std::optional<Eigen::Vector4f> current;   // RobotLink::default_material_
+  std::optional<LinkMaterial> current;   // RobotLink::default_material_
   for (const auto& visual : link.visual_array) {
     if (visual->geometry && (!current || visual->material)) {
       current = MaterialColour(link, visual->material);

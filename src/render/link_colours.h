@@ -2,6 +2,7 @@
 // surprising ones (src/rviz/robot/robot_link.cpp getMaterialForLink, createEntityForGeometryElement).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -9,9 +10,17 @@
 
 namespace urdfsnap::render {
 
+// What RViz builds from a URDF material: a colour, or a texture on white (getMaterialForLink sets
+// no colour on a textured material, so Ogre's default white diffuse stays and the texture shows
+// lit but untinted).
+struct LinkMaterial {
+  Eigen::Vector4f rgba{1, 0, 0, 1};
+  std::string texture;                    // the <texture filename> URI; "" for none
+};
+
 struct LinkColours {
-  std::vector<Eigen::Vector4f> visuals;   // rgba per entry of link.visual_array
-  Eigen::Vector4f collision{1, 0, 0, 1};  // rgba for every collision shape of the link
+  std::vector<LinkMaterial> visuals;      // per entry of link.visual_array
+  LinkMaterial collision;                 // for every collision shape of the link
 };
 
 // Applies RViz's rules, in its order (visuals, then collisions):

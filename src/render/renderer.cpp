@@ -84,6 +84,12 @@ struct Renderer::Impl {
     const Eigen::Matrix3d MV = (V * M).topLeftCorner<3, 3>();
     lit.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
     lit.Set("diffuse", item.rgba);
+    lit.Set("emissive", item.emissive);
+    lit.Set("textured", item.texture ? 1 : 0);
+    if (item.texture) {
+      lit.Set("image", 0);
+      textures.Get(item.texture).Bind(0);
+    }
     // a mirroring scale turns the winding around; Ogre flips culling for such nodes, and so do we
     glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
     meshes.Get(item.mesh).Draw();

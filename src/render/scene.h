@@ -21,6 +21,9 @@ struct DrawItem {
   Eigen::Affine3d X_FG;                 // mesh pose in the fixed frame, including its scale
   Eigen::Vector4f rgba{1, 0, 0, 1};     // diffuse colour and alpha
   std::string link;                     // the link it belongs to ("" for markers)
+  // modulates the lit colour (Ogre's default texture unit), sampled at the mesh's uvs; none if null
+  std::shared_ptr<const TextureImage> texture;
+  Eigen::Vector3f emissive{0, 0, 0};    // self-illumination, added to the lit colour
 };
 
 // Unlit line segments (pairs of points), drawn 1 pixel wide.

@@ -8,6 +8,7 @@
 #include "render/link_colours.h"
 #include "render/mesh_prefetch.h"
 #include "render/primitive_meshes.h"
+#include "render/texture_file.h"
 #include "render/tf_markers.h"
 
 namespace urdfsnap::render {
@@ -23,28 +24,52 @@ Eigen::Isometry3d ToIsometry(const urdf::Pose& pose) {
   return X;
 }
 
-// One drawn mesh of a URDF geometry element and its colour.
+// One drawn mesh of a URDF geometry element and its material.
 struct Part {
   std::shared_ptr<const geometry::TriangleMesh> mesh;
   Eigen::Vector4f rgba;
+  std::shared_ptr<const TextureImage> texture;
+  Eigen::Vector3f emissive = Eigen::Vector3f::Zero();
 };
 
-// A mesh file's sub-meshes: STL sub-meshes take the link's material, the others keep the file's
-// own diffuse colour (robot_link.cpp: only BaseWhite/BaseWhiteNoLighting sub-meshes get it).
-// Errors and warnings point at the link's element in the model file.
-std::vector<Part> MeshParts(const model::Link& link, const urdf::Mesh& mesh,
-                            const Eigen::Vector4f& link_rgba, const SceneOptions& options,
-                            Warnings& warnings) {
+// Runs `load` (which resolves or reads a file the model names); its error is reported at the
+// link's element, or, with --allow-missing-meshes, becomes a warning saying what `instead` happens
+// and the result is empty.
+template <typename Load>
+auto LoadForLink(const model::Link& link, const SceneOptions& options, Warnings& warnings,
+                 const char* instead, Load load) -> decltype(load()) {
   const SourceLocation where{options.model_file, link.line};
   const std::string culprit = "link '" + link.name + "': ";
-  std::string path;
   try {
-    path = geometry::ResolveMeshUri(mesh.filename, options.model_file, options.packages);
+    return load();
   } catch (const Error& e) {
     if (!options.allow_missing_meshes) throw Error(where, culprit + e.what());
-    warnings.Add(Error(where, culprit + e.what() + " (not drawn: --allow-missing-meshes)").what());
+    warnings.Add(Error(where, culprit + e.what() + " (" + instead + ": --allow-missing-meshes)").what());
     return {};
   }
+}
+
+// The texture of a URDF material, found as mesh URIs are (RViz's resource_retriever); null for
+// none, or when it is missing and missing files are allowed (the part is then drawn white).
+std::shared_ptr<const TextureImage> UrdfTexture(const model::Link& link, const LinkMaterial& material,
+                                                const SceneOptions& options, Warnings& warnings) {
+  if (material.texture.empty()) return nullptr;
+  return LoadForLink(link, options, warnings, "drawn without it", [&] {
+    return LoadTextureFile(geometry::ResolveMeshUri(material.texture, options.model_file, options.packages));
+  });
+}
+
+// A mesh file's sub-meshes: STL sub-meshes take the link's material, the others keep the file's
+// own diffuse colour, emission and texture (robot_link.cpp: only BaseWhite/BaseWhiteNoLighting
+// sub-meshes get it). Errors and warnings point at the link's element in the model file.
+std::vector<Part> MeshParts(const model::Link& link, const urdf::Mesh& mesh, const Part& link_part,
+                            const SceneOptions& options, Warnings& warnings) {
+  const SourceLocation where{options.model_file, link.line};
+  const std::string culprit = "link '" + link.name + "': ";
+  const std::string path = LoadForLink(link, options, warnings, "not drawn", [&] {
+    return geometry::ResolveMeshUri(mesh.filename, options.model_file, options.packages);
+  });
+  if (path.empty()) return {};
   if (geometry::IsPlainPath(mesh.filename)) {
     // one warning per model (the collector drops repeats), not one per mesh
     warnings.Add(Error(SourceLocation{options.model_file},
@@ -61,37 +86,52 @@ std::vector<Part> MeshParts(const model::Link& link, const urdf::Mesh& mesh,
   std::vector<Part> parts;
   for (const auto& part : file->parts) {
     // the aliasing pointer keeps the whole cached file alive while the scene uses a part of it
-    parts.push_back({std::shared_ptr<const geometry::TriangleMesh>(file, &part.mesh),
-                     part.takes_urdf_material ? link_rgba : part.diffuse});
+    const std::shared_ptr<const geometry::TriangleMesh> shared(file, &part.mesh);
+    if (part.takes_urdf_material) {
+      parts.push_back({shared, link_part.rgba, link_part.texture});
+      continue;
+    }
+    std::shared_ptr<const TextureImage> texture;
+    if (!part.texture.empty()) {
+      texture = LoadForLink(link, options, warnings, "drawn without it",
+                            [&] { return LoadTextureFile(part.texture); });
+    }
+    parts.push_back({shared, part.diffuse, texture, part.emissive});
   }
   return parts;
 }
 
 // RViz's meshes for a URDF geometry and the scale that sizes them (robot_link.cpp L580-640).
 std::vector<Part> PartsOf(const model::Link& link, const urdf::Geometry& geometry,
-                          const Eigen::Vector4f& rgba, const SceneOptions& options,
+                          const LinkMaterial& material, const SceneOptions& options,
                           Eigen::Vector3d& scale, Warnings& warnings) {
+  const Part link_part{nullptr, material.rgba, UrdfTexture(link, material, options, warnings)};
+  const auto shape = [&](const std::shared_ptr<const geometry::TriangleMesh>& mesh) {
+    Part part = link_part;
+    part.mesh = mesh;
+    return std::vector<Part>{part};
+  };
   switch (geometry.type) {
     case urdf::Geometry::BOX: {
       const auto& box = static_cast<const urdf::Box&>(geometry);
       scale = {box.dim.x, box.dim.y, box.dim.z};
-      return {{UnitBoxMesh(), rgba}};
+      return shape(UnitBoxMesh());
     }
     case urdf::Geometry::CYLINDER: {
       const auto& cylinder = static_cast<const urdf::Cylinder&>(geometry);
       scale = {2 * cylinder.radius, 2 * cylinder.radius, cylinder.length};
-      return {{UnitCylinderMesh(), rgba}};
+      return shape(UnitCylinderMesh());
     }
     case urdf::Geometry::SPHERE: {
       const auto& sphere = static_cast<const urdf::Sphere&>(geometry);
       scale = Eigen::Vector3d::Constant(2 * sphere.radius);
-      return {{UnitSphereMesh(), rgba}};
+      return shape(UnitSphereMesh());
     }
     case urdf::Geometry::MESH: {
       const auto& mesh = static_cast<const urdf::Mesh&>(geometry);
       scale = {mesh.scale.x, mesh.scale.y, mesh.scale.z};
       if (mesh.filename.empty()) return {};   // RViz skips it too
-      return MeshParts(link, mesh, rgba, options, warnings);
+      return MeshParts(link, mesh, link_part, options, warnings);
     }
   }
   return {};
@@ -102,16 +142,16 @@ struct ShapeElement {
   const urdf::Pose& origin;
 };
 
-void AddShape(const model::Link& link, const ShapeElement& element, const Eigen::Vector4f& rgba,
+void AddShape(const model::Link& link, const ShapeElement& element, const LinkMaterial& material,
               const Eigen::Isometry3d& X_FL, const SceneOptions& options, Scene& scene,
               Warnings& warnings) {
   if (!element.geometry) return;
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
-  for (auto& part : PartsOf(link, *element.geometry, rgba, options, scale, warnings)) {
+  for (auto& part : PartsOf(link, *element.geometry, material, options, scale, warnings)) {
     part.rgba.w() *= static_cast<float>(options.alpha);
     scene.items.push_back({std::move(part.mesh),
                            X_FL * ToIsometry(element.origin) * Eigen::Scaling(scale), part.rgba,
-                           link.name});
+                           link.name, std::move(part.texture), part.emissive});
   }
 }
 

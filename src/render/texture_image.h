@@ -10,7 +10,9 @@ namespace urdfsnap::render {
 struct TextureImage {
   int width = 0;
   int height = 0;
-  // 2: luminance and alpha (Ogre's PF_BYTE_LA, the font texture); 4: RGBA (image files)
+  // 2: luminance and alpha (Ogre's PF_BYTE_LA, the font texture), sampled as Ogre's Font sets it up:
+  // clamped, no mipmaps; 4: RGBA (image files), sampled as Ogre's defaults: repeated, mipmapped,
+  // bilinear within the nearest mip level (TFO_BILINEAR)
   int channels = 4;
   std::vector<std::uint8_t> texels;   // width * height * channels bytes, row after row
 };

@@ -20,6 +20,8 @@
 namespace urdfsnap::geometry {
 namespace {
 
+namespace fs = std::filesystem;
+
 using Triangle = std::array<Eigen::Vector3f, 3>;
 
 // The unit cube [0,1]^3 as 12 counter-clockwise triangles seen from outside.
@@ -276,6 +278,27 @@ TEST_F(MeshFileTest, ObjKeepsMtlColoursAndItsSmoothNormals) {
         Eigen::Vector3f(p.x() > 0.5f ? 0.6f : -0.6f, p.y() > 0.5f ? 0.6f : -0.6f, 0.52915f)
             .normalized();
     EXPECT_TRUE(body->mesh.normals[v].isApprox(expected, 1e-4f)) << "vertex " << v;
+  }
+}
+
+TEST_F(MeshFileTest, ObjTextureMapIsFoundBesideTheMeshAndItsCoordinatesKept) {
+  Write("maps/m.mtl", "newmtl skin\nKd 0.5 0.5 1\nmap_Kd ../images/skin.png\nnewmtl plain\nKd 1 0 0\n");
+  const std::string obj =
+      "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+      "o skin\nusemtl skin\nf 1/1 2/2 3/3\no plain\nusemtl plain\nf 1 3 2\n";
+  const auto file = LoadMeshFile(Write("maps/t.obj", obj));
+  ASSERT_EQ(file->parts.size(), 2u);
+  const MeshPart& skin = file->parts[0].texture.empty() ? file->parts[1] : file->parts[0];
+  const MeshPart& plain = &skin == &file->parts[0] ? file->parts[1] : file->parts[0];
+  // mesh_loader.cpp: "Assume textures are in paths relative to the mesh"; the colour still tints
+  EXPECT_EQ(fs::path(skin.texture).lexically_normal(), (dir_ / "images/skin.png").lexically_normal());
+  EXPECT_TRUE(skin.diffuse.isApprox(Eigen::Vector4f(0.5f, 0.5f, 1, 1)));
+  EXPECT_TRUE(plain.texture.empty());
+  // aiProcess_FlipUVs: v = 1 - the file's v, so v = 0 is the image's top row
+  ASSERT_EQ(skin.mesh.uvs.size(), skin.mesh.positions.size());
+  for (size_t v = 0; v < skin.mesh.positions.size(); ++v) {
+    const Eigen::Vector3f& p = skin.mesh.positions[v];
+    EXPECT_TRUE(skin.mesh.uvs[v].isApprox(Eigen::Vector2f(p.x(), 1 - p.y()))) << "vertex " << v;
   }
 }
 

@@ -127,14 +127,16 @@ INSTANTIATE_TEST_SUITE_P(Rviz, PrimitiveMeshTest,
                          testing::Values(
                              // rviz_cube.mesh: 6 faces x 4 vertices, 2 triangles each
                              Shape{"box", MakeUnitBox, 24, 12},
-                             // rviz_cylinder.mesh: 40 segments, 80 side and 2 x 40 cap triangles
-                             Shape{"cylinder", [] { return MakeUnitCylinder(); }, 4 * 40 + 2, 160},
-                             // rviz_sphere.mesh: icosahedron with edges split in 6
-                             Shape{"sphere", [] { return MakeUnitSphere(); }, 362, 720},
+                             // rviz_cylinder.mesh: 40 segments, 80 side and 2 x 40 cap triangles;
+                             // plus copies of the 4 vertices where the texture wraps
+                             Shape{"cylinder", [] { return MakeUnitCylinder(); }, 4 * 40 + 2 + 4, 160},
+                             // rviz_sphere.mesh: icosahedron with edges split in 6; plus copies
+                             // of the 17 seam vertices and 4 more of each pole (one per triangle)
+                             Shape{"sphere", [] { return MakeUnitSphere(); }, 362 + 17 + 8, 720},
                              Shape{"cone", [] { return MakeUnitCone(); }, 3 * 40 + 1, 80},
                              // the smallest allowed resolutions still make sound meshes
-                             Shape{"cylinder3", [] { return MakeUnitCylinder(3); }, 14, 12},
-                             Shape{"sphere1", [] { return MakeUnitSphere(1); }, 12, 20},
+                             Shape{"cylinder3", [] { return MakeUnitCylinder(3); }, 14 + 4, 12},
+                             Shape{"sphere1", [] { return MakeUnitSphere(1); }, 12 + 2 + 8, 20},
                              Shape{"cone3", [] { return MakeUnitCone(3); }, 10, 6}),
                          [](const testing::TestParamInfo<Shape>& info) {
                            return std::string(info.param.name);
@@ -190,12 +192,17 @@ TEST(SphereMeshTest, PolesHaveFiveNeighbours) {
       if (mesh.positions[i].isApprox(Eigen::Vector3f(0.f, 0.f, pole_z))) pole = i;
     }
     ASSERT_GE(pole, 0) << "no vertex at z = " << pole_z;
-    std::set<std::uint32_t> neighbours;
+    // by position: the pole and the seam have a copy per texture coordinate
+    const auto at = [&](std::uint32_t i) {
+      const Eigen::Vector3f& p = mesh.positions[i];
+      return std::tuple{std::lround(p.x() * 1e5), std::lround(p.y() * 1e5), std::lround(p.z() * 1e5)};
+    };
+    std::set<decltype(at(0))> neighbours;
     for (int t = 0; t < mesh.triangle_count(); ++t) {
       for (int c = 0; c < 3; ++c) {
-        if (mesh.indices[3 * t + c] != static_cast<std::uint32_t>(pole)) continue;
-        neighbours.insert(mesh.indices[3 * t + (c + 1) % 3]);
-        neighbours.insert(mesh.indices[3 * t + (c + 2) % 3]);
+        if (at(mesh.indices[3 * t + c]) != at(pole)) continue;
+        neighbours.insert(at(mesh.indices[3 * t + (c + 1) % 3]));
+        neighbours.insert(at(mesh.indices[3 * t + (c + 2) % 3]));
       }
     }
     EXPECT_EQ(neighbours.size(), 5u) << "pole at z = " << pole_z;
@@ -206,6 +213,80 @@ TEST(SphereMeshTest, AreaConverges) {
   // 4 pi r^2 with r = 0.5; RViz's 6 divisions already come within 1%
   ExpectAreaConverges(MakeUnitSphere, kPi, {1, 2, 6, 20}, 1e-3);
   EXPECT_LT(std::abs(SurfaceArea(MakeUnitSphere()) - kPi) / kPi, 0.01);
+}
+
+// Texture coordinates as in RViz's mesh files (values read from Debian's rviz 1.14.19
+// ogre_media/models with the Ogre mesh format): one per vertex, and no triangle spans the wrap.
+// Corners on the Z axis (cap centres, poles) have no angle and are left out.
+void ExpectUvsWithoutWrap(const TriangleMesh& mesh) {
+  ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    float low = 2, high = -2;
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t i = mesh.indices[3 * t + c];
+      if (mesh.positions[i].head<2>().isZero()) continue;
+      low = std::min(low, mesh.uvs[i].x());
+      high = std::max(high, mesh.uvs[i].x());
+    }
+    EXPECT_LE(high - low, 0.5f) << "triangle " << t;
+  }
+}
+
+// The coordinates of the vertex at `position` (the first copy).
+Eigen::Vector2f UvAt(const TriangleMesh& mesh, const Eigen::Vector3f& position) {
+  for (int i = 0; i < mesh.vertex_count(); ++i) {
+    if (mesh.positions[i].isApprox(position, 1e-4f)) return mesh.uvs[i];
+  }
+  ADD_FAILURE() << "no vertex at " << position.transpose();
+  return {};
+}
+
+TEST(TextureCoordinatesTest, BoxFacesEachShowTheWholeImageAsRvizCube) {
+  const TriangleMesh mesh = MakeUnitBox();
+  ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
+  // rviz_cube.mesh, +Z face: (-0.5, -0.5) at (0, 1), (0.5, 0.5) at (1, 0); +X face: v = 0 at the top
+  for (int i = 0; i < mesh.vertex_count(); ++i) {
+    const Eigen::Vector3f& p = mesh.positions[i];
+    const Eigen::Vector2f& uv = mesh.uvs[i];
+    EXPECT_TRUE((uv.array() == 0 || uv.array() == 1).all()) << uv.transpose();
+    if (mesh.normals[i].z() == 1) {
+      EXPECT_EQ(uv, Eigen::Vector2f(p.x() + 0.5f, 0.5f - p.y()));
+    }
+    if (mesh.normals[i].x() == 1) {
+      EXPECT_EQ(uv, Eigen::Vector2f(p.y() + 0.5f, 0.5f - p.z()));
+    }
+  }
+}
+
+TEST(TextureCoordinatesTest, CylinderWrapsAroundFromThreeQuartersAsRvizCylinder) {
+  const TriangleMesh mesh = MakeUnitCylinder();
+  ExpectUvsWithoutWrap(mesh);
+  // rviz_cylinder.mesh: u = 0.75 at +X, v = 0 at the bottom and 1 at the top; the caps' centres
+  // at u = 0.5
+  EXPECT_TRUE(UvAt(mesh, {0.5f, 0, -0.5f}).isApprox(Eigen::Vector2f(0.75f, 0)));
+  EXPECT_TRUE(UvAt(mesh, {0.5f, 0, 0.5f}).isApprox(Eigen::Vector2f(0.75f, 1)));
+  EXPECT_TRUE(UvAt(mesh, {0, 0, 0.5f}).isApprox(Eigen::Vector2f(0.5f, 1)));
+}
+
+TEST(TextureCoordinatesTest, SphereIsMappedByLongitudeAndLatitudeAsRvizSphere) {
+  const TriangleMesh mesh = MakeUnitSphere();
+  ExpectUvsWithoutWrap(mesh);
+  // rviz_sphere.mesh: (0.0917, 0, 0.4915) at (0.5, 0.0587), (0.0283, 0.0872, 0.4915) at u = 0.7:
+  // u = 0.5 + longitude / 2π (up to whole turns), v = colatitude / π
+  for (int i = 0; i < mesh.vertex_count(); ++i) {
+    const Eigen::Vector3f& p = mesh.positions[i];
+    EXPECT_NEAR(mesh.uvs[i].y(), std::acos(2 * p.z()) / kPi, 1e-5);
+    if (p.head<2>().isZero()) continue;
+    const double u = 0.5 + std::atan2(p.y(), p.x()) / (2 * kPi);
+    EXPECT_NEAR(std::remainder(mesh.uvs[i].x() - u, 1.0), 0, 1e-5) << p.transpose();
+  }
+  // the pole takes the mean of its triangle's other corners: 0.6 between 0.5 and 0.7
+  bool found = false;
+  for (int t = 0; t < mesh.triangle_count(); ++t) {
+    const Eigen::Vector2f& a = mesh.uvs[mesh.indices[3 * t]];
+    if (mesh.positions[mesh.indices[3 * t]].z() == 0.5f && std::abs(a.x() - 0.6f) < 1e-4f) found = true;
+  }
+  EXPECT_TRUE(found);
 }
 
 TEST(ConeMeshTest, ApexAndBase) {

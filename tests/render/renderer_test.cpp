@@ -104,6 +104,54 @@ TEST_F(RendererTest, GridLinesBlendAtHalfAlphaAsRvizMeasured) {
   EXPECT_GT(crossings, 0);
 }
 
+// Pixel (x, y) is `expected` within 12 per channel.
+void ExpectNear(const image::Image& image, const Rgb& expected, int x, int y) {
+  const Rgb p = Pixel(image, x, y);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], expected[c], 12) << x << "," << y << " channel " << c;
+}
+
+// A 2x2 RGBA texture: red, green on top; blue, white below.
+std::shared_ptr<const TextureImage> FourColours() {
+  auto texture = std::make_shared<TextureImage>();
+  texture->width = texture->height = 2;
+  texture->texels = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
+  return texture;
+}
+
+TEST_F(RendererTest, TextureModulatesTheLitColourWithVZeroAtTheImageTop) {
+  // RViz's box faces each show the whole image; the +X face looks at the camera here
+  Scene scene;
+  DrawItem box;
+  box.mesh = UnitBoxMesh();
+  box.X_FG = Eigen::Translation3d(-0.5, 0, 0) * Eigen::Scaling(1.0, 1.0, 1.0);
+  box.rgba = {1, 1, 0.5f, 1};
+  box.texture = FourColours();
+  scene.items.push_back(box);
+  Renderer no_aa(0);
+  const image::Image image = no_aa.Render(scene, FrontView(), 128, 128);
+  // the face spans 77 px around the centre; the texel centres (u, v = 0.25, 0.75) lie 19 px from
+  // it, where bilinear filtering gives nearly the texels' own colours (within half a pixel). Seen from +X, +Y (u) runs to the
+  // right and v = 0 is the top: red top left, green top right, blue bottom left (times the
+  // diffuse's half blue), white bottom right (yellowish)
+  ExpectNear(image, {255, 0, 0}, 45, 45);
+  ExpectNear(image, {0, 255, 0}, 83, 45);
+  ExpectNear(image, {0, 0, 128}, 45, 83);
+  ExpectNear(image, {255, 255, 128}, 83, 83);
+}
+
+TEST_F(RendererTest, EmissionAddsToTheLitColourAndClampsAtOne) {
+  Scene scene;
+  DrawItem item;
+  item.mesh = UpperTriangle();
+  item.X_FG = Eigen::AngleAxisd(0.9, Eigen::Vector3d::UnitZ()) * Eigen::Affine3d::Identity();
+  item.rgba = {0.5f, 0.5f, 0, 1};
+  item.emissive = {0.8f, 0, 0.25f};
+  scene.items.push_back(item);
+  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48);
+  // n · l = cos 0.9 = 0.6216: red 0.8 + 0.311 clamps to 255, green 0.311·255, blue 0.25·255
+  EXPECT_EQ(Pixel(image, 32, 14), (Rgb{255, 79, 64}));
+}
+
 // A label "H" 0.4 m high at the origin, seen from the front.
 TextLabel LetterH() {
   const GlyphAtlas atlas = BuildGlyphAtlas(FindLiberationSans(), {U'A', U'H'});
