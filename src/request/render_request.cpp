@@ -10,17 +10,22 @@ namespace {
 using R = RenderRequest;
 
 const std::array kTextOptions{
-    TextOption{"size", "image size WxH in pixels, up to 16384x16384 (default 640x480)", &R::size, false},
+    TextOption{"size",
+               "image size WxH in pixels, up to 16384x16384 (default 640x480, the RViz reference "
+               "images' render area)",
+               &R::size, false},
     TextOption{"rviz",
                "an RViz .rviz config: background, fixed frame, Grid, RobotModel, TF and Orbit view "
-               "(the options below override it)",
+               "(the options below override it; default none: RViz's built-in defaults)",
                &R::rviz, true},
     TextOption{"yaw", "orbit yaw about +Z in rad (RViz default 0.785398)", &R::yaw, false},
     TextOption{"pitch", "orbit pitch in rad (RViz default 0.785398)", &R::pitch, false},
     TextOption{"distance", "orbit distance in m (RViz default 10)", &R::distance, false},
     TextOption{"focal", "orbit focal point X,Y,Z in m (RViz default 0,0,0)", &R::focal, false},
     TextOption{"fov", "vertical field of view in degrees (RViz default 45)", &R::fov, false},
-    TextOption{"fixed-frame", "link whose frame the scene is shown in (default: the root link)",
+    TextOption{"fixed-frame",
+               "link whose frame the scene is shown in (RViz default 'map', which a URDF has not: "
+               "here the root link)",
                &R::fixed_frame, false},
     TextOption{"background", "background colour R,G,B 0-255 (RViz default 48,48,48)", &R::background,
                false},
@@ -29,10 +34,13 @@ const std::array kTextOptions{
 };
 
 const std::array kFlagOptions{
-    FlagOption{"no-clamp", "do not clamp values to the joint limits", &R::no_clamp},
+    FlagOption{"no-clamp",
+               "do not clamp values to the joint limits (default clamped, as joint_state_publisher's "
+               "sliders are)",
+               &R::no_clamp},
     FlagOption{"fit",
                "choose the distance (and, without --focal, the focal point) so the robot fills "
-               "the image",
+               "the image (RViz has no such view: default off)",
                &R::fit},
     FlagOption{"collision", "show collision geometry (RViz default off)", &R::collision},
     FlagOption{"no-visual", "hide visual geometry (RViz default shown)", &R::no_visual},
@@ -45,7 +53,8 @@ const std::array kFlagOptions{
                &R::no_tf_arrows},
     FlagOption{"no-aa", "no multisampling (RViz default 4x)", &R::no_aa},
     FlagOption{"allow-missing-meshes",
-               "draw the rest of the robot when a mesh file cannot be found (one warning each)",
+               "draw the rest of the robot when a mesh or texture file cannot be found, one "
+               "warning each (RViz draws the rest and logs an error; default: an error)",
                &R::allow_missing_meshes},
 };
 

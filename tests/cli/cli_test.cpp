@@ -2,6 +2,7 @@
 // output files that are either complete or untouched.
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -27,6 +28,24 @@ TEST_F(CliTest, RendersThePngAtTheRequestedSize) {
   EXPECT_EQ(image.height, 200);
   // nothing but the PNG is left in the folder (the temporary file was renamed)
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
+TEST_F(CliTest, RenderHelpGivesTheDefaultOfEveryViewAndDisplayOption) {
+  const Result r = RunUrdfsnap("render --help");
+  ASSERT_EQ(r.status, 0) << r.output;
+  // options that are not about what RViz shows have no RViz default to state
+  const std::set<std::string> not_views = {"--help", "--package", "--xacro-ns", "--output", "--joint", "--joints"};
+  std::istringstream lines(r.output);
+  int checked = 0;
+  for (std::string line; std::getline(lines, line);) {
+    const size_t dashes = line.find("--");
+    if (dashes == std::string::npos || line.find_first_not_of(" -,oj", 0) < dashes) continue;
+    const std::string option = line.substr(dashes, line.find_first_of(" ", dashes) - dashes);
+    if (not_views.count(option)) continue;
+    EXPECT_NE(line.find("default"), std::string::npos) << line;
+    ++checked;
+  }
+  EXPECT_GE(checked, 20);
 }
 
 TEST_F(CliTest, UnknownJointIsAnErrorListingTheMovableJoints) {
