@@ -84,11 +84,15 @@ class OsMesaContext final : public GlContext {
 
 std::unique_ptr<GlContext> CreateOsMesaContext() { return std::make_unique<OsMesaContext>(); }
 
+namespace {
+
+std::once_flag loading_started;
+std::future<void> loading;   // the background load, valid until FinishLoadingGl waits for it
+
+}  // namespace
+
 void StartLoadingGl() {
-  // a static future: its destructor at exit waits for the load instead of unloading under it
-  static std::once_flag started;
-  static std::future<void> loading;
-  std::call_once(started, [] {
+  std::call_once(loading_started, [] {
     loading = std::async(std::launch::async, [] {
       try {
         LoadOsMesa();
@@ -97,6 +101,10 @@ void StartLoadingGl() {
       }
     });
   });
+}
+
+void FinishLoadingGl() {
+  if (loading.valid()) loading.wait();
 }
 
 }  // namespace urdfsnap::render

@@ -21,4 +21,10 @@ std::unique_ptr<GlContext> CreateOsMesaContext();
 // more than once; a failure is reported by CreateOsMesaContext.
 void StartLoadingGl();
 
+// Waits for a load StartLoadingGl began (returns at once if none did). Call it before main returns:
+// exit() runs the atexit handlers that LLVM's static objects register while loading, LIFO, so a
+// load still running then would find LLVM torn down under it (seen as a hang in LLVM's pass
+// registry on fast error exits).
+void FinishLoadingGl();
+
 }  // namespace urdfsnap::render
