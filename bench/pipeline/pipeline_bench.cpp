@@ -1,5 +1,6 @@
-// The pipeline benchmark: prints a table with, at 640x480, for the mrm robot (or MODEL) and for a
-// generated robot of 200,000 mesh triangles (heavy_robot.h):
+// The pipeline benchmark: prints a table with, at 640x480, for the mrm robot (or MODEL), the same
+// with RViz's TF display with and without frame names, and for a generated robot of 200,000 mesh
+// triangles (heavy_robot.h):
 //   - the whole `urdfsnap render` process, model file to PNG on disk (median of N runs),
 //   - per frame over 200 poses in one process: FK + scene, draw with 4x MSAA + read back,
 //   - PNG encoding of one frame,
@@ -87,13 +88,16 @@ struct Figures {
   std::size_t links = 0, triangles = 0;
 };
 
-Figures Measure(const std::string& binary, const std::string& model_path, int process_runs) {
+// `tf_args` are the render options that give `tf` (none, "--tf", "--tf --no-tf-names").
+Figures Measure(const std::string& binary, const std::string& model_path, int process_runs,
+                const urdfsnap::render::TfOptions& tf = {}, const std::vector<std::string>& tf_args = {}) {
   using namespace urdfsnap;
   Figures figures;
   const std::string out = "/tmp/urdfsnap_bench_" + std::to_string(getpid()) + ".png";
 
   // whole process, after two warm-up runs fill Mesa's shader cache
-  const std::vector<std::string> command = {binary, "render", model_path, "-o", out};
+  std::vector<std::string> command = {binary, "render", model_path, "-o", out};
+  command.insert(command.end(), tf_args.begin(), tf_args.end());
   RunProcess(command);
   RunProcess(command);
   figures.process = MedianTime(process_runs, [&] { RunProcess(command); });
@@ -104,6 +108,7 @@ Figures Measure(const std::string& binary, const std::string& model_path, int pr
   const model::Robot robot = model::LoadRobot(ReadText(model_path), model_path, warnings);
   render::SceneOptions options;
   options.model_file = model_path;
+  options.tf = tf;
   render::Renderer renderer(4);
   std::mt19937 random(42);
   std::uniform_real_distribution<double> angle(-3.0, 3.0);
@@ -153,17 +158,22 @@ int main(int argc, char** argv) {
                                          "/models/mrm_description/urdf/mrm.urdf";
   const std::string heavy_dir = "/tmp/urdfsnap_bench_heavy_" + std::to_string(getpid());
   const std::string heavy = urdfsnap::bench::WriteHeavyRobot(heavy_dir, 200000);
+  urdfsnap::render::TfOptions tf;
+  tf.enabled = true;
   const Figures a = Measure(binary, mrm, 20);
+  const Figures t = Measure(binary, mrm, 20, tf, {"--tf"});
+  tf.show_names = false;
+  const Figures u = Measure(binary, mrm, 20, tf, {"--tf", "--no-tf-names"});
   const Figures b = Measure(binary, heavy, 10);
   std::filesystem::remove_all(heavy_dir);
 
-  std::printf("| measurement, 640x480, median                 | mrm          | heavy (meshes) |\n");
-  std::printf("|----------------------------------------------|--------------|----------------|\n");
-  std::printf("| triangles drawn                              | %12zu | %14zu |\n", a.triangles, b.triangles);
-  std::printf("| whole `urdfsnap render` process, URDF → PNG  | %9.1f ms | %11.1f ms |\n", a.process * 1e3, b.process * 1e3);
-  std::printf("| per frame: joints + FK + scene building      | %9.4f ms | %11.4f ms |\n", a.scene * 1e3, b.scene * 1e3);
-  std::printf("| per frame: draw (4x MSAA) + read back        | %9.3f ms | %11.3f ms |\n", a.draw * 1e3, b.draw * 1e3);
-  std::printf("| per frame: PNG encoding                      | %9.3f ms | %11.3f ms |\n", a.png * 1e3, b.png * 1e3);
-  std::printf("| FK alone, all links (%zu / %zu)                 | %9.3f µs | %11.3f µs |\n", a.links, b.links, a.fk * 1e6, b.fk * 1e6);
+  std::printf("| measurement, 640x480, median                 | mrm          | mrm --tf     | --tf, no names | heavy (meshes) |\n");
+  std::printf("|----------------------------------------------|--------------|--------------|----------------|----------------|\n");
+  std::printf("| triangles drawn                              | %12zu | %12zu | %14zu | %14zu |\n", a.triangles, t.triangles, u.triangles, b.triangles);
+  std::printf("| whole `urdfsnap render` process, URDF → PNG  | %9.1f ms | %9.1f ms | %11.1f ms | %11.1f ms |\n", a.process * 1e3, t.process * 1e3, u.process * 1e3, b.process * 1e3);
+  std::printf("| per frame: joints + FK + scene building      | %9.4f ms | %9.4f ms | %11.4f ms | %11.4f ms |\n", a.scene * 1e3, t.scene * 1e3, u.scene * 1e3, b.scene * 1e3);
+  std::printf("| per frame: draw (4x MSAA) + read back        | %9.3f ms | %9.3f ms | %11.3f ms | %11.3f ms |\n", a.draw * 1e3, t.draw * 1e3, u.draw * 1e3, b.draw * 1e3);
+  std::printf("| per frame: PNG encoding                      | %9.3f ms | %9.3f ms | %11.3f ms | %11.3f ms |\n", a.png * 1e3, t.png * 1e3, u.png * 1e3, b.png * 1e3);
+  std::printf("| FK alone, all links (%zu / %zu)                 | %9.3f µs | %9.3f µs | %11.3f µs | %11.3f µs |\n", a.links, b.links, a.fk * 1e6, t.fk * 1e6, u.fk * 1e6, b.fk * 1e6);
   return 0;
 }

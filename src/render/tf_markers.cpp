@@ -68,9 +68,9 @@ void AddNames(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X
               Scene& scene) {
   std::vector<std::string> names;
   for (const auto& link : robot.links()) names.push_back(link.name);
-  const GlyphAtlas atlas = BuildGlyphAtlas(FindLiberationSans(), CodePointsOf(names));
+  const std::shared_ptr<const GlyphAtlas> atlas = BuildGlyphAtlas(FindLiberationSans(), CodePointsOf(names));
   for (size_t i = 0; i < names.size(); ++i) {
-    scene.labels.push_back({atlas.texture, LayOutText(atlas, names[i], kNameHeight * static_cast<float>(scale)),
+    scene.labels.push_back({atlas->texture, LayOutText(*atlas, names[i], kNameHeight * static_cast<float>(scale)),
                             X_FL[i].translation(), Eigen::Vector4f::Ones()});
   }
 }

@@ -154,8 +154,8 @@ TEST_F(RendererTest, EmissionAddsToTheLitColourAndClampsAtOne) {
 
 // A label "H" 0.4 m high at the origin, seen from the front.
 TextLabel LetterH() {
-  const GlyphAtlas atlas = BuildGlyphAtlas(FindLiberationSans(), {U'A', U'H'});
-  return {atlas.texture, LayOutText(atlas, "H", 0.4f), Eigen::Vector3d::Zero(), {1, 1, 1, 1}};
+  const auto atlas = BuildGlyphAtlas(FindLiberationSans(), {U'A', U'H'});
+  return {atlas->texture, LayOutText(*atlas, "H", 0.4f), Eigen::Vector3d::Zero(), {1, 1, 1, 1}};
 }
 
 // The bounding box of the pixels that differ from the background: {x0, y0, x1, y1}, or all -1.

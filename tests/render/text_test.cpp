@@ -10,7 +10,7 @@ namespace urdfsnap::render {
 namespace {
 
 GlyphAtlas Atlas(const std::vector<std::string>& texts) {
-  return BuildGlyphAtlas(FindLiberationSans(), CodePointsOf(texts));
+  return *BuildGlyphAtlas(FindLiberationSans(), CodePointsOf(texts));
 }
 
 // the luminance-alpha texel at (x, y)
@@ -104,6 +104,13 @@ TEST(TextLayoutTest, DecodesUtf8AndKeepsStrayBytes) {
   EXPECT_EQ(DecodeUtf8("a\xC3\xBD\xE2\x82\xAC"), std::u32string(U"a\u00FD\u20AC"));
   EXPECT_EQ(DecodeUtf8("\xC3"), std::u32string(U"\u00C3"));
   EXPECT_EQ(DecodeUtf8("\xFFx"), std::u32string(U"\u00FFx"));
+}
+
+TEST(GlyphAtlasTest, EachSetOfCodePointsIsBuiltOnce) {
+  const std::string font = FindLiberationSans();
+  const auto first = BuildGlyphAtlas(font, {U'a', U'b'});
+  EXPECT_EQ(BuildGlyphAtlas(font, {U'b', U'a'}), first);
+  EXPECT_NE(BuildGlyphAtlas(font, {U'a'}), first);
 }
 
 TEST(GlyphAtlasTest, MissingFontNamesEveryPlaceAndThePackage) {
