@@ -5,13 +5,8 @@
 
 #include "cli/command.h"
 #include "common/error.h"
-#include "render/gl_context.h"
 
 int main(int argc, char** argv) {
-  // whatever way main is left, a background load of Mesa ends before exit() starts tearing down
-  struct FinishGlLoad {
-    ~FinishGlLoad() { urdfsnap::render::FinishLoadingGl(); }
-  } finish_gl_load;
   CLI::App app{"urdfsnap: RViz-like PNG images of URDF/xacro robots, headless", "urdfsnap"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "urdfsnap 0.1.0");

@@ -27,7 +27,7 @@ std::string DefaultOutput(const std::string& model_path) {
 }
 
 void Run(RenderOptions& o) {
-  render::StartLoadingGl();  // overlaps loading Mesa with reading the model
+  const auto gl_loading = render::StartLoadingGl();  // overlaps loading Mesa with reading the model
   o.request.model = o.model.ToRequest();
   for (const auto& word : o.joint_words) model::ParseJointAssignment(word, o.request.joints);
   Warnings warnings;

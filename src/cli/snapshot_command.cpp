@@ -59,7 +59,7 @@ int ExitStatus(const std::vector<snapshot::CaseResult>& results) {
 
 void Check(const SnapshotOptions& o) {
   const snapshot::Suite suite = snapshot::ReadSuite(o.suite);
-  render::StartLoadingGl();  // overlaps loading Mesa with reading the first model
+  const auto gl_loading = render::StartLoadingGl();  // overlaps Mesa with the first model
   request::RenderSession session;
   Warnings warnings;
   std::vector<snapshot::CaseResult> results;
@@ -102,7 +102,7 @@ std::vector<const snapshot::SnapshotCase*> Selected(const snapshot::Suite& suite
 void Update(const SnapshotOptions& o) {
   const snapshot::Suite suite = snapshot::ReadSuite(o.suite);
   const auto selected = Selected(suite, o.case_names);
-  render::StartLoadingGl();
+  const auto gl_loading = render::StartLoadingGl();
   request::RenderSession session;
   Warnings warnings;
   std::vector<snapshot::CaseResult> results;

@@ -65,15 +65,18 @@ std::string DescribeRobot(const Robot& robot) {
             JointDetails(robot, joint) + "\n";
   }
 
-  // links are in depth-first order, so each one's depth follows from its parent's
+  // links are in depth-first order, so each one's depth follows from its parent's; indentation
+  // stops growing at kDeepest, deeper links say their depth (the output stays linear in size)
+  constexpr int kDeepest = 32;
   text += "\ntree:\n";
   std::vector<int> depth(links.size(), 0);
   for (size_t i = 0; i < links.size(); ++i) {
     if (links[i].parent_joint >= 0) {
       const Joint& joint = joints[links[i].parent_joint];
       depth[i] = depth[joint.parent_link] + 1;
-      text += "  " + std::string(2 * depth[i], ' ') + links[i].name + "  (" + joint.name + ", " +
-              JointTypeName(joint.type) + ")\n";
+      text += "  " + std::string(2 * std::min(depth[i], kDeepest), ' ') +
+              (depth[i] > kDeepest ? "(depth " + std::to_string(depth[i]) + ") " : "") +
+              links[i].name + "  (" + joint.name + ", " + JointTypeName(joint.type) + ")\n";
     } else {
       text += "  " + links[i].name + "\n";
     }

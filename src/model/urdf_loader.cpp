@@ -89,6 +89,7 @@ JointType ToJointType(int urdf_type) {
 std::vector<Joint> ReadJoints(const tinyxml2::XMLElement& robot,
                               const urdf::ModelInterface& model) {
   std::vector<Joint> joints;
+  std::vector<std::string> leaders;  // the joint each one mimics, "" for none
   for (const tinyxml2::XMLElement* e = robot.FirstChildElement("joint"); e;
        e = e->NextSiblingElement("joint")) {
     const urdf::JointConstSharedPtr u = model.getJoint(e->Attribute("name"));
@@ -109,21 +110,15 @@ std::vector<Joint> ReadJoints(const tinyxml2::XMLElement& robot,
       joint.mimic_multiplier = u->mimic->multiplier;
       joint.mimic_offset = u->mimic->offset;
     }
+    leaders.push_back(u->mimic ? u->mimic->joint_name : "");
     joint.line = e->GetLineNum();
     joints.push_back(joint);
   }
-  // mimic leaders by index, now that every joint has one
-  for (const tinyxml2::XMLElement* e = robot.FirstChildElement("joint"); e;
-       e = e->NextSiblingElement("joint")) {
-    if (const tinyxml2::XMLElement* mimic = e->FirstChildElement("mimic")) {
-      Joint& joint = *std::find_if(joints.begin(), joints.end(),
-                                   [&](const Joint& j) { return j.name == e->Attribute("name"); });
-      const std::string leader = mimic->Attribute("joint");
-      joint.mimic_leader = static_cast<int>(
-          std::find_if(joints.begin(), joints.end(),
-                       [&](const Joint& j) { return j.name == leader; }) -
-          joints.begin());
-    }
+  // mimic leaders by index, now that every joint has one (validation made sure they exist)
+  std::map<std::string, int> index_of;
+  for (size_t i = 0; i < joints.size(); ++i) index_of[joints[i].name] = static_cast<int>(i);
+  for (size_t i = 0; i < joints.size(); ++i) {
+    if (!leaders[i].empty()) joints[i].mimic_leader = index_of.at(leaders[i]);
   }
   return joints;
 }

@@ -142,6 +142,7 @@ class Validator {
       const std::string name = UniqueName(*e, seen);
       seen.insert(name);
       JointInfo joint{e, name, LinkOfJoint(*e, name, "parent"), LinkOfJoint(*e, name, "child")};
+      joint_index_[name] = joints_.size();
       joints_.push_back(joint);
     }
   }
@@ -241,10 +242,8 @@ class Validator {
   }
 
   const JointInfo* FindJoint(const std::string& name) const {
-    for (const JointInfo& joint : joints_) {
-      if (joint.name == name) return &joint;
-    }
-    return nullptr;
+    const auto it = joint_index_.find(name);
+    return it == joint_index_.end() ? nullptr : &joints_[it->second];
   }
 
   // One parent per link, exactly one root, every link reachable from it.
@@ -274,13 +273,16 @@ class Validator {
                                      list + "; a URDF tree has exactly one");
     }
     // with one parent each, a link the root cannot reach sits on a loop: walk up until a link
-    // repeats, then report the joint that closes the loop
+    // repeats, then report the joint that closes the loop. Links already seen to reach the root
+    // end a walk, so that every link is walked once (deep chains are linear, not cubic).
+    std::set<std::string> reaches_root, on_walk;
     for (const std::string& start : link_order_) {
       std::vector<std::string> chain;
       std::string link = start;
-      while (parent_joint.count(link)) {
-        const auto repeat = std::find(chain.begin(), chain.end(), link);
-        if (repeat != chain.end()) {
+      on_walk.clear();
+      while (parent_joint.count(link) && !reaches_root.count(link)) {
+        if (on_walk.count(link)) {
+          const auto repeat = std::find(chain.begin(), chain.end(), link);
           const JointInfo& closing = *parent_joint.at(chain.back());
           std::string names;
           for (auto it = chain.rbegin(); it.base() != repeat; ++it) {
@@ -291,28 +293,45 @@ class Validator {
                                      " (parent to child); a URDF must be a tree");
         }
         chain.push_back(link);
+        on_walk.insert(link);
         link = parent_joint.at(link)->parent;
       }
+      reaches_root.insert(chain.begin(), chain.end());
     }
   }
 
+  // A joint whose chain of mimicked joints comes back to it. Each joint is walked once: a walk
+  // ends at a joint that mimics none, at one walked before, or on a circle, which is noted; the
+  // report names the first joint, in document order, that is on a circle.
   void CheckMimicCircles() const {
-    for (const JointInfo& joint : joints_) {
-      const XMLElement* own_mimic = joint.element->FirstChildElement("mimic");
-      std::vector<const JointInfo*> chain{&joint};
-      while (const XMLElement* mimic = chain.back()->element->FirstChildElement("mimic")) {
-        const JointInfo* leader = FindJoint(mimic->Attribute("joint"));
-        if (leader == &joint) {
-          std::string names;
-          for (const JointInfo* j : chain) names += Quoted(j->name.c_str()) + " -> ";
-          Fail(*own_mimic, "joint " + Quoted(joint.name.c_str()) +
-                               " mimics itself through a circle of mimic joints: " + names +
-                               Quoted(joint.name.c_str()));
+    enum State { kUnseen, kOnWalk, kDone };
+    std::vector<State> state(joints_.size(), kUnseen);
+    std::vector<size_t> circle;  // the circle through the earliest joint, starting there
+    for (size_t start = 0; start < joints_.size(); ++start) {
+      std::vector<size_t> chain;
+      for (size_t j = start; state[j] == kUnseen;) {
+        state[j] = kOnWalk;
+        chain.push_back(j);
+        const XMLElement* mimic = joints_[j].element->FirstChildElement("mimic");
+        if (!mimic) break;
+        j = FindJoint(mimic->Attribute("joint")) - joints_.data();
+        if (state[j] != kOnWalk) continue;
+        const auto first = std::find(chain.begin(), chain.end(), j);
+        const auto earliest = std::min_element(first, chain.end());
+        if (circle.empty() || *earliest < circle.front()) {
+          circle.assign(earliest, chain.end());
+          circle.insert(circle.end(), first, earliest);
         }
-        if (std::find(chain.begin(), chain.end(), leader) != chain.end()) break;
-        chain.push_back(leader);
       }
+      for (size_t j : chain) state[j] = kDone;
     }
+    if (circle.empty()) return;
+    const JointInfo& joint = joints_[circle.front()];
+    std::string names;
+    for (size_t j : circle) names += Quoted(joints_[j].name.c_str()) + " -> ";
+    Fail(*joint.element->FirstChildElement("mimic"),
+         "joint " + Quoted(joint.name.c_str()) + " mimics itself through a circle of mimic joints: " +
+             names + Quoted(joint.name.c_str()));
   }
 
   const XMLElement& robot_;
@@ -320,6 +339,7 @@ class Validator {
   std::map<std::string, const XMLElement*> links_;
   std::vector<std::string> link_order_;
   std::vector<JointInfo> joints_;
+  std::map<std::string, size_t> joint_index_;  // joints_ by name
 };
 
 }  // namespace

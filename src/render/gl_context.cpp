@@ -84,27 +84,14 @@ class OsMesaContext final : public GlContext {
 
 std::unique_ptr<GlContext> CreateOsMesaContext() { return std::make_unique<OsMesaContext>(); }
 
-namespace {
-
-std::once_flag loading_started;
-std::future<void> loading;   // the background load, valid until FinishLoadingGl waits for it
-
-}  // namespace
-
-void StartLoadingGl() {
-  std::call_once(loading_started, [] {
-    loading = std::async(std::launch::async, [] {
-      try {
-        LoadOsMesa();
-      } catch (const Error&) {
-        // CreateOsMesaContext tries again and reports it
-      }
-    });
+std::future<void> StartLoadingGl() {
+  return std::async(std::launch::async, [] {
+    try {
+      LoadOsMesa();
+    } catch (const Error&) {
+      // CreateOsMesaContext tries again and reports it
+    }
   });
-}
-
-void FinishLoadingGl() {
-  if (loading.valid()) loading.wait();
 }
 
 }  // namespace urdfsnap::render

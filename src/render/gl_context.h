@@ -2,6 +2,7 @@
 // Rendering goes to framebuffer objects, so the context's own buffer is a 1x1 placeholder.
 #pragma once
 
+#include <future>
 #include <memory>
 
 namespace urdfsnap::render {
@@ -17,14 +18,9 @@ class GlContext {
 std::unique_ptr<GlContext> CreateOsMesaContext();
 
 // Starts loading libOSMesa (and LLVM behind it, ~0.1 s) on a background thread, so that a command
-// can read its model meanwhile; CreateOsMesaContext waits for it. Optional, and safe to call
-// more than once; a failure is reported by CreateOsMesaContext.
-void StartLoadingGl();
-
-// Waits for a load StartLoadingGl began (returns at once if none did). Call it before main returns:
-// exit() runs the atexit handlers that LLVM's static objects register while loading, LIFO, so a
-// load still running then would find LLVM torn down under it (seen as a hang in LLVM's pass
-// registry on fast error exits).
-void FinishLoadingGl();
+// can read its model meanwhile; CreateOsMesaContext waits for it. A failure is reported by
+// CreateOsMesaContext. Keep the returned future until the command ends, also when it fails:
+// its destructor waits for the load, and a process must not exit while dlopen runs constructors.
+[[nodiscard]] std::future<void> StartLoadingGl();
 
 }  // namespace urdfsnap::render

@@ -31,13 +31,11 @@ std::string ReadBytes(const std::string& path) {
 
 void CliTest::SetUp() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  dir_ = std::filesystem::temp_directory_path() /
-         ("urdfsnap_cli_" + std::string(info->test_suite_name()) + "_" + info->name());
-  std::filesystem::remove_all(dir_);
-  std::filesystem::create_directories(dir_);
+  folder_.emplace("cli_" + std::string(info->test_suite_name()) + "_" + info->name());
+  dir_ = folder_->path();
 }
 
-void CliTest::TearDown() { std::filesystem::remove_all(dir_); }
+void CliTest::TearDown() { folder_.reset(); }
 
 std::string CliTest::Write(const std::string& name, const std::string& text) const {
   std::ofstream(Path(name), std::ios::binary) << text;

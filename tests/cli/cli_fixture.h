@@ -2,9 +2,12 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "support/temp_folder.h"
 
 namespace urdfsnap::cli_test {
 
@@ -30,7 +33,8 @@ class CliTest : public ::testing::Test {
   std::string Path(const std::string& name) const { return (dir_ / name).string(); }
   // Writes `text` to the file `name` in the folder and returns its path.
   std::string Write(const std::string& name, const std::string& text) const;
-  std::filesystem::path dir_;
+  std::optional<test::TempFolder> folder_;
+  std::filesystem::path dir_;  // folder_'s path
 };
 
 }  // namespace urdfsnap::cli_test

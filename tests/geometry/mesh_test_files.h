@@ -5,7 +5,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
+
+#include "support/temp_folder.h"
 
 namespace urdfsnap::geometry {
 
@@ -13,12 +16,10 @@ class MeshFilesTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() /
-           ("urdfsnap_" + std::string(info->test_suite_name()) + "_" + info->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
+    folder_.emplace(std::string(info->test_suite_name()) + "_" + info->name());
+    dir_ = folder_->path();
   }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
+  void TearDown() override { folder_.reset(); }
 
   // Writes `bytes` to DIR/relative (creating folders) and returns the path.
   std::string Write(const std::string& relative, const std::string& bytes) const {
@@ -28,7 +29,8 @@ class MeshFilesTest : public ::testing::Test {
     return path.string();
   }
 
-  std::filesystem::path dir_;
+  std::optional<test::TempFolder> folder_;
+  std::filesystem::path dir_;  // folder_'s path
 };
 
 }  // namespace urdfsnap::geometry

@@ -164,6 +164,18 @@ const BadUrdfCase kBadUrdfCases[] = {
      "<joint name=\"j2\" type=\"continuous\"><parent link=\"a\"/><child link=\"c\"/>\n"
      "<mimic joint=\"j1\"/></joint>\n</robot>\n",
      "6: joint 'j1' mimics itself through a circle of mimic joints: 'j1' -> 'j2' -> 'j1'"},
+    {"circle of mimic joints behind a mimicking joint",
+     "<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"/>\n<link name=\"c\"/>\n"
+     "<link name=\"d\"/>\n"
+     "<joint name=\"j0\" type=\"continuous\"><parent link=\"a\"/><child link=\"b\"/>\n"
+     "<mimic joint=\"j2\"/></joint>\n"
+     "<joint name=\"j1\" type=\"continuous\"><parent link=\"a\"/><child link=\"c\"/>\n"
+     "<mimic joint=\"j3\"/></joint>\n"
+     "<joint name=\"j2\" type=\"continuous\"><parent link=\"a\"/><child link=\"d\"/>\n"
+     "<mimic joint=\"j1\"/></joint>\n"
+     "<joint name=\"j3\" type=\"continuous\"><parent link=\"b\"/><child link=\"e\"/>\n"
+     "<mimic joint=\"j2\"/></joint>\n<link name=\"e\"/>\n</robot>\n",
+     "9: joint 'j1' mimics itself through a circle of mimic joints: 'j1' -> 'j3' -> 'j2' -> 'j1'"},
 };
 
 class BadUrdfTest : public ::testing::TestWithParam<BadUrdfCase> {};
@@ -182,6 +194,24 @@ INSTANTIATE_TEST_SUITE_P(Cases, BadUrdfTest, ::testing::ValuesIn(kBadUrdfCases),
                          [](const ::testing::TestParamInfo<BadUrdfCase>& info) {
                            return test::TestName(info.param.what);
                          });
+
+// A 5,000-link chain whose joints each mimic the one before: the tree and mimic checks walk
+// each link and joint once (they were cubic in the chain's length, minutes for this robot).
+TEST(UrdfLoaderTest, DeepChainsOfLinksAndMimicJointsLoad) {
+  const int n = 5000;
+  std::string urdf = "<robot name=\"deep\">\n<link name=\"l0\"/>\n";
+  for (int i = 1; i < n; ++i) {
+    const std::string k = std::to_string(i), parent = std::to_string(i - 1);
+    urdf += "<link name=\"l" + k + "\"/><joint name=\"j" + k +
+            "\" type=\"continuous\"><parent link=\"l" + parent + "\"/><child link=\"l" + k + "\"/>" +
+            (i > 1 ? "<mimic joint=\"j" + parent + "\"/>" : "") + "</joint>\n";
+  }
+  urdf += "</robot>\n";
+  Warnings warnings;
+  const Robot robot = LoadRobot(urdf, "deep.urdf", warnings);
+  EXPECT_EQ(robot.links().size(), static_cast<size_t>(n));
+  EXPECT_EQ(robot.MovableJointNames().size(), 1u);  // the others mimic it
+}
 
 }  // namespace
 }  // namespace urdfsnap::model

@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "common/error.h"
 #include "model/forward_kinematics.h"
 #include "render/scene_builder.h"
+#include "support/temp_folder.h"
 
 namespace urdfsnap::render {
 namespace {
@@ -36,15 +38,14 @@ std::string TwoMeshLinks(const std::string& base_uri, const std::string& arm_uri
 class SceneMeshTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("urdfsnap_scene_mesh_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
+    folder_.emplace("scene_mesh_" +
+                    std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = folder_->path();
     fs::create_directories(dir_ / "meshes");
     std::ofstream(dir_ / "meshes/tri.stl") << kAsciiStl;
     options_.model_file = (dir_ / "robot.urdf").string();
   }
-  void TearDown() override { fs::remove_all(dir_); }
+  void TearDown() override { folder_.reset(); }
 
   Scene Build(const std::string& uri) { return Build(uri, uri); }
   Scene Build(const std::string& base_uri, const std::string& arm_uri) {
@@ -66,7 +67,8 @@ class SceneMeshTest : public ::testing::Test {
                          [&](const std::string& m) { return m.find(needle) != std::string::npos; });
   }
 
-  fs::path dir_;
+  std::optional<test::TempFolder> folder_;
+  fs::path dir_;  // folder_'s path
   SceneOptions options_;
   Warnings warnings_;
 };
