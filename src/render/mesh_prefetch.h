@@ -1,5 +1,7 @@
 // Loads the mesh files a scene will draw on all cores before the scene builder asks for them one
-// by one (geometry::LoadMeshFile caches each file, so the builder then finds them loaded).
+// by one (geometry::LoadMeshFile caches each file, so the builder then finds them loaded). Call
+// it before building a robot's first scene; after that its files are cached and it only costs
+// the URI lookups.
 #pragma once
 
 #include "model/robot.h"

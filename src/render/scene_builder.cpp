@@ -6,7 +6,6 @@
 #include "geometry/mesh_file.h"
 #include "geometry/mesh_uri.h"
 #include "render/link_colours.h"
-#include "render/mesh_prefetch.h"
 #include "render/primitive_meshes.h"
 #include "render/texture_file.h"
 #include "render/tf_markers.h"
@@ -171,7 +170,6 @@ Scene BuildScene(const model::Robot& robot, const std::vector<Eigen::Isometry3d>
                   robot.name() + "' (links: " + names + ")");
     }
   }
-  PrefetchMeshFiles(robot, options);
   const Eigen::Isometry3d X_FR = X_RL[fixed].inverse();
   std::vector<Eigen::Isometry3d> X_FL(X_RL.size());
   for (size_t i = 0; i < X_RL.size(); ++i) X_FL[i] = X_FR * X_RL[i];

@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "model/forward_kinematics.h"
+#include "render/mesh_prefetch.h"
 #include "render/rviz_config.h"
 #include "render/scene_builder.h"
 #include "render/view_fitting.h"
@@ -104,6 +105,7 @@ image::Image RenderSession::Render(const RenderRequest& r, const OptionLabel& la
   given.insert(given.end(), r.joints.begin(), r.joints.end());
   const std::vector<double> positions =
       model::ResolveJointPositions(robot, given, !r.no_clamp, warnings);
+  render::PrefetchMeshFiles(robot, config.scene);  // all cores on the first render of a model
   const render::Scene scene =
       render::BuildScene(robot, model::ComputeLinkPoses(robot, positions), config.scene, warnings);
   const double aspect = static_cast<double>(size.width) / size.height;
