@@ -2,6 +2,8 @@
 // with an exit status other than 0 (urdfsnap::Error ends with status 2; see main.cpp).
 #pragma once
 
+#include <string_view>
+
 #include <CLI/CLI.hpp>
 
 #include "common/warnings.h"
@@ -14,8 +16,21 @@ struct CommandExit {
   int code;
 };
 
-// Prints each warning to stderr as "urdfsnap: warning: ...".
+// --strict, set by main.cpp while the command line is parsed (before any command runs).
+bool& StrictWarnings();
+
+// Prints each warning to stderr as "urdfsnap: warning: ...". Under --strict the last one is thrown
+// as urdfsnap::Error instead (the others are printed first), so the command ends with status 2
+// before it writes anything.
 void PrintWarnings(const Warnings& warnings);
+
+// Prints each warning as a warning whatever --strict says: for the warnings that led up to an
+// error, which may explain it.
+void PrintWarningsBeforeError(const Warnings& warnings);
+
+// Writes `text` to stdout and flushes it; throws urdfsnap::Error when that fails (a closed pipe,
+// a full disk).
+void WriteToStdout(std::string_view text);
 
 // Each subcommand file defines one of these; main.cpp calls them all.
 void AddRenderCommand(CLI::App& app);

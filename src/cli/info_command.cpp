@@ -1,5 +1,4 @@
 // `urdfsnap info`: the robot's links, joints (type, axis, limits, mimic) and tree.
-#include <cstdio>
 #include <memory>
 
 #include "cli/command.h"
@@ -17,7 +16,7 @@ void AddInfoCommand(CLI::App& app) {
     Warnings warnings;
     const model::Robot robot = request::LoadModel(model->ToRequest(), warnings);
     PrintWarnings(warnings);
-    std::fputs(model::DescribeRobot(robot).c_str(), stdout);
+    WriteToStdout(model::DescribeRobot(robot));
   });
 }
 

@@ -2,6 +2,7 @@
 // statuses: 0 success, 2 bad input or usage ("urdfsnap: error: ..."), or a command's CommandExit.
 #include <cstdio>
 #include <exception>
+#include <new>
 
 #include "cli/command.h"
 #include "common/error.h"
@@ -10,6 +11,11 @@ int main(int argc, char** argv) {
   CLI::App app{"urdfsnap: RViz-like PNG images of URDF/xacro robots, headless", "urdfsnap"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "urdfsnap 0.1.0");
+  app.add_flag("--strict", urdfsnap::cli::StrictWarnings(),
+               "treat warnings as errors: print the warning as an error, write nothing, exit 2 "
+               "(before or after the command)");
+  // options the subcommands do not know (--strict) are passed on to this level
+  app.fallthrough();
   urdfsnap::cli::AddRenderCommand(app);
   urdfsnap::cli::AddInfoCommand(app);
   urdfsnap::cli::AddXacroCommand(app);
@@ -30,6 +36,9 @@ int main(int argc, char** argv) {
     return e.code;
   } catch (const urdfsnap::Error& e) {
     std::fprintf(stderr, "urdfsnap: error: %s\n", e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "urdfsnap: error: out of memory\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "urdfsnap: error: %s\n", e.what());

@@ -32,8 +32,14 @@ void Run(RenderOptions& o) {
   for (const auto& word : o.joint_words) model::ParseJointAssignment(word, o.request.joints);
   Warnings warnings;
   request::RenderSession session;
-  const image::Image frame = session.Render(
-      o.request, [](std::string_view name) { return "--" + std::string(name); }, warnings);
+  image::Image frame;
+  try {
+    frame = session.Render(
+        o.request, [](std::string_view name) { return "--" + std::string(name); }, warnings);
+  } catch (...) {
+    PrintWarningsBeforeError(warnings);
+    throw;
+  }
   PrintWarnings(warnings);
   const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
   if (o.output.empty()) std::filesystem::create_directories("output");

@@ -3,17 +3,15 @@
 // dependencies) as it does and exiting 2 on errors.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <memory>
 #include <string>
+#include <system_error>
 #include <vector>
-
-#include <unistd.h>
 
 #include "cli/command.h"
 #include "common/error.h"
 #include "common/warnings.h"
+#include "image/atomic_file.h"
 #include "xacro/xacro.h"
 
 namespace urdfsnap::cli {
@@ -29,25 +27,6 @@ struct XacroFlags {
   bool deps = false;
   bool quiet = false;
 };
-
-// Writes `text` to `path` through a temporary file beside it, renamed into place.
-void WriteAtomically(const std::string& path, const std::string& text) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  std::error_code ec;
-  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  const fs::path temp = target.string() + ".tmp." + std::to_string(getpid());
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    if (!out.flush()) throw Error("cannot write '" + temp.string() + "'");
-  }
-  fs::rename(temp, target, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw Error("cannot write '" + path + "'");
-  }
-}
 
 void Run(const XacroFlags& flags) {
   xacro::Options options;
@@ -70,10 +49,10 @@ void Run(const XacroFlags& flags) {
   try {
     result = xacro::ExpandFile(flags.file, options, warnings);
   } catch (...) {
-    for (const std::string& w : warnings.messages()) std::fprintf(stderr, "urdfsnap: warning: %s\n", w.c_str());
+    PrintWarningsBeforeError(warnings);
     throw;
   }
-  for (const std::string& w : warnings.messages()) std::fprintf(stderr, "urdfsnap: warning: %s\n", w.c_str());
+  PrintWarnings(warnings);
   std::string text;
   if (flags.deps) {
     for (const std::string& d : result.dependencies) text += (text.empty() ? "" : " ") + d;
@@ -81,10 +60,13 @@ void Run(const XacroFlags& flags) {
     text = result.xml;
   }
   if (flags.output.empty()) {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    std::fflush(stdout);
+    WriteToStdout(text);
   } else {
-    WriteAtomically(flags.output, text);
+    // ROS's xacro creates the output's folder too
+    const std::filesystem::path parent = std::filesystem::path(flags.output).parent_path();
+    std::error_code ignored;  // a folder that cannot be made shows as the write error below
+    if (!parent.empty()) std::filesystem::create_directories(parent, ignored);
+    image::WriteFileAtomically(flags.output, text);
   }
 }
 

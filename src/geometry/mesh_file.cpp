@@ -102,6 +102,10 @@ struct Builder {
   bool is_stl;
   MeshFile& out;
 
+  [[noreturn]] void Fail(const std::string& message) const {
+    throw Error(SourceLocation{path.string()}, message);
+  }
+
   // buildMesh() in mesh_loader.cpp: a node's meshes are placed by the node's transform times
   // those of its ancestors except the root ("Don't convert to y-up orientation, which is what the
   // root node in Assimp does"), so the root's up-axis rotation (and its unit scale, applied again
@@ -117,8 +121,11 @@ struct Builder {
     const Eigen::Matrix3f linear = X.topLeftCorner<3, 3>();
     const Eigen::Vector3f translation = X.topRightCorner<3, 1>();
     const Eigen::Matrix3f normal_matrix = linear.inverse().transpose();
-    for (unsigned i = 0; i < node.mNumMeshes; ++i)
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+      // RViz's flags leave out ValidateDataStructure, so indices are checked here
+      if (node.mMeshes[i] >= scene.mNumMeshes) Fail("a node refers to a mesh that does not exist");
       AddMesh(*scene.mMeshes[node.mMeshes[i]], linear, translation, normal_matrix);
+    }
     const aiMatrix4x4 below = node.mParent ? transform : aiMatrix4x4();
     for (unsigned i = 0; i < node.mNumChildren; ++i) AddNode(*node.mChildren[i], below);
   }
@@ -127,16 +134,16 @@ struct Builder {
                const Eigen::Matrix3f& normal_matrix) {
     // SortByPType leaves point and line meshes apart; RViz would draw their indices as triangles
     if (!(in.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) return;
-    if (!in.HasNormals())
-      throw Error(SourceLocation{path.string()},
-                  "mesh '" + std::string(in.mName.C_Str()) + "' has no normals after import");
+    if (!in.HasNormals()) Fail("mesh '" + std::string(in.mName.C_Str()) + "' has no normals after import");
     out.triangle_count += in.mNumFaces;
     if (out.triangle_count > kMaxMeshTriangles) {
-      throw Error(SourceLocation{path.string()},
-                  "more than " + std::to_string(kMaxMeshTriangles) + " triangles (the limit)");
+      Fail("more than " + std::to_string(kMaxMeshTriangles) + " triangles (the limit)");
     }
     MeshPart part;
     part.takes_urdf_material = is_stl;
+    if (!is_stl && in.mMaterialIndex >= scene.mNumMaterials) {
+      Fail("mesh '" + std::string(in.mName.C_Str()) + "' refers to a material that does not exist");
+    }
     if (!is_stl) {
       part.diffuse = Diffuse(*scene.mMaterials[in.mMaterialIndex]);
       part.emissive = Emissive(*scene.mMaterials[in.mMaterialIndex]);
@@ -156,8 +163,14 @@ struct Builder {
     mesh.indices.reserve(3 * std::size_t{in.mNumFaces});
     for (unsigned f = 0; f < in.mNumFaces; ++f) {
       const aiFace& face = in.mFaces[f];
-      if (face.mNumIndices == 3)
-        mesh.indices.insert(mesh.indices.end(), face.mIndices, face.mIndices + 3);
+      if (face.mNumIndices != 3) continue;
+      for (int k = 0; k < 3; ++k) {
+        if (face.mIndices[k] >= in.mNumVertices) {
+          Fail("mesh '" + std::string(in.mName.C_Str()) + "' has a triangle with vertex index " +
+               std::to_string(face.mIndices[k]) + " of " + std::to_string(in.mNumVertices));
+        }
+      }
+      mesh.indices.insert(mesh.indices.end(), face.mIndices, face.mIndices + 3);
     }
     out.parts.push_back(std::move(part));
   }

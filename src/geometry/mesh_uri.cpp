@@ -22,6 +22,10 @@ constexpr std::string_view kFileScheme = "file://";
 std::string Existing(const fs::path& file, const std::string& uri, const std::string& searched) {
   std::error_code ec;
   if (fs::is_regular_file(file, ec)) return fs::absolute(file, ec).lexically_normal().string();
+  // a folder, a device such as /dev/zero or a pipe is no mesh (and could be read forever)
+  if (fs::exists(file, ec)) {
+    throw Error("mesh '" + uri + "': " + file.string() + " is not a regular file");
+  }
   throw Error("mesh '" + uri + "' not found, searched: " + searched);
 }
 

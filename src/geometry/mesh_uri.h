@@ -14,8 +14,9 @@ namespace urdfsnap::geometry {
 //   file:///ABS        /ABS;
 //   /ABS               as is;
 //   REL                relative to the folder of `model_file` (the working folder when it is "").
-// Throws urdfsnap::Error naming the URI and every place searched when the file does not exist, and
-// for other schemes (http://, ...); the caller adds where the URI was written.
+// Throws urdfsnap::Error naming the URI and every place searched when the file does not exist (or
+// is not a regular file), and for other schemes (http://, ...); the caller adds where the URI was
+// written.
 std::string ResolveMeshUri(const std::string& uri, const std::string& model_file,
                            const std::map<std::string, std::string>& packages);
 

@@ -3,16 +3,11 @@
 #include "image/png_reader.h"
 
 #include <array>
-#include <cerrno>
-#include <climits>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
-#include <system_error>
-#include <vector>
 
 #include "common/error.h"
+#include "common/file_reading.h"
 
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
@@ -28,49 +23,78 @@ namespace {
 
 static_assert(STBI_MAX_DIMENSIONS == kMaxImageSide);
 
-std::vector<std::uint8_t> ReadFileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot read: " + std::system_category().message(errno));
-  std::vector<std::uint8_t> bytes(std::istreambuf_iterator<char>(in), {});
-  if (in.bad()) throw Error(path + ": cannot read: " + std::system_category().message(errno));
-  return bytes;
-}
-
 std::uint32_t BigEndian32(const std::uint8_t* p) {
   return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
 }
 
+// Bytes per pixel stb holds while decoding a PNG of this IHDR colour type and bit depth: palette
+// images are expanded to RGBA, 16-bit samples kept at 16 bits until the end; 0 for a combination
+// the PNG specification does not allow.
+int DecodedBytesPerPixel(int colour_type, int bit_depth) {
+  const int sample_bytes = bit_depth == 16 ? 2 : 1;
+  switch (colour_type) {
+    case 0: return sample_bytes;      // grey
+    case 2: return 3 * sample_bytes;  // RGB
+    case 3: return 4;                 // palette, expanded
+    case 4: return 2 * sample_bytes;  // grey + alpha
+    case 6: return 4 * sample_bytes;  // RGBA
+    default: return 0;
+  }
+}
+
 // A PNG starts with an 8-byte signature and then the IHDR chunk: length 13, "IHDR", width and
-// height as big-endian 32-bit numbers. Refuses what is not a PNG or is too large to decode.
-void CheckPngHeader(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+// height as big-endian 32-bit numbers, bit depth, colour type. Refuses what is not a PNG or would
+// need more than kMaxImageSide pixels a side or kMaxDecodedBytes of decoded samples, before stb
+// allocates anything.
+void CheckPngHeader(const std::string& path, const std::uint8_t* bytes, std::size_t size) {
   static constexpr std::array<std::uint8_t, 8> kSignature = {137, 80, 78, 71, 13, 10, 26, 10};
-  if (bytes.size() < kSignature.size() ||
-      std::memcmp(bytes.data(), kSignature.data(), kSignature.size()) != 0) {
+  static constexpr std::uint64_t kMaxDecodedBytes = std::uint64_t{kMaxImageSide} * kMaxImageSide * 4;
+  if (size < kSignature.size() || std::memcmp(bytes, kSignature.data(), kSignature.size()) != 0) {
     throw Error(path + ": not a PNG file (no PNG signature)");
   }
-  if (bytes.size() < 24 || BigEndian32(&bytes[8]) != 13 || std::memcmp(&bytes[12], "IHDR", 4)) {
+  if (size < 26 || BigEndian32(&bytes[8]) != 13 || std::memcmp(&bytes[12], "IHDR", 4)) {
     throw Error(path + ": not a PNG file (no IHDR chunk after the signature)");
   }
   const std::uint32_t width = BigEndian32(&bytes[16]);
   const std::uint32_t height = BigEndian32(&bytes[20]);
+  const std::string size_text = std::to_string(width) + "x" + std::to_string(height);
   if (width > kMaxImageSide || height > kMaxImageSide) {
-    throw Error(path + ": PNG is " + std::to_string(width) + "x" + std::to_string(height) +
-                " pixels; at most " + std::to_string(kMaxImageSide) + "x" +
-                std::to_string(kMaxImageSide) + " is read");
+    throw Error(path + ": PNG is " + size_text + " pixels; at most " +
+                std::to_string(kMaxImageSide) + "x" + std::to_string(kMaxImageSide) + " is read");
+  }
+  const int bytes_per_pixel = DecodedBytesPerPixel(bytes[25], bytes[24]);
+  if (bytes_per_pixel == 0) {
+    throw Error(path + ": not a valid PNG (colour type " + std::to_string(bytes[25]) +
+                " with bit depth " + std::to_string(bytes[24]) + ")");
+  }
+  if (std::uint64_t{width} * height * bytes_per_pixel > kMaxDecodedBytes) {
+    throw Error(path + ": PNG of " + size_text + " pixels at " + std::to_string(bytes_per_pixel) +
+                " bytes per pixel is too large to decode (limit " +
+                std::to_string(kMaxDecodedBytes >> 20) + " MiB of samples)");
   }
 }
 
 }  // namespace
 
 Image ReadPng(const std::string& path) {
-  const std::vector<std::uint8_t> bytes = ReadFileBytes(path);
-  CheckPngHeader(path, bytes);
-  if (bytes.size() > INT_MAX) throw Error(path + ": PNG file over 2 GB");
+  std::string bytes;
+  try {
+    bytes = ReadFileBounded(path, kMaxPngFileBytes);
+  } catch (const FileReadError& e) {
+    throw Error(path + ": cannot read: " + e.what());
+  }
+  return DecodePng(bytes, path);
+}
+
+Image DecodePng(std::string_view bytes, const std::string& path) {
+  const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
+  CheckPngHeader(path, data, bytes.size());
+  if (bytes.size() > kMaxPngFileBytes) throw Error(path + ": PNG file over 1 GiB");
   Image image;
   int channels_in_file = 0;
   // asking for 3 channels makes stb expand grey, drop alpha and reduce 16-bit samples
-  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()),
-                                          &image.width, &image.height, &channels_in_file, 3);
+  stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(bytes.size()), &image.width,
+                                          &image.height, &channels_in_file, 3);
   if (pixels == nullptr) {
     throw Error(path + ": cannot decode PNG: " + stbi_failure_reason());
   }

@@ -1,7 +1,9 @@
 // PNG decoding into RGB images, for golden-image tests and the compare command.
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <string_view>
 
 #include "image/image.h"
 
@@ -12,5 +14,11 @@ namespace urdfsnap::image {
 // file cannot be read, is not a PNG, claims a width or height over kMaxImageSide (checked in the
 // header before anything is decoded or allocated), or fails to decode.
 Image ReadPng(const std::string& path);
+
+// ReadPng for the bytes of a file already read; `path` names it in messages.
+Image DecodePng(std::string_view bytes, const std::string& path);
+
+// The largest PNG file ReadPng reads: a 16384x16384 RGBA image that does not compress at all.
+inline constexpr std::size_t kMaxPngFileBytes = std::size_t{1} << 30;
 
 }  // namespace urdfsnap::image

@@ -1,13 +1,12 @@
 // ReadJointFile: YAML (yaml-cpp) or JSON (nlohmann_json) joint files, both read into the same
 // list of top-level entries (in file order) and then interpreted as a {name: value} map or a JointState.
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include "common/error.h"
+#include "common/file_reading.h"
 #include "model/joint_values.h"
 #include "model/number_text.h"
 
@@ -32,11 +31,11 @@ struct Entry {
 };
 
 std::string ReadText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(SourceLocation{path, 0}, "cannot read the joint file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  try {
+    return ReadFileBounded(path);
+  } catch (const FileReadError& e) {
+    throw Error(SourceLocation{path, 0}, std::string("cannot read the joint file: ") + e.what());
+  }
 }
 
 Scalar ScalarFromText(const std::string& text, int line) {
@@ -176,8 +175,9 @@ bool EndsWith(const std::string& text, const std::string& suffix) {
 
 }  // namespace
 
-NamedValues ReadJointFile(const std::string& path) {
-  const std::string text = ReadText(path);
+NamedValues ReadJointFile(const std::string& path) { return ParseJointFile(ReadText(path), path); }
+
+NamedValues ParseJointFile(const std::string& text, const std::string& path) {
   return Interpret(EndsWith(path, ".json") ? ReadJsonEntries(text, path)
                                            : ReadYamlEntries(text, path),
                    path);

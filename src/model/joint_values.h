@@ -24,6 +24,9 @@ void ParseJointAssignment(const std::string& text, NamedValues& out);
 // Throws Error "path:line: ..." when the file cannot be read or parsed or has the wrong shape.
 NamedValues ReadJointFile(const std::string& path);
 
+// ReadJointFile for the text of a file already read; `path` picks the format and names the file.
+NamedValues ParseJointFile(const std::string& text, const std::string& path);
+
 // One position per robot.joints() index (radians or metres), as joint_state_publisher would
 // publish them:
 // - a joint not in `given` takes 0, or the middle of its limits when 0 is outside them;

@@ -13,7 +13,7 @@ bool ParseNumbers(std::string_view text, int count, double* out) {
   while (true) {
     while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
     if (i == text.size()) break;
-    if (text[i] == '+') ++i;
+    if (text[i] == '+' && i + 1 < text.size() && text[i + 1] != '-') ++i;
     double value = 0;
     const auto [end, error] = std::from_chars(text.data() + i, text.data() + text.size(), value);
     if (error != std::errc() || !std::isfinite(value) || parsed == count) return false;

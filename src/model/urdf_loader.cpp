@@ -56,6 +56,17 @@ const tinyxml2::XMLElement& ParseRobotElement(tinyxml2::XMLDocument& doc, const 
                 std::string("malformed XML (") + doc.ErrorName() + ")" +
                     (colon == std::string::npos ? "" : ": " + detail.substr(colon + 2)));
   }
+  // tinyxml2 skips a DOCTYPE, but urdfdom's TinyXML stops at the "]>" of an internal subset and
+  // finds no robot; entities declared there would not be expanded either
+  for (const tinyxml2::XMLNode* node = doc.FirstChild(); node; node = node->NextSibling()) {
+    const tinyxml2::XMLUnknown* unknown = node->ToUnknown();
+    const std::string_view text = unknown ? unknown->Value() : "";
+    if (text.substr(0, 7) == "DOCTYPE" && text.find('[') != std::string_view::npos) {
+      throw Error(SourceLocation{source, node->GetLineNum()},
+                  "<!DOCTYPE> with declarations ([...]: entities, elements) is not supported by "
+                  "urdfdom; expand the entities, or use xacro");
+    }
+  }
   const tinyxml2::XMLElement* robot = doc.RootElement();
   if (!robot || std::string_view(robot->Name()) != "robot") {
     throw Error(SourceLocation{source, robot ? robot->GetLineNum() : 0},

@@ -18,12 +18,16 @@ namespace {
 
 using tinyxml2::XMLElement;
 
+// What the numbers of an attribute may be besides finite.
+enum class Range { kAny, kPositive, kNonZero };
+
 // An attribute urdfdom reads: `count` numbers, or text when count is 0.
 struct AttributeRule {
   const char* element;
   const char* attribute;
   int count;
   bool required;
+  Range range = Range::kAny;
 };
 
 // What urdfdom 3 (link.cpp, joint.cpp, model.cpp, pose.cpp) parses and which of it it requires
@@ -33,11 +37,13 @@ constexpr AttributeRule kAttributeRules[] = {
     {"origin", "xyz", 3, false},
     {"origin", "rpy", 3, false},
     {"axis", "xyz", 3, false},
-    {"box", "size", 3, true},
-    {"cylinder", "radius", 1, true},
-    {"cylinder", "length", 1, true},
-    {"sphere", "radius", 1, true},
-    {"mesh", "scale", 3, false},
+    // shapes of no size draw nothing in RViz (Ogre scales a unit shape by them); a negative mesh
+    // scale mirrors the mesh, which RViz draws
+    {"box", "size", 3, true, Range::kPositive},
+    {"cylinder", "radius", 1, true, Range::kPositive},
+    {"cylinder", "length", 1, true, Range::kPositive},
+    {"sphere", "radius", 1, true, Range::kPositive},
+    {"mesh", "scale", 3, false, Range::kNonZero},
     {"color", "rgba", 4, false},
     {"mass", "value", 1, true},
     {"inertia", "ixx", 1, false},
@@ -171,15 +177,31 @@ class Validator {
         if (rule.required) {
           Fail(e, owner + ": <" + rule.element + "> has no " + rule.attribute + " attribute");
         }
-      } else if (rule.count > 0 && !ParseNumbers(value, rule.count, nullptr)) {
-        Fail(e, owner + ": <" + rule.element + " " + rule.attribute + "=\"" + value +
-                    "\">: expected " + std::to_string(rule.count) +
-                    (rule.count == 1 ? " number" : " numbers"));
+      } else if (rule.count > 0) {
+        CheckNumbers(e, owner, rule, value);
       }
     }
     for (const XMLElement* child = e.FirstChildElement(); child;
          child = child->NextSiblingElement()) {
       CheckAttributes(*child, owner);
+    }
+  }
+
+  void CheckNumbers(const XMLElement& e, const std::string& owner, const AttributeRule& rule,
+                    const char* value) const {
+    const std::string what = owner + ": <" + rule.element + " " + rule.attribute + "=\"" + value + "\">";
+    double numbers[4];
+    if (!ParseNumbers(value, rule.count, numbers)) {
+      Fail(e, what + ": expected " + std::to_string(rule.count) +
+                  (rule.count == 1 ? " finite number" : " finite numbers"));
+    }
+    for (int i = 0; i < rule.count; ++i) {
+      if (rule.range == Range::kPositive && numbers[i] <= 0) {
+        Fail(e, what + ": expected " + (rule.count == 1 ? "a size" : "sizes") + " above 0");
+      }
+      if (rule.range == Range::kNonZero && numbers[i] == 0) {
+        Fail(e, what + ": a scale of 0 flattens the mesh to nothing");
+      }
     }
   }
 

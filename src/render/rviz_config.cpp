@@ -15,6 +15,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "common/error.h"
+#include "common/file_reading.h"
 #include "model/number_text.h"
 
 namespace urdfsnap::render {
@@ -364,11 +365,9 @@ void ReadView(const Section& manager, OrbitView& view, Warnings& warnings) {
   if (invert_z) current->Warn("Invert Z Axis", "is true; urdfsnap keeps +Z up", warnings);
 }
 
-YAML::Node LoadYaml(const std::string& path) {
+YAML::Node LoadYaml(const std::string& text, const std::string& path) {
   try {
-    return YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw Error(SourceLocation{path, 0}, "cannot read the .rviz file");
+    return YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw Error(SourceLocation{path, e.mark.line + 1}, "bad YAML: " + e.msg);
   }
@@ -377,7 +376,18 @@ YAML::Node LoadYaml(const std::string& path) {
 }  // namespace
 
 RvizConfig ReadRvizConfig(const std::string& path, const RvizConfig& defaults, Warnings& warnings) {
-  const YAML::Node root = LoadYaml(path);
+  std::string text;
+  try {
+    text = ReadFileBounded(path);
+  } catch (const FileReadError& e) {
+    throw Error(SourceLocation{path, 0}, std::string("cannot read the .rviz file: ") + e.what());
+  }
+  return ParseRvizConfig(text, path, defaults, warnings);
+}
+
+RvizConfig ParseRvizConfig(const std::string& text, const std::string& path,
+                           const RvizConfig& defaults, Warnings& warnings) {
+  const YAML::Node root = LoadYaml(text, path);
   if (!root.IsMap() || !root["Visualization Manager"].IsDefined()) {
     throw Error(SourceLocation{path, 0},
                 "expected an .rviz file with a 'Visualization Manager' section");

@@ -31,4 +31,8 @@ struct RvizConfig {
 // Throws urdfsnap::Error "FILE:LINE: ..." for an unreadable file, bad YAML or a bad value.
 RvizConfig ReadRvizConfig(const std::string& path, const RvizConfig& defaults, Warnings& warnings);
 
+// ReadRvizConfig for the text of a file already read; `path` names it in messages.
+RvizConfig ParseRvizConfig(const std::string& text, const std::string& path,
+                           const RvizConfig& defaults, Warnings& warnings);
+
 }  // namespace urdfsnap::render

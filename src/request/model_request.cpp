@@ -1,10 +1,8 @@
 // Loading a ModelRequest: file reading, xacro detection and expansion, URDF parsing.
 #include "request/model_request.h"
 
-#include <fstream>
-#include <sstream>
-
 #include "common/error.h"
+#include "common/file_reading.h"
 #include "xacro/xacro.h"
 
 namespace urdfsnap::request {
@@ -12,11 +10,11 @@ namespace urdfsnap::request {
 namespace {
 
 std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open the model file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  try {
+    return ReadFileBounded(path);
+  } catch (const FileReadError& e) {
+    throw Error(SourceLocation{path}, std::string("cannot read the model file: ") + e.what());
+  }
 }
 
 bool EndsWith(const std::string& s, const std::string& suffix) {

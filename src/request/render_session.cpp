@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "model/forward_kinematics.h"
+#include "model/number_text.h"
 #include "render/mesh_prefetch.h"
 #include "render/rviz_config.h"
 #include "render/scene_builder.h"
@@ -19,8 +20,8 @@ namespace {
 double ParseInRange(const std::string& text, const std::string& option, double low, double high) {
   const double value = ParseFinite(text, option);
   if (value < low || value > high) {
-    throw Error(option + " '" + text + "': expected a value from " + std::to_string(low) + " to " +
-                std::to_string(high));
+    throw Error(option + " '" + text + "': expected a value from " + model::FormatNumber(low) +
+                " to " + model::FormatNumber(high));
   }
   return value;
 }

@@ -433,7 +433,9 @@ void Processor::ProcessInclude(Node* node, const Macros& macros, const Symbols& 
     } catch (const IoError& e) {
       if (optional) continue;
       current_ = node;
-      throw EvalError(std::string(e.what()) + " [Errno 2] No such file or directory: '" + f + "'");
+      // xacro's wording: "No such file or directory: x.xacro [Errno 2] No such file or directory: 'x.xacro'"
+      throw EvalError(std::string(e.what()) +
+                      (e.errno_value ? " " + PythonOsErrorText(e.errno_value, e.reason, f) : ""));
     }
     file_stack_.push_back({index, include_line});
     Node* root = document->FirstChildElement();
@@ -727,8 +729,10 @@ Result Processor::Run(const std::string& path) {
     return result;
   } catch (const EvalError& e) {
     throw Error(Located(e.what()));
+  } catch (const DocumentSizeError& e) {
+    throw Error(Located(e.what()));
   } catch (const Error& e) {
-    // already located (XML syntax, size limit): add the macro and include chain
+    // already located (XML syntax, element depth): add the macro and include chain
     const Node* saved = current_;
     current_ = nullptr;
     std::string message = Located(e.what());

@@ -6,7 +6,6 @@
 #include <sys/mman.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +13,7 @@
 #include <new>
 
 #include "common/error.h"
+#include "common/file_reading.h"
 
 namespace urdfsnap::xacro {
 
@@ -122,7 +122,7 @@ void NodePool::Release(Node* node) {
 void NodePool::Account(size_t bytes) {
   bytes_ += bytes;
   if (bytes_ > max_bytes_) {
-    throw Error("expanded document exceeds the size limit of " + std::to_string(max_bytes_ >> 20) +
+    throw DocumentSizeError("expanded document exceeds the size limit of " + std::to_string(max_bytes_ >> 20) +
                 " MiB (runaway macro expansion?)");
   }
 }
@@ -303,13 +303,18 @@ struct TreeBuilder {
 
 }  // namespace
 
+std::string PythonOsErrorText(int errno_value, const std::string& reason, const std::string& path) {
+  const std::string number = errno_value ? "[Errno " + std::to_string(errno_value) + "] " : "";
+  return number + reason + ": '" + path + "'";
+}
+
 Node* ParseXmlFile(const std::string& path, int file_index, NodePool& pool) {
-  std::FILE* in = std::fopen(path.c_str(), "rb");
-  if (!in) throw IoError(std::string(std::strerror(errno)) + ": " + path);
   std::string text;
-  char chunk[65536];
-  for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, in)) > 0;) text.append(chunk, n);
-  std::fclose(in);
+  try {
+    text = ReadFileBounded(path);
+  } catch (const FileReadError& e) {
+    throw IoError(e.what(), path, e.errno_value);
+  }
 
   Node* document = pool.Allocate(Node::Type::kDocument);
   document->file = file_index;

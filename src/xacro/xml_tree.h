@@ -37,7 +37,7 @@ struct Node {
   Node* NextSiblingElement() const;
 };
 
-// Owns every node of one run and counts their size; Allocate throws urdfsnap::Error once the
+// Owns every node of one run and counts their size; Allocate throws DocumentSizeError once the
 // expanded document would exceed `max_bytes`.
 class NodePool {
  public:
@@ -84,6 +84,20 @@ void ReplaceNode(Node* node, Node* by, bool content_only);
 
 // A file that cannot be read; what() is "No such file or directory: PATH" (strerror: path).
 class IoError : public std::runtime_error {
+ public:
+  // what() is "REASON: PATH" ("No such file or directory: robot.xacro").
+  IoError(const std::string& reason, const std::string& path, int errno_value)
+      : std::runtime_error(reason + ": " + path), reason(reason), errno_value(errno_value) {}
+  std::string reason;
+  int errno_value;  // 0 for urdfsnap's file size limit
+};
+
+// Python's text for an OSError: "[Errno 2] No such file or directory: 'x.yaml'"; just
+// "REASON: 'PATH'" without an errno (urdfsnap's size limit).
+std::string PythonOsErrorText(int errno_value, const std::string& reason, const std::string& path);
+
+// The nodes and text of all documents grew past NodePool's limit; the processor adds where.
+class DocumentSizeError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

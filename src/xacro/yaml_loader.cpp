@@ -6,7 +6,9 @@
 #include <cmath>
 #include <regex>
 
+#include "common/file_reading.h"
 #include "xacro/number_format.h"
+#include "xacro/xml_tree.h"
 
 namespace urdfsnap::xacro {
 
@@ -114,11 +116,15 @@ Value Convert(const YAML::Node& node, const std::function<Value(const std::strin
 }  // namespace
 
 Value LoadYaml(const std::string& path, const std::function<Value(const std::string&)>& evaluate) {
+  std::string text;
+  try {
+    text = ReadFileBounded(path);
+  } catch (const FileReadError& e) {
+    throw EvalError(PythonOsErrorText(e.errno_value, e.what(), path));
+  }
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw EvalError("[Errno 2] No such file or directory: '" + path + "'");
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw EvalError(path + ": invalid YAML: " + e.what());
   }

@@ -30,16 +30,16 @@ void AppendChunk(Bytes& out, const char* type, const Bytes& data) {
   AppendBigEndian32(out, std::uint32_t(crc32(0, body.data(), uInt(body.size()))));
 }
 
-// A PNG made by hand, independent of the code under test: colour type 0 grey, 2 RGB, 6 RGBA; 8-bit
-// samples given row by row (top first) without filter bytes. An empty `samples` leaves out the
-// image data, for header-only files.
+// A PNG made by hand, independent of the code under test: colour type 0 grey, 2 RGB, 6 RGBA;
+// samples of `bit_depth` bits given row by row (top first) without filter bytes. An empty
+// `samples` leaves out the image data, for header-only files.
 Bytes HandMadePng(std::uint32_t width, std::uint32_t height, int colour_type,
-                  const Bytes& samples) {
+                  const Bytes& samples, int bit_depth = 8) {
   Bytes png = {137, 80, 78, 71, 13, 10, 26, 10};
   Bytes header;
   AppendBigEndian32(header, width);
   AppendBigEndian32(header, height);
-  header.insert(header.end(), {8, std::uint8_t(colour_type), 0, 0, 0});
+  header.insert(header.end(), {std::uint8_t(bit_depth), std::uint8_t(colour_type), 0, 0, 0});
   AppendChunk(png, "IHDR", header);
   if (!samples.empty()) {
     const std::size_t row = samples.size() / height;
@@ -154,6 +154,28 @@ TEST_F(PngIoTest, RefusesHugeDimensionsBeforeDecoding) {
   const std::string message = ReadError(HandMadePng(100000, 100000, 2, {}));
   EXPECT_EQ(message,
             Path("input.png") + ": PNG is 100000x100000 pixels; at most 16384x16384 is read");
+}
+
+TEST_F(PngIoTest, RefusesTooManyDecodedBytesBeforeDecoding) {
+  // within the side limit, but 16-bit RGBA would need 2 GiB of samples while decoding
+  EXPECT_EQ(ReadError(HandMadePng(16384, 16384, 6, {}, 16)),
+            Path("input.png") + ": PNG of 16384x16384 pixels at 8 bytes per pixel is too large " +
+                "to decode (limit 1024 MiB of samples)");
+  // the largest render, 8-bit RGB, passes the header check (and fails later for want of data)
+  EXPECT_EQ(ReadError(HandMadePng(16384, 16384, 2, {})).find("too large"), std::string::npos);
+}
+
+TEST_F(PngIoTest, RefusesColourTypesPngDoesNotHave) {
+  EXPECT_EQ(ReadError(HandMadePng(4, 4, 5, {})),
+            Path("input.png") + ": not a valid PNG (colour type 5 with bit depth 8)");
+}
+
+TEST_F(PngIoTest, DecodesFromMemoryWithTheNameGiven) {
+  const Bytes png = HandMadePng(3, 2, 2, SmallImage().rgb);
+  const Image image = DecodePng(
+      std::string_view(reinterpret_cast<const char*>(png.data()), png.size()), "memory.png");
+  EXPECT_EQ(image.rgb, SmallImage().rgb);
+  EXPECT_THROW(DecodePng("not a png", "memory.png"), Error);
 }
 
 TEST_F(PngIoTest, RefusesWhatIsNotPng) {

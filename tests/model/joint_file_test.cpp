@@ -96,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadJointFileCase{"array.json", "[1, 2]",
                          "array.json:1: expected an object of joint names to values, or "
                          "\"name\" and \"position\" arrays"},
-        BadJointFileCase{"missing.yaml", nullptr, "missing.yaml: cannot read the joint file"}),
+        BadJointFileCase{"missing.yaml", nullptr, "missing.yaml: cannot read the joint file: No such file or directory"}),
     [](const ::testing::TestParamInfo<BadJointFileCase>& info) {
       return test::TestName(info.param.file);
     });

@@ -124,11 +124,47 @@ const BadUrdfCase kBadUrdfCases[] = {
     {"unparsable origin",
      TWO_LINKS("<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/>\n"
                "<origin xyz=\"0 0 x\"/></joint>"),
-     "5: joint 'j': <origin xyz=\"0 0 x\">: expected 3 numbers"},
+     "5: joint 'j': <origin xyz=\"0 0 x\">: expected 3 finite numbers"},
+    {"nan in an origin",
+     TWO_LINKS("<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/>\n"
+               "<origin rpy=\"0 nan 0\"/></joint>"),
+     "5: joint 'j': <origin rpy=\"0 nan 0\">: expected 3 finite numbers"},
+    {"infinite limit",
+     TWO_LINKS("<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>\n"
+               "<limit lower=\"-inf\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>"),
+     "5: joint 'j': <limit lower=\"-inf\">: expected 1 finite number"},
+    {"number out of double range",
+     TWO_LINKS("<joint name=\"j\" type=\"prismatic\"><parent link=\"a\"/><child link=\"b\"/>\n"
+               "<limit upper=\"1e999\" effort=\"1\" velocity=\"1\"/></joint>"),
+     "5: joint 'j': <limit upper=\"1e999\">: expected 1 finite number"},
+    {"two signs",
+     TWO_LINKS("<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/>\n"
+               "<origin xyz=\"+-1 0 0\"/></joint>"),
+     "5: joint 'j': <origin xyz=\"+-1 0 0\">: expected 3 finite numbers"},
+    {"zero box side",
+     "<robot name=\"r\">\n<link name=\"a\">\n<visual><geometry>\n<box size=\"1 0 1\"/>\n"
+     "</geometry></visual>\n</link>\n</robot>\n",
+     "4: link 'a': <box size=\"1 0 1\">: expected sizes above 0"},
+    {"negative cylinder radius",
+     "<robot name=\"r\">\n<link name=\"a\">\n<collision><geometry>\n"
+     "<cylinder radius=\"-0.1\" length=\"1\"/>\n</geometry></collision>\n</link>\n</robot>\n",
+     "4: link 'a': <cylinder radius=\"-0.1\">: expected a size above 0"},
+    {"zero cylinder length",
+     "<robot name=\"r\">\n<link name=\"a\">\n<visual><geometry>\n"
+     "<cylinder radius=\"0.1\" length=\"0\"/>\n</geometry></visual>\n</link>\n</robot>\n",
+     "4: link 'a': <cylinder length=\"0\">: expected a size above 0"},
+    {"zero sphere radius",
+     "<robot name=\"r\">\n<link name=\"a\">\n<visual><geometry>\n<sphere radius=\"0\"/>\n"
+     "</geometry></visual>\n</link>\n</robot>\n",
+     "4: link 'a': <sphere radius=\"0\">: expected a size above 0"},
+    {"zero mesh scale",
+     "<robot name=\"r\">\n<link name=\"a\">\n<visual><geometry>\n"
+     "<mesh filename=\"m.stl\" scale=\"1 1 0\"/>\n</geometry></visual>\n</link>\n</robot>\n",
+     "4: link 'a': <mesh scale=\"1 1 0\">: a scale of 0 flattens the mesh to nothing"},
     {"two numbers for a box",
      "<robot name=\"r\">\n<link name=\"a\">\n<visual><geometry>\n<box size=\"1 1\"/>\n"
      "</geometry></visual>\n</link>\n</robot>\n",
-     "4: link 'a': <box size=\"1 1\">: expected 3 numbers"},
+     "4: link 'a': <box size=\"1 1\">: expected 3 finite numbers"},
     {"unknown geometry",
      "<robot name=\"r\">\n<link name=\"a\">\n<visual><geometry>\n<cone radius=\"1\"/>\n"
      "</geometry></visual>\n</link>\n</robot>\n",

@@ -396,7 +396,7 @@ TEST_F(RvizConfigTest, MissingFileIsAnError) {
     ReadRvizConfig(path + ".missing", {}, warnings);
     FAIL() << "no error";
   } catch (const Error& error) {
-    EXPECT_EQ(std::string(error.what()), path + ".missing: cannot read the .rviz file");
+    EXPECT_EQ(std::string(error.what()), path + ".missing: cannot read the .rviz file: No such file or directory");
   }
 }
 

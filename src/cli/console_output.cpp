@@ -1,0 +1,43 @@
+// The one place warnings and command output reach the user: warnings on stderr (errors under
+// --strict), documents on stdout with write failures reported.
+#include <cstdio>
+
+#include "cli/command.h"
+#include "common/error.h"
+
+namespace urdfsnap::cli {
+
+bool& StrictWarnings() {
+  static bool strict = false;
+  return strict;
+}
+
+namespace {
+
+void PrintFirstWarnings(const Warnings& warnings, size_t count) {
+  for (size_t i = 0; i < count; ++i) {
+    std::fprintf(stderr, "urdfsnap: warning: %s\n", warnings.messages()[i].c_str());
+  }
+}
+
+}  // namespace
+
+void PrintWarnings(const Warnings& warnings) {
+  const auto& messages = warnings.messages();
+  if (!StrictWarnings() || messages.empty()) return PrintFirstWarnings(warnings, messages.size());
+  PrintFirstWarnings(warnings, messages.size() - 1);
+  throw Error(messages.back() + " (a warning; --strict makes it an error)");
+}
+
+void PrintWarningsBeforeError(const Warnings& warnings) {
+  PrintFirstWarnings(warnings, warnings.messages().size());
+}
+
+void WriteToStdout(std::string_view text) {
+  std::fwrite(text.data(), 1, text.size(), stdout);
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    throw Error("cannot write to standard output");
+  }
+}
+
+}  // namespace urdfsnap::cli
