@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages urdfsnap needs to build and test, only those that are missing.
 # Idempotent and quiet when everything is already there. Needs root (apt-get).
+# usage: scripts/deps.sh [--sanitizers]   (--sanitizers: also clang and libFuzzer, for the
+# sanitizer build and scripts/fuzz.sh; the normal build does not need them)
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
@@ -8,6 +10,7 @@ packages=(
   libtinyxml2-dev libexpat1-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libbenchmark-dev fonts-liberation libfreetype-dev python3
 )
+if [ "${1:-}" = "--sanitizers" ]; then packages+=(clang libclang-rt-14-dev llvm-14); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

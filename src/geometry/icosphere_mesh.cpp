@@ -59,8 +59,10 @@ class IcosphereBuilder {
 
   TriangleMesh Build() {
     const int n = divisions_;
-    for (const auto& [a, b, c] : IcosahedronFaces()) {
-      // grid point (i, j) of the face is a + i/n (b - a) + j/n (c - a)
+    for (const auto& face : IcosahedronFaces()) {
+      // grid point (i, j) of the face is a + i/n (b - a) + j/n (c - a); (no structured binding:
+      // clang before 16 cannot capture one in a lambda)
+      const int a = face[0], b = face[1], c = face[2];
       const auto at = [&](int i, int j) { return Vertex({{a, n - i - j}, {b, i}, {c, j}}); };
       for (int j = 0; j < n; ++j) {
         for (int i = 0; i + j < n; ++i) {

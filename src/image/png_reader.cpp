@@ -2,6 +2,7 @@
 // (STB_IMAGE_STATIC), for PNG only.
 #include "image/png_reader.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -27,28 +28,46 @@ std::uint32_t BigEndian32(const std::uint8_t* p) {
   return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
 }
 
-// Bytes per pixel stb holds while decoding a PNG of this IHDR colour type and bit depth: palette
-// images are expanded to RGBA, 16-bit samples kept at 16 bits until the end; 0 for a combination
-// the PNG specification does not allow.
-int DecodedBytesPerPixel(int colour_type, int bit_depth) {
-  const int sample_bytes = bit_depth == 16 ? 2 : 1;
+// Samples per pixel in the file for an IHDR colour type (grey, RGB, palette index, grey + alpha,
+// RGBA); 0 for a colour type PNG does not have.
+int ChannelsInFile(int colour_type) {
   switch (colour_type) {
-    case 0: return sample_bytes;      // grey
-    case 2: return 3 * sample_bytes;  // RGB
-    case 3: return 4;                 // palette, expanded
-    case 4: return 2 * sample_bytes;  // grey + alpha
-    case 6: return 4 * sample_bytes;  // RGBA
+    case 0: return 1;
+    case 2: return 3;
+    case 3: return 1;
+    case 4: return 2;
+    case 6: return 4;
     default: return 0;
   }
 }
 
+// Bytes per pixel stb holds while decoding: palette images are expanded to RGBA, 16-bit samples
+// kept at 16 bits until the end.
+int DecodedBytesPerPixel(int colour_type, int bit_depth) {
+  return colour_type == 3 ? 4 : ChannelsInFile(colour_type) * (bit_depth == 16 ? 2 : 1);
+}
+
+// The summed length of the IDAT chunks, as their headers state, up to IEND or the end of the file.
+std::uint64_t ImageDataBytes(const std::uint8_t* bytes, std::size_t size) {
+  std::uint64_t total = 0;
+  for (std::size_t at = 8; at + 8 <= size;) {
+    const std::uint32_t length = BigEndian32(&bytes[at]);
+    if (std::memcmp(&bytes[at + 4], "IEND", 4) == 0) break;
+    if (std::memcmp(&bytes[at + 4], "IDAT", 4) == 0) total += std::min<std::uint64_t>(length, size - at);
+    at += std::size_t{12} + length;  // length, type, data, CRC
+  }
+  return total;
+}
+
 // A PNG starts with an 8-byte signature and then the IHDR chunk: length 13, "IHDR", width and
-// height as big-endian 32-bit numbers, bit depth, colour type. Refuses what is not a PNG or would
-// need more than kMaxImageSide pixels a side or kMaxDecodedBytes of decoded samples, before stb
-// allocates anything.
+// height as big-endian 32-bit numbers, bit depth, colour type. Refuses, before stb allocates
+// anything (stb allocates the whole image from the header first): what is not a PNG; more than
+// kMaxImageSide pixels a side; more than kMaxDecodedBytes of samples while decoding; and image
+// data too short to inflate to the pixels the header claims (deflate shrinks at most 1032:1).
 void CheckPngHeader(const std::string& path, const std::uint8_t* bytes, std::size_t size) {
   static constexpr std::array<std::uint8_t, 8> kSignature = {137, 80, 78, 71, 13, 10, 26, 10};
   static constexpr std::uint64_t kMaxDecodedBytes = std::uint64_t{kMaxImageSide} * kMaxImageSide * 4;
+  static constexpr std::uint64_t kMaxDeflateRatio = 1032;
   if (size < kSignature.size() || std::memcmp(bytes, kSignature.data(), kSignature.size()) != 0) {
     throw Error(path + ": not a PNG file (no PNG signature)");
   }
@@ -57,20 +76,30 @@ void CheckPngHeader(const std::string& path, const std::uint8_t* bytes, std::siz
   }
   const std::uint32_t width = BigEndian32(&bytes[16]);
   const std::uint32_t height = BigEndian32(&bytes[20]);
+  const int bit_depth = bytes[24];
+  const int colour_type = bytes[25];
   const std::string size_text = std::to_string(width) + "x" + std::to_string(height);
   if (width > kMaxImageSide || height > kMaxImageSide) {
     throw Error(path + ": PNG is " + size_text + " pixels; at most " +
                 std::to_string(kMaxImageSide) + "x" + std::to_string(kMaxImageSide) + " is read");
   }
-  const int bytes_per_pixel = DecodedBytesPerPixel(bytes[25], bytes[24]);
-  if (bytes_per_pixel == 0) {
-    throw Error(path + ": not a valid PNG (colour type " + std::to_string(bytes[25]) +
-                " with bit depth " + std::to_string(bytes[24]) + ")");
+  const int channels = ChannelsInFile(colour_type);
+  if (channels == 0 || !(bit_depth == 1 || bit_depth == 2 || bit_depth == 4 || bit_depth == 8 ||
+                         bit_depth == 16)) {
+    throw Error(path + ": not a valid PNG (colour type " + std::to_string(colour_type) +
+                " with bit depth " + std::to_string(bit_depth) + ")");
   }
+  const int bytes_per_pixel = DecodedBytesPerPixel(colour_type, bit_depth);
   if (std::uint64_t{width} * height * bytes_per_pixel > kMaxDecodedBytes) {
     throw Error(path + ": PNG of " + size_text + " pixels at " + std::to_string(bytes_per_pixel) +
                 " bytes per pixel is too large to decode (limit " +
                 std::to_string(kMaxDecodedBytes >> 20) + " MiB of samples)");
+  }
+  const std::uint64_t row_bytes = (std::uint64_t{width} * channels * bit_depth + 7) / 8;
+  const std::uint64_t data_bytes = ImageDataBytes(bytes, size);
+  if ((data_bytes + 1) * kMaxDeflateRatio < row_bytes * height) {
+    throw Error(path + ": PNG claims " + size_text + " pixels but holds " +
+                std::to_string(data_bytes) + " bytes of image data, too few for that many");
   }
 }
 

@@ -1,0 +1,308 @@
+// Broken and hostile input against the urdfsnap binary, one case per row: malformed URDF, xacro
+// bombs, bad joint values and options, garbage meshes and files that never end, unwritable outputs.
+// Every case must end with exit status 2 and one "urdfsnap: error: " line naming the culprit,
+// before a deadline (a hang detector, not a speed test) and within 1.5 GB (2 GB of address space
+// where that can be capped), leaving the existing output file byte-identical and no new file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "urdfsnap_process.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct HostileCase {
+  std::string name;
+  // files written into the case's folder first: name and bytes
+  std::vector<std::pair<std::string, std::string>> files;
+  // the command line after "urdfsnap"; {dir} is the case's folder, {out} its output file
+  std::string arguments;
+  // text the error message must contain (the culprit: a file:line, name, value or option)
+  std::string culprit;
+};
+
+// Two links joined by `joint`, which starts on line 4.
+std::string TwoLinks(const std::string& joint) {
+  return "<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"/>\n" + joint + "\n</robot>\n";
+}
+
+// A link whose visual geometry is `shape`, on line 3.
+std::string OneShape(const std::string& shape) {
+  return "<robot name=\"r\">\n<link name=\"a\">\n<visual><geometry>" + shape +
+         "</geometry></visual>\n</link>\n</robot>\n";
+}
+
+std::string Xacro(const std::string& body) {
+  return "<?xml version=\"1.0\"?>\n<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n" +
+         body + "\n</robot>\n";
+}
+
+// A macro calling the previous one ten times, twelve levels deep: 10^12 links if nothing stops it.
+std::string ExponentialXacro() {
+  std::string body = "<xacro:macro name=\"m0\"><link name=\"l\"/></xacro:macro>\n";
+  for (int level = 1; level <= 12; ++level) {
+    body += "<xacro:macro name=\"m" + std::to_string(level) + "\">";
+    for (int call = 0; call < 10; ++call) body += "<xacro:m" + std::to_string(level - 1) + "/>";
+    body += "</xacro:macro>\n";
+  }
+  return Xacro(body + "<xacro:m12/>");
+}
+
+// XML entities nested ten deep, each ten times the one before ("billion laughs").
+std::string EntityBomb(bool xacro_namespace) {
+  std::string doc = "<?xml version=\"1.0\"?>\n<!DOCTYPE robot [\n<!ENTITY e0 \"lol\">\n";
+  for (int level = 1; level <= 10; ++level) {
+    doc += "<!ENTITY e" + std::to_string(level) + " \"";
+    for (int i = 0; i < 10; ++i) doc += "&e" + std::to_string(level - 1) + ";";
+    doc += "\">\n";
+  }
+  return doc + "]>\n<robot name=\"&e10;\"" +
+         (xacro_namespace ? " xmlns:xacro=\"http://www.ros.org/wiki/xacro\"" : "") +
+         "><link name=\"a\"/></robot>\n";
+}
+
+std::string Nested(const std::string& tag, int depth) {
+  std::string doc = "<robot name=\"r\"><link name=\"a\"/>";
+  for (int i = 0; i < depth; ++i) doc += "<" + tag + ">";
+  for (int i = 0; i < depth; ++i) doc += "</" + tag + ">";
+  return doc + "</robot>\n";
+}
+
+std::string Bytes(int count, unsigned seed) {
+  std::string bytes;
+  for (int i = 0; i < count; ++i) {
+    seed = seed * 1103515245 + 12345;
+    bytes += static_cast<char>(seed >> 16);
+  }
+  return bytes;
+}
+
+// A binary STL whose header claims four billion triangles and holds one.
+std::string LyingStl() {
+  std::string stl(80, ' ');
+  stl += std::string("\xff\xff\xff\xff", 4);
+  return stl + std::string(50, '\0');
+}
+
+const std::string kMesh = "<mesh filename=\"mesh.stl\"/>";
+const std::string kModel = "{dir}/robot.urdf";
+const std::string kRender = "render " + kModel + " -o {out} ";
+const std::string kGoodRobot = TwoLinks(
+    "<joint name=\"elbow\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
+    "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>");
+
+std::vector<HostileCase> Cases() {
+  const auto robot = [](const std::string& urdf) {
+    return std::vector<std::pair<std::string, std::string>>{{"robot.urdf", urdf}};
+  };
+  const auto xacro = [](const std::string& text) {
+    return std::vector<std::pair<std::string, std::string>>{{"robot.xacro", text}};
+  };
+  const std::string render_xacro = "render {dir}/robot.xacro -o {out}";
+  const auto mesh = [&](const std::string& bytes) {
+    return std::vector<std::pair<std::string, std::string>>{{"robot.urdf", OneShape(kMesh)},
+                                                            {"mesh.stl", bytes}};
+  };
+  return {
+      // malformed URDF
+      {"unclosed_element", robot("<robot name=\"r\">\n<link name=\"a\">\n</robot>\n"), kRender,
+       "robot.urdf:2: malformed XML"},
+      {"empty_file", robot(""), kRender, "robot.urdf"},
+      {"binary_garbage", robot(Bytes(3000, 7)), kRender, "robot.urdf"},
+      {"not_a_robot", robot("<model/>\n"), kRender, "found <model>"},
+      {"duplicate_link", robot("<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"a\"/>\n</robot>"),
+       kRender, "robot.urdf:3: link 'a' is defined twice"},
+      {"duplicate_joint",
+       robot(TwoLinks("<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>\n"
+                      "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>")),
+       kRender, "robot.urdf:5: joint 'j' is defined twice"},
+      {"missing_child_link",
+       robot(TwoLinks("<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"ghost\"/></joint>")),
+       kRender, "robot.urdf:4: joint 'j' names child link 'ghost'"},
+      {"loop",
+       robot("<robot name=\"r\">\n<link name=\"root\"/><link name=\"a\"/><link name=\"b\"/>\n"
+             "<joint name=\"j1\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>\n"
+             "<joint name=\"j2\" type=\"fixed\"><parent link=\"b\"/><child link=\"a\"/></joint>\n</robot>"),
+       kRender, "robot.urdf:3: joint 'j1' closes a loop"},
+      {"two_roots", robot("<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"/>\n</robot>"), kRender,
+       "robot.urdf:3: robot 'r' has several root links"},
+      {"unknown_joint_type",
+       robot(TwoLinks("<joint name=\"j\" type=\"hinge\"><parent link=\"a\"/><child link=\"b\"/></joint>")),
+       kRender, "robot.urdf:4: joint 'j' has unknown type 'hinge'"},
+      {"revolute_without_limit",
+       robot(TwoLinks("<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/></joint>")),
+       kRender, "robot.urdf:4: joint 'j' is revolute but has no <limit>"},
+      {"nan_origin",
+       robot(TwoLinks("<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/>"
+                      "<origin xyz=\"0 nan 0\"/></joint>")),
+       kRender, "robot.urdf:4: joint 'j': <origin xyz=\"0 nan 0\">"},
+      {"infinite_limit",
+       robot(TwoLinks("<joint name=\"j\" type=\"prismatic\"><parent link=\"a\"/><child link=\"b\"/>"
+                      "<limit lower=\"0\" upper=\"inf\" effort=\"1\" velocity=\"1\"/></joint>")),
+       kRender, "robot.urdf:4: joint 'j': <limit upper=\"inf\">"},
+      {"garbage_number",
+       robot(TwoLinks("<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/>"
+                      "<origin rpy=\"0 1.0.0 0\"/></joint>")),
+       kRender, "<origin rpy=\"0 1.0.0 0\">"},
+      {"zero_axis",
+       robot(TwoLinks("<joint name=\"j\" type=\"continuous\"><parent link=\"a\"/><child link=\"b\"/>"
+                      "<axis xyz=\"0 0 0\"/></joint>")),
+       kRender, "robot.urdf:4: joint 'j' has a zero axis"},
+      {"zero_box", robot(OneShape("<box size=\"1 0 1\"/>")), kRender,
+       "robot.urdf:3: link 'a': <box size=\"1 0 1\">"},
+      {"negative_sphere", robot(OneShape("<sphere radius=\"-1\"/>")), kRender,
+       "robot.urdf:3: link 'a': <sphere radius=\"-1\">"},
+      {"zero_cylinder", robot(OneShape("<cylinder radius=\"0\" length=\"1\"/>")), kRender,
+       "<cylinder radius=\"0\">"},
+      {"zero_mesh_scale", robot(OneShape("<mesh filename=\"m.stl\" scale=\"1 0 1\"/>")), kRender,
+       "<mesh scale=\"1 0 1\">"},
+      {"entity_bomb_urdf", robot(EntityBomb(false)), kRender, "robot.urdf:2: <!DOCTYPE>"},
+      {"deep_nesting", robot(Nested("link", 100000)), kRender, "robot.urdf"},
+      {"missing_model", {}, kRender, "robot.urdf: cannot read the model file"},
+      {"model_is_a_folder", {}, "render {dir} -o {out}", "cannot read the model file: Is a directory"},
+      {"endless_model", {}, "render /dev/zero -o {out}", "/dev/zero: cannot read the model file"},
+      // xacro
+      {"exponential_macros", xacro(ExponentialXacro()), render_xacro,
+       "robot.xacro:5: expanded document exceeds the size limit"},
+      {"exponential_macros_xacro_command", xacro(ExponentialXacro()),
+       "xacro {dir}/robot.xacro -o {out}", "expanded document exceeds the size limit"},
+      {"entity_bomb_xacro", xacro(EntityBomb(true)), render_xacro,
+       "robot.xacro:15: XML parsing error: limit on input amplification factor"},
+      {"infinite_recursion", xacro(Xacro("<xacro:macro name=\"m\"><xacro:m/></xacro:macro><xacro:m/>")),
+       render_xacro, "macro"},
+      {"self_include", xacro(Xacro("<xacro:include filename=\"robot.xacro\"/>")), render_xacro,
+       "include depth exceeds the limit"},
+      {"endless_include", xacro(Xacro("<xacro:include filename=\"/dev/zero\"/>")), render_xacro,
+       "/dev/zero"},
+      {"missing_include", xacro(Xacro("<xacro:include filename=\"nope.xacro\"/>")), render_xacro,
+       "/nope.xacro [Errno 2] No such file or directory"},
+      {"huge_string", xacro(Xacro("<link name=\"${'a' * 10**10}\"/>")), render_xacro,
+       "robot.xacro:3"},
+      {"undefined_property", xacro(Xacro("<link name=\"${nothing}\"/>")), render_xacro,
+       "name 'nothing' is not defined"},
+      {"bad_expression", xacro(Xacro("<link name=\"${1 +}\"/>")), render_xacro, "robot.xacro:3"},
+      {"expanded_urdf_error", xacro(Xacro("<link name=\"a\"/>\n<link name=\"a\"/>")), render_xacro,
+       "robot.xacro (expanded)"},
+      // joint values and options
+      {"unknown_joint", robot(kGoodRobot), kRender + "-j wrist=1", "'wrist'"},
+      {"joint_value_not_a_number", robot(kGoodRobot), kRender + "-j elbow=abc", "'elbow=abc'"},
+      {"joint_value_nan", robot(kGoodRobot), kRender + "-j elbow=nan", "'elbow=nan'"},
+      {"joint_without_value", robot(kGoodRobot), kRender + "-j elbow", "'elbow'"},
+      {"joint_file_bad_yaml",
+       {{"robot.urdf", kGoodRobot}, {"pose.yaml", "elbow: 0.5\nwrist: [1, 2\n"}},
+       kRender + "--joints {dir}/pose.yaml", "pose.yaml:3"},
+      {"joint_file_string_value",
+       {{"robot.urdf", kGoodRobot}, {"pose.json", "{\n\"elbow\": \"bent\"\n}"}},
+       kRender + "--joints {dir}/pose.json", "pose.json:2: joint 'elbow'"},
+      {"joint_file_endless", robot(kGoodRobot), kRender + "--joints /dev/zero",
+       "/dev/zero: cannot read the joint file"},
+      {"size_zero", robot(kGoodRobot), kRender + "--size 0x10", "--size '0x10'"},
+      {"size_over_limit", robot(kGoodRobot), kRender + "--size 16385x16384", "--size '16385x16384'"},
+      {"size_overflow", robot(kGoodRobot), kRender + "--size 99999999999999999999x1", "--size"},
+      {"size_fraction", robot(kGoodRobot), kRender + "--size 1.5x2", "--size '1.5x2'"},
+      {"yaw_infinite", robot(kGoodRobot), kRender + "--yaw inf", "--yaw 'inf'"},
+      {"distance_negative", robot(kGoodRobot), kRender + "--distance -1",
+       "--distance '-1': expected a value from 0.01 to 1e+06"},
+      {"alpha_above_one", robot(kGoodRobot), kRender + "--alpha 2", "--alpha '2'"},
+      {"background_out_of_range", robot(kGoodRobot), kRender + "--background 300,0,0",
+       "--background '300,0,0'"},
+      {"focal_two_numbers", robot(kGoodRobot), kRender + "--focal 1,2", "--focal '1,2'"},
+      {"unknown_fixed_frame", robot(kGoodRobot), kRender + "--fixed-frame world", "'world'"},
+      {"unknown_option", robot(kGoodRobot), kRender + "--bogus", "--bogus"},
+      {"rviz_bad_yaml", {{"robot.urdf", kGoodRobot}, {"view.rviz", "Visualization Manager:\n  [\n"}},
+       kRender + "--rviz {dir}/view.rviz", "view.rviz:"},
+      {"rviz_endless", robot(kGoodRobot), kRender + "--rviz /dev/zero",
+       "/dev/zero: cannot read the .rviz file"},
+      {"strict_turns_a_warning_into_an_error", robot(kGoodRobot), kRender + "-j elbow=5 --strict",
+       "'elbow'"},
+      // meshes
+      {"garbage_mesh", mesh(Bytes(5000, 3)), kRender, "robot.urdf:2: link 'a': mesh 'mesh.stl'"},
+      {"empty_mesh", mesh(""), kRender, "mesh 'mesh.stl'"},
+      {"lying_stl", mesh(LyingStl()), kRender, "mesh 'mesh.stl'"},
+      {"missing_mesh", robot(OneShape(kMesh)), kRender, "mesh 'mesh.stl' not found"},
+      {"endless_mesh", robot(OneShape("<mesh filename=\"/dev/zero\"/>")), kRender,
+       "mesh '/dev/zero': /dev/zero is not a regular file"},
+      {"mesh_in_unknown_package", robot(OneShape("<mesh filename=\"package://nowhere/m.stl\"/>")),
+       kRender, "package 'nowhere' not found"},
+      {"mesh_over_http", robot(OneShape("<mesh filename=\"http://example.com/m.stl\"/>")), kRender,
+       "unsupported URI scheme 'http://'"},
+      {"garbage_collada", {{"robot.urdf", OneShape("<mesh filename=\"mesh.dae\"/>")},
+                           {"mesh.dae", "<?xml version=\"1.0\"?><COLLADA><library_geometries>"}},
+       kRender, "mesh 'mesh.dae'"},
+      // outputs that cannot be written
+      {"output_folder_missing", robot(kGoodRobot), "render " + kModel + " -o {dir}/no/such/out.png",
+       "no/such/out.png: cannot write"},
+      {"output_under_a_file", robot(kGoodRobot), "render " + kModel + " -o {dir}/robot.urdf/out.png",
+       "robot.urdf/out.png: cannot write: Not a directory"},
+      {"output_is_a_folder", robot(kGoodRobot), "render " + kModel + " -o {dir}", "cannot write"},
+      {"xacro_output_under_a_file", xacro(Xacro("<link name=\"a\"/>")),
+       "xacro {dir}/robot.xacro -o {dir}/robot.xacro/out.urdf", "cannot write: Not a directory"},
+  };
+}
+
+// gtest prints a failing case's parameter: its name is enough
+void PrintTo(const HostileCase& c, std::ostream* os) { *os << c.name; }
+
+class HostileInputTest : public ::testing::TestWithParam<HostileCase> {};
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+std::string ReadAll(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::set<std::string> Listing(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) names.insert(entry.path().string());
+  return names;
+}
+
+TEST_P(HostileInputTest, EndsWithOneLocatedErrorAndLeavesTheOutputAlone) {
+  const HostileCase& c = GetParam();
+  const fs::path dir = fs::temp_directory_path() / ("urdfsnap_hostile_" + c.name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const auto& [name, bytes] : c.files) std::ofstream(dir / name, std::ios::binary) << bytes;
+  const fs::path out = dir / "out.png";
+  const std::string precious = "an image the user cares about";
+  std::ofstream(out, std::ios::binary) << precious;
+  const std::set<std::string> before = Listing(dir);
+
+  const bool asan = urdfsnap::test::BuiltWithAddressSanitizer();
+  const std::string arguments =
+      Replace(Replace(c.arguments, "{out}", out.string()), "{dir}", dir.string());
+  const auto run = urdfsnap::test::RunUrdfsnap(arguments, 60, asan ? 0 : 2048);
+
+  EXPECT_FALSE(run.timed_out) << "still running after 60 s: urdfsnap " << arguments;
+  EXPECT_EQ(run.status, 2) << run.err;
+  EXPECT_EQ(run.err.rfind("urdfsnap: error: ", 0), 0u) << run.err;
+  EXPECT_NE(run.err.find(c.culprit), std::string::npos)
+      << "expected '" << c.culprit << "' in:\n" << run.err;
+  EXPECT_EQ(run.out, "");
+  if (!asan) {
+    EXPECT_LT(run.peak_rss_kb, 1536 * 1024) << "peak memory";
+  }
+  EXPECT_EQ(ReadAll(out), precious);
+  EXPECT_EQ(Listing(dir), before) << "a file appeared or disappeared";
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, HostileInputTest, ::testing::ValuesIn(Cases()),
+                         [](const ::testing::TestParamInfo<HostileCase>& info) {
+                           return info.param.name;
+                         });
+
+}  // namespace
