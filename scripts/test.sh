@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
-# Installs missing dependencies, builds urdfsnap and runs every test (ctest).
+# Installs missing dependencies, builds urdfsnap and runs every test (ctest). With CI=true (as
+# .ci/run sets it) the sanitizer stage follows: the whole suite again under ASan+UBSan and each
+# fuzz target for a short time (scripts/test-sanitizers.sh).
 # usage: scripts/test.sh [ctest args...]   e.g. scripts/test.sh -L unit
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"
-cd "$root/build"
-ctest --output-on-failure -j "$(nproc)" "$@"
+(cd "$root/build" && ctest --output-on-failure -j "$(nproc)" "$@")
+if [ "${CI:-}" = true ]; then
+  "$root/scripts/test-sanitizers.sh"
+fi

@@ -2,8 +2,10 @@
 #include "common/file_reading.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <system_error>
 
@@ -12,6 +14,10 @@ namespace {
 
 [[noreturn]] void ThrowSystemError(int error_number) {
   throw FileReadError(std::system_category().message(error_number), error_number);
+}
+
+[[noreturn]] void ThrowTooLarge(std::size_t max_bytes) {
+  throw FileReadError("larger than the limit of " + std::to_string(max_bytes >> 20) + " MiB", 0);
 }
 
 // Closes the descriptor when reading ends, however it ends.
@@ -25,25 +31,22 @@ struct Descriptor {
 std::string ReadFileBounded(const std::string& path, std::size_t max_bytes) {
   const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
   if (file.fd < 0) ThrowSystemError(errno);
+  // a regular file says how large it is: refuse it unread, or read it in one go (one byte more,
+  // to see the end); anything else grows in chunks
+  struct stat status {};
+  const bool sized = ::fstat(file.fd, &status) == 0 && S_ISREG(status.st_mode);
+  if (sized && static_cast<std::size_t>(status.st_size) > max_bytes) ThrowTooLarge(max_bytes);
+  std::size_t chunk = sized ? static_cast<std::size_t>(status.st_size) + 1 : 4096;
   std::string bytes;
-  // read one chunk past the limit, so that a file of exactly max_bytes is accepted
-  constexpr std::size_t kChunk = 1 << 16;
   while (true) {
     const std::size_t old_size = bytes.size();
-    if (old_size > max_bytes) {
-      throw FileReadError("larger than the limit of " + std::to_string(max_bytes >> 20) + " MiB", 0);
-    }
-    bytes.resize(old_size + kChunk);
-    const ssize_t n = ::read(file.fd, bytes.data() + old_size, kChunk);
-    if (n < 0) {
-      if (errno == EINTR) {
-        bytes.resize(old_size);
-        continue;
-      }
-      ThrowSystemError(errno);
-    }
-    bytes.resize(old_size + static_cast<std::size_t>(n));
+    if (old_size > max_bytes) ThrowTooLarge(max_bytes);
+    bytes.resize(old_size + chunk);
+    const ssize_t n = ::read(file.fd, bytes.data() + old_size, chunk);
+    if (n < 0 && errno != EINTR) ThrowSystemError(errno);
+    bytes.resize(old_size + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
     if (n == 0) return bytes;
+    chunk = std::clamp<std::size_t>(bytes.size(), 4096, std::size_t{1} << 20);
   }
 }
 

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# CI's sanitizer stage (scripts/test.sh runs it when CI=true): builds everything with clang,
+# AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer's instrumentation into build-asan/
+# (-O1: the tests run a few times slower than in build/), runs the whole test suite there, then
+# each fuzz target for a short time from its seeds (scripts/fuzz.sh with the same build).
+# usage: scripts/test-sanitizers.sh [FUZZ_SECONDS_PER_TARGET]   (default 15)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$root/build-asan
+"$root/scripts/deps.sh" --sanitizers
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_FLAGS_RELEASE="-O1 -g1" \
+    -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+    -DURDFSNAP_BUILD_FUZZERS=ON -DURDFSNAP_BUILD_BENCH=OFF >/dev/null
+fi
+cmake --build "$build" -j "$(nproc)" >/dev/null
+
+# leaks are errors, except the ones Mesa's llvmpipe keeps for the life of the process (see the
+# suppression file); undefined behaviour stops the process with a stack
+export ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1
+export LSAN_OPTIONS=suppressions=$root/scripts/lsan-suppressions.txt:print_suppressions=0
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+(cd "$build" && ctest --output-on-failure -j "$(nproc)")
+URDFSNAP_FUZZ_BUILD=$build "$root/scripts/fuzz.sh" "${1:-15}"
