@@ -1,5 +1,6 @@
 // `urdfsnap info`: the robot's links, joints (type, axis, limits, mimic) and tree.
 #include <memory>
+#include <optional>
 
 #include "cli/command.h"
 #include "cli/model_source.h"
@@ -14,9 +15,15 @@ void AddInfoCommand(CLI::App& app) {
   model->AddOptions(*cmd);
   cmd->callback([model] {
     Warnings warnings;
-    const model::Robot robot = request::LoadModel(model->ToRequest(), warnings);
+    std::optional<model::Robot> robot;
+    try {
+      robot.emplace(request::LoadModel(model->ToRequest(), warnings));
+    } catch (...) {
+      PrintWarningsBeforeError(warnings);
+      throw;
+    }
     PrintWarnings(warnings);
-    WriteToStdout(model::DescribeRobot(robot));
+    WriteToStdout(model::DescribeRobot(*robot));
   });
 }
 

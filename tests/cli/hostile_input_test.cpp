@@ -244,6 +244,10 @@ std::vector<HostileCase> Cases() {
       {"output_under_a_file", robot(kGoodRobot), "render " + kModel + " -o {dir}/robot.urdf/out.png",
        "robot.urdf/out.png: cannot write: Not a directory"},
       {"output_is_a_folder", robot(kGoodRobot), "render " + kModel + " -o {dir}", "cannot write"},
+      {"stdout_full", xacro(Xacro("<link name=\"a\"/>")), "xacro {dir}/robot.xacro > /dev/full",
+       "cannot write to standard output"},
+      {"info_stdout_full", robot(kGoodRobot), "info " + kModel + " > /dev/full",
+       "cannot write to standard output"},
       {"xacro_output_under_a_file", xacro(Xacro("<link name=\"a\"/>")),
        "xacro {dir}/robot.xacro -o {dir}/robot.xacro/out.urdf", "cannot write: Not a directory"},
   };
