@@ -7,17 +7,20 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 namespace urdfsnap::fuzz {
 
-// Makes a new folder under /tmp the working folder; call once, from LLVMFuzzerInitialize.
+// Makes a new folder under /tmp the working folder, removed with its content when the process
+// exits normally; call once, from LLVMFuzzerInitialize.
 inline void EnterFreshWorkDir() {
-  char name[] = "/tmp/urdfsnap-fuzz-XXXXXX";
+  static char name[] = "/tmp/urdfsnap-fuzz-XXXXXX";
   if (!mkdtemp(name) || chdir(name) != 0) {
     std::perror("urdfsnap fuzz: cannot make a working folder");
     std::abort();
   }
+  std::atexit([] { std::filesystem::remove_all(name); });
 }
 
 // Writes `size` bytes to `name` in the working folder (replacing it) and returns the name.

@@ -65,7 +65,9 @@ struct Worker {
   }
 };
 
-Worker worker;
+// never destroyed: at exit the thread still waits on its condition variable, whose destruction
+// would wait for it forever
+Worker& worker = *new Worker;
 
 }  // namespace
 

@@ -125,7 +125,9 @@ Image DecodePng(std::string_view bytes, const std::string& path) {
   stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(bytes.size()), &image.width,
                                           &image.height, &channels_in_file, 3);
   if (pixels == nullptr) {
-    throw Error(path + ": cannot decode PNG: " + stbi_failure_reason());
+    // stb leaves no reason for some corrupt data (found by fuzzing)
+    const char* reason = stbi_failure_reason();
+    throw Error(path + ": cannot decode PNG: " + (reason ? reason : "corrupt image data"));
   }
   image.rgb.assign(pixels, pixels + std::size_t(image.width) * image.height * 3);
   stbi_image_free(pixels);

@@ -198,6 +198,19 @@ TEST_F(PngIoTest, ReportsCorruptData) {
       << ReadError(png);
 }
 
+TEST_F(PngIoTest, ReportsCorruptDataStbGivesNoReasonFor) {
+  // found by fuzzing: stb fails on this file without setting a reason, which was read as a null
+  // C string
+  const std::string path =
+      std::string(URDFSNAP_SOURCE_DIR) + "/tests/fuzz/png_reader/regression-no-failure-reason.png";
+  try {
+    ReadPng(path);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": cannot decode PNG: corrupt image data");
+  }
+}
+
 TEST_F(PngIoTest, ReportsMissingFile) {
   try {
     ReadPng(Path("missing.png"));
