@@ -80,7 +80,7 @@ std::vector<Part> MeshParts(const model::Link& link, const urdf::Mesh& mesh, con
   try {
     file = geometry::LoadMeshFile(path);
   } catch (const Error& e) {
-    throw Error(where, culprit + e.what());
+    throw Error(where, culprit + "mesh '" + mesh.filename + "': " + e.what());
   }
   std::vector<Part> parts;
   for (const auto& part : file->parts) {

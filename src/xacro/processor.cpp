@@ -238,7 +238,7 @@ Value Processor::EvalText(const std::string& text, const Symbols& symbols) {
             const Value expr = EvalText(inner, symbols);
             results.push_back(EvalExpression(ToStr(expr), symbols));
           } catch (const EvalError& e) {
-            throw EvalError(std::string(e.what()) + "\nwhen evaluating expression '" + inner + "'");
+            throw EvalError(std::string(e.what()) + "\n  when evaluating expression '" + inner + "'");
           }
         } else {
           results.push_back(Value::Str(ResolveSubstitution("$(" + ToStr(EvalText(inner, symbols)) + ")", substitutions_)));

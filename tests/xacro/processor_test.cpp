@@ -260,7 +260,7 @@ TEST_P(ProcessorError, NamesFileLineAndProblem) {
 INSTANTIATE_TEST_SUITE_P(
     EveryErrorClass, ProcessorError,
     ::testing::Values(
-        ErrorCase{"undefined", "<a v=\"${nope}\"/>", "name 'nope' is not defined\nwhen evaluating expression 'nope'"},
+        ErrorCase{"undefined", "<a v=\"${nope}\"/>", "name 'nope' is not defined\n  when evaluating expression 'nope'"},
         ErrorCase{"syntax", "<a v=\"${1 +* 2}\"/>", "invalid syntax"},
         ErrorCase{"unclosed", "<a v=\"${1 + 2\"/>", "invalid expression: ${1 + 2"},
         ErrorCase{"division", "<a v=\"${1/0}\"/>", "division by zero"},
