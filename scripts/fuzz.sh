@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang, ASan+UBSan, into build-fuzz/) and runs each for SECONDS
 # (default 60), one after the other, from the seeds in tests/fuzz/<target>/ plus what earlier runs
-# found (build-fuzz/corpus/<target>/). A crash, sanitizer report, timeout (10 s per input) or
-# memory blow-up (2 GB) stops with the input saved as build-fuzz/artifacts/<target>-*; copy it into
-# tests/fuzz/<target>/regression-<what> once fixed. Prints the executions per target.
+# found (build-fuzz/corpus/<target>/). A crash, sanitizer report, timeout (30 s per input, wall
+# time: a loaded machine needs the margin) or memory blow-up (2 GB) stops with the input saved as
+# build-fuzz/artifacts/<target>-*; copy it into tests/fuzz/<target>/regression-<what> once fixed
+# (replay_<target> runs them all in ctest). Prints the executions per target.
 # usage: scripts/fuzz.sh [SECONDS] [TARGET...]      e.g. scripts/fuzz.sh 600 xacro_processor
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -30,7 +31,7 @@ for target in "${targets[@]}"; do
   log="$build/fuzz-$target.log"
   set +e
   "$build/fuzz_$target" "$corpus" "$root/tests/fuzz/$target" \
-    -dict="$root/fuzz/$target.dict" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    -dict="$root/fuzz/$target.dict" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
     -max_len=16384 -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" \
     </dev/null >"$log" 2>&1
   result=$?

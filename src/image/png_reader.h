@@ -18,7 +18,8 @@ Image ReadPng(const std::string& path);
 // ReadPng for the bytes of a file already read; `path` names it in messages.
 Image DecodePng(std::string_view bytes, const std::string& path);
 
-// The largest PNG file ReadPng reads: a 16384x16384 RGBA image that does not compress at all.
-inline constexpr std::size_t kMaxPngFileBytes = std::size_t{1} << 30;
+// The largest PNG file ReadPng reads: far more than the largest render (flat colours compress
+// well), and a bound on what a pipe or device named as a PNG can make it hold in memory.
+inline constexpr std::size_t kMaxPngFileBytes = std::size_t{512} << 20;
 
 }  // namespace urdfsnap::image

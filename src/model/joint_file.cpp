@@ -98,6 +98,12 @@ std::vector<Entry> ReadJsonEntries(const std::string& text, const std::string& p
   nlohmann::ordered_json root;
   try {
     root = nlohmann::ordered_json::parse(text);
+  } catch (const nlohmann::json::out_of_range& e) {
+    // a number beyond a double ("1e999"; found by fuzzing: this escaped without the file)
+    const std::string what = e.what();
+    const size_t bracket = what.find("] ");
+    throw Error(SourceLocation{path, 0},
+                "bad JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
   } catch (const nlohmann::json::parse_error& e) {
     // what() reads "[json.exception.parse_error.101] parse error at line L, column C: ..."
     const std::string what = e.what();

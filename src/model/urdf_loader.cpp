@@ -96,6 +96,24 @@ JointType ToJointType(int urdf_type) {
   }
 }
 
+// urdfdom reads the text with TinyXML, which takes some malformed attributes (a bare '&' in a
+// name) differently from tinyxml2: every link and joint must be in urdfdom's model by the name
+// tinyxml2 read (found by fuzzing: a missing joint was dereferenced).
+void CheckUrdfdomNames(const tinyxml2::XMLElement& robot, const urdf::ModelInterface& model,
+                       const std::string& source) {
+  for (const tinyxml2::XMLElement* e = robot.FirstChildElement(); e; e = e->NextSiblingElement()) {
+    const std::string_view kind = e->Name();
+    if (kind != "link" && kind != "joint") continue;
+    const char* name = e->Attribute("name");
+    if (kind == "link" ? !model.getLink(name) : !model.getJoint(name)) {
+      throw Error(SourceLocation{source, e->GetLineNum()},
+                  std::string(kind) + " '" + name +
+                      "': urdfdom reads this name differently (characters such as a bare '&' "
+                      "must be escaped)");
+    }
+  }
+}
+
 // Joints in document order with everything but the link indices, which need the tree order.
 std::vector<Joint> ReadJoints(const tinyxml2::XMLElement& robot,
                               const urdf::ModelInterface& model) {
@@ -197,6 +215,7 @@ Robot LoadRobot(const std::string& urdf_text, const std::string& source, Warning
     }
   }
 
+  CheckUrdfdomNames(robot, *model, source);
   std::vector<Joint> joints = ReadJoints(robot, *model);
   std::vector<Link> links = OrderLinks(robot, *model, joints);
   std::string name = model->getName();

@@ -1,6 +1,7 @@
 // Python's `%` string formatting on top of C's snprintf for the numeric conversions.
 #include "xacro/string_format.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -96,15 +97,26 @@ std::string PercentFormat(const std::string& format, const Value& args) {
     std::string flags;
     while (k < format.size() && std::string("-+ #0").find(format[k]) != std::string::npos) flags += format[k++];
     int width = -1, precision = -1;
+    // a width or precision that would make a string over kMaxItems is refused (found by
+    // fuzzing: the digits overflowed an int; Python fails as well, with a MemoryError)
+    const auto checked = [](long value) {
+      if (value > static_cast<long>(kMaxItems) || value < -static_cast<long>(kMaxItems)) {
+        throw EvalError("width or precision too big");
+      }
+      return static_cast<int>(value);
+    };
     auto read_number = [&](int& target) {
       if (k < format.size() && format[k] == '*') {
-        target = static_cast<int>(AsIndex(take(), "* width"));
+        target = checked(AsIndex(take(), "* width"));
         ++k;
         return;
       }
       if (k < format.size() && std::isdigit(static_cast<unsigned char>(format[k]))) {
-        target = 0;
-        while (k < format.size() && std::isdigit(static_cast<unsigned char>(format[k]))) target = target * 10 + (format[k++] - '0');
+        long value = 0;
+        while (k < format.size() && std::isdigit(static_cast<unsigned char>(format[k]))) {
+          value = std::min(value * 10 + (format[k++] - '0'), static_cast<long>(kMaxItems) + 1);
+        }
+        target = checked(value);
       }
     };
     read_number(width);

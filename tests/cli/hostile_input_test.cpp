@@ -6,6 +6,7 @@
 // output file byte-identical and no new file.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -91,6 +92,22 @@ std::string LyingStl() {
   std::string stl(80, ' ');
   stl += std::string("\xff\xff\xff\xff", 4);
   return stl + std::string(50, '\0');
+}
+
+// A small valid PNG from the fuzz seeds (3x2 RGB), to be broken.
+std::string SeedPng() {
+  std::ifstream in(std::string(URDFSNAP_SOURCE_DIR) + "/tests/fuzz/png_reader/rgb8.png", std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The seed PNG with the IHDR width and height replaced (big-endian at bytes 16 and 20).
+std::string PngClaiming(std::uint32_t width, std::uint32_t height) {
+  std::string png = SeedPng();
+  for (int i = 0; i < 4; ++i) {
+    png[16 + i] = static_cast<char>(width >> (24 - 8 * i));
+    png[20 + i] = static_cast<char>(height >> (24 - 8 * i));
+  }
+  return png;
 }
 
 const std::string kMesh = "<mesh filename=\"mesh.stl\"/>";
@@ -238,6 +255,23 @@ std::vector<HostileCase> Cases() {
       {"garbage_collada", {{"robot.urdf", OneShape("<mesh filename=\"mesh.dae\"/>")},
                            {"mesh.dae", "<?xml version=\"1.0\"?><COLLADA><library_geometries>"}},
        kRender, "mesh 'mesh.dae'"},
+      // PNGs read by diff
+      {"png_huge_header", {{"a.png", PngClaiming(100000, 100000)}, {"b.png", SeedPng()}},
+       "diff {dir}/a.png {dir}/b.png --diff {out}", "a.png: PNG is 100000x100000 pixels"},
+      {"png_lying_header", {{"a.png", SeedPng()}, {"b.png", PngClaiming(16384, 16384)}},
+       "diff {dir}/a.png {dir}/b.png --diff {out}",
+       "b.png: PNG claims 16384x16384 pixels but holds"},
+      {"png_truncated", {{"a.png", SeedPng().substr(0, 50)}, {"b.png", SeedPng()}},
+       "diff {dir}/a.png {dir}/b.png --diff {out}", "a.png: PNG chunk at byte 33 claims"},
+      {"png_garbage", {{"a.png", Bytes(4000, 11)}, {"b.png", SeedPng()}},
+       "diff {dir}/a.png {dir}/b.png --diff {out}", "a.png: not a PNG file"},
+      {"png_endless", {{"b.png", SeedPng()}}, "diff /dev/zero {dir}/b.png --diff {out}",
+       "/dev/zero: cannot read: larger than the limit of 512 MiB"},
+      {"png_fuzz_regression",
+       {{"a.png", SeedPng()}},
+       "diff {dir}/a.png " + std::string(URDFSNAP_SOURCE_DIR) +
+           "/tests/fuzz/png_reader/regression-no-failure-reason.png --diff {out}",
+       "regression-no-failure-reason.png: cannot decode PNG: corrupt image data"},
       // outputs that cannot be written
       {"output_folder_missing", robot(kGoodRobot), "render " + kModel + " -o {dir}/no/such/out.png",
        "no/such/out.png: cannot write"},

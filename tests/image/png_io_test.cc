@@ -193,9 +193,25 @@ TEST_F(PngIoTest, RefusesWhatIsNotPng) {
 
 TEST_F(PngIoTest, ReportsCorruptData) {
   Bytes png = HandMadePng(3, 2, 2, SmallImage().rgb);
-  png.resize(png.size() - 20);  // cut into the image data
+  png[png.size() - 20] ^= 0xff;  // a byte of the deflate data
   EXPECT_EQ(ReadError(png).rfind(Path("input.png") + ": cannot decode PNG: ", 0), 0u)
       << ReadError(png);
+}
+
+TEST_F(PngIoTest, RefusesAChunkLongerThanTheFile) {
+  Bytes png = HandMadePng(3, 2, 2, SmallImage().rgb);
+  png.resize(png.size() - 20);  // cut into the image data
+  EXPECT_EQ(ReadError(png).rfind(Path("input.png") + ": PNG chunk at byte 33 claims ", 0), 0u)
+      << ReadError(png);
+  // found by fuzzing: 60 bytes whose chunk claims 1.9 GB, which stb allocated before reading
+  const std::string path =
+      std::string(URDFSNAP_SOURCE_DIR) + "/tests/fuzz/png_reader/regression-chunk-longer-than-file.png";
+  try {
+    ReadPng(path);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": PNG chunk at byte 33 claims 1951551059 bytes; the file ends before");
+  }
 }
 
 TEST_F(PngIoTest, ReportsCorruptDataStbGivesNoReasonFor) {

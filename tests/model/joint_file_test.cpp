@@ -93,6 +93,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadJointFileCase{"bad.json", "{\n  \"shoulder\": 0.5,\n}\n",
                          "bad.json:3: bad JSON: syntax error while parsing object key - "
                          "unexpected '}'; expected string literal"},
+        BadJointFileCase{"overflow.json", "{\"shoulder\": 1e999}",
+                         "overflow.json: bad JSON: number overflow parsing '1e999'"},
         BadJointFileCase{"array.json", "[1, 2]",
                          "array.json:1: expected an object of joint names to values, or "
                          "\"name\" and \"position\" arrays"},

@@ -141,6 +141,10 @@ const BadUrdfCase kBadUrdfCases[] = {
      TWO_LINKS("<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/>\n"
                "<origin xyz=\"+-1 0 0\"/></joint>"),
      "5: joint 'j': <origin xyz=\"+-1 0 0\">: expected 3 finite numbers"},
+    {"bare ampersand in a name (found by fuzzing)",
+     TWO_LINKS("<joint name=\"j&\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>"),
+     "4: joint 'j&': urdfdom reads this name differently (characters such as a bare '&' must be "
+     "escaped)"},
     {"zero box side",
      "<robot name=\"r\">\n<link name=\"a\">\n<visual><geometry>\n<box size=\"1 0 1\"/>\n"
      "</geometry></visual>\n</link>\n</robot>\n",

@@ -242,6 +242,9 @@ TEST(Expression, DeprecatedDirectNamesWarn) {
 TEST(Expression, ErrorsArePythonsErrors) {
   const Case cases[] = {
       {"1 / 0", "division by zero"},
+      // found by fuzzing: the width overflowed an int (Python runs out of memory instead)
+      {"'%-7777777777777d' % 2", "width or precision too big"},
+      {"'%*d' % (10**12, 2)", "width or precision too big"},
       {"1 // 0", "integer division or modulo by zero"},
       {"1.0 / 0", "float division by zero"},
       {"undefined_name", "name 'undefined_name' is not defined"},
