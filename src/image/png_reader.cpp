@@ -48,7 +48,7 @@ int DecodedBytesPerPixel(int colour_type, int bit_depth) {
 
 // The summed length of the IDAT chunks up to IEND. Refuses a chunk that claims more bytes than
 // the file has left: stb allocates a chunk's stated length before reading it (found by fuzzing:
-// a 60-byte file made it allocate 1.9 GB).
+// a 60-byte file made it allocate 1.4 GB).
 std::uint64_t ImageDataBytes(const std::string& path, const std::uint8_t* bytes, std::size_t size) {
   std::uint64_t total = 0;
   for (std::size_t at = 8; at + 8 <= size;) {
@@ -127,11 +127,14 @@ Image DecodePng(std::string_view bytes, const std::string& path) {
   if (bytes.size() > kMaxPngFileBytes) throw Error(path + ": PNG file over 512 MiB");
   Image image;
   int channels_in_file = 0;
+  // stb keeps the reason of the last failure (per thread) and sets none for some corrupt data:
+  // clear it, so that a message never carries an earlier file's reason
+  stbi__g_failure_reason = nullptr;
   // asking for 3 channels makes stb expand grey, drop alpha and reduce 16-bit samples
   stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(bytes.size()), &image.width,
                                           &image.height, &channels_in_file, 3);
   if (pixels == nullptr) {
-    // stb leaves no reason for some corrupt data (found by fuzzing)
+    // no reason is a null C string (found by fuzzing)
     const char* reason = stbi_failure_reason();
     throw Error(path + ": cannot decode PNG: " + (reason ? reason : "corrupt image data"));
   }
