@@ -44,6 +44,10 @@ Scalar ScalarFromText(const std::string& text, int line) {
   return scalar;
 }
 
+std::string Describe(const YAML::Node& node) {
+  return node.IsMap() ? "a map" : node.IsSequence() ? "a list" : "nothing";
+}
+
 std::vector<Entry> ReadYamlEntries(const std::string& text, const std::string& path) {
   YAML::Node root;
   try {
@@ -57,6 +61,12 @@ std::vector<Entry> ReadYamlEntries(const std::string& text, const std::string& p
   }
   std::vector<Entry> entries;
   for (const auto& pair : root) {
+    // a key that is a list or a map (found by fuzzing: its conversion threw yaml-cpp's
+    // exception, which left without the file)
+    if (!pair.first.IsScalar()) {
+      throw Error(SourceLocation{path, pair.first.Mark().line + 1},
+                  "expected a joint name as the key, got " + Describe(pair.first));
+    }
     const YAML::Node& value = pair.second;
     Entry entry{pair.first.as<std::string>(), pair.first.Mark().line + 1, value.IsSequence(), {}};
     if (value.IsSequence()) {

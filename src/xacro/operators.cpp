@@ -129,8 +129,10 @@ Value FloatArith(const std::string& op, const Value& a, const Value& b) {
 }
 
 Value Repeat(const Value& seq, const Value& count) {
-  const Int n = std::max<Int>(0, AsInt(count));
   const size_t unit = seq.type == Value::Type::kStr ? seq.s.size() : seq.list->size();
+  // an empty sequence stays empty however often it is repeated (found by fuzzing: '[] * 10**12'
+  // looped 10^12 times)
+  const Int n = unit == 0 ? 0 : std::max<Int>(0, AsInt(count));
   if (unit != 0 && n > static_cast<Int>(kMaxItems / unit)) {
     throw EvalError("result of repetition is too large (limit " + std::to_string(kMaxItems) + ")");
   }

@@ -93,6 +93,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadJointFileCase{"bad.json", "{\n  \"shoulder\": 0.5,\n}\n",
                          "bad.json:3: bad JSON: syntax error while parsing object key - "
                          "unexpected '}'; expected string literal"},
+        BadJointFileCase{"list_key.yaml", "shoulder: 1\n[a, b]: 2\n",
+                         "list_key.yaml:2: expected a joint name as the key, got a list"},
         BadJointFileCase{"overflow.json", "{\"shoulder\": 1e999}",
                          "overflow.json: bad JSON: number overflow parsing '1e999'"},
         BadJointFileCase{"array.json", "[1, 2]",

@@ -123,6 +123,9 @@ TEST(Expression, BuiltinsAndMath) {
 TEST(Expression, AgreesWithPython) {
   const Case cases[] = {
       {"'a,b,,c'.split(',', 1)", "['a', 'b,,c']"},
+      // found by fuzzing: an empty sequence repeated 10^12 times looped 10^12 times
+      {"[] * 9 * 1000000000000", "[]"},
+      {"len('' * 10**15)", "0"},
       {"'a b  c d'.split(None, 2)", "['a', 'b', 'c d']"},
       {"'a b  c d'.rsplit(None, 1)", "['a b  c', 'd']"},
       {"'a,b,c'.rsplit(',', 1)", "['a,b', 'c']"},
