@@ -164,9 +164,10 @@ class SuiteReader {
       r.model.path = Resolve(Text(value, key));
     } else if (key == "args") {
       // a case's argument replaces the default of the same name, the others stay
-      for (auto& [name, text] : Pairs(value, key)) {
-        std::erase_if(r.model.xacro_args, [&](const auto& arg) { return arg.first == name; });
-        r.model.xacro_args.emplace_back(name, text);
+      for (auto& pair : Pairs(value, key)) {
+        // (no structured binding: clang before 16 cannot capture one in a lambda)
+        std::erase_if(r.model.xacro_args, [&](const auto& arg) { return arg.first == pair.first; });
+        r.model.xacro_args.push_back(std::move(pair));
       }
     } else if (key == "packages") {
       for (const auto& [package, dir] : Pairs(value, key)) r.model.packages[package] = Resolve(dir);
