@@ -16,9 +16,12 @@ fi
 cmake --build "$build" -j "$(nproc)" >/dev/null
 
 # leaks are errors, except the ones Mesa's llvmpipe keeps for the life of the process (see the
-# suppression file); undefined behaviour stops the process with a stack
-export ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1
+# suppression file); undefined behaviour stops the process with a stack. The cli tests run the
+# multi-threaded urdfsnap binary hundreds of times, where LeakSanitizer's stop-the-world at exit
+# fails now and then under load ("does not work under ptrace"): they check leaks off.
+asan=check_initialization_order=1:strict_init_order=1
 export LSAN_OPTIONS=suppressions=$root/scripts/lsan-suppressions.txt:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-(cd "$build" && ctest --output-on-failure -j "$(nproc)")
+(cd "$build" && ASAN_OPTIONS=detect_leaks=1:$asan ctest --output-on-failure -j "$(nproc)" -LE cli)
+(cd "$build" && ASAN_OPTIONS=detect_leaks=0:$asan ctest --output-on-failure -j "$(nproc)" -L cli)
 URDFSNAP_FUZZ_BUILD=$build "$root/scripts/fuzz.sh" "${1:-15}"
