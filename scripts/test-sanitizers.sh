@@ -3,7 +3,7 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer's instrumentation into build-asan/
 # (-O1: the tests run a few times slower than in build/), runs the whole test suite there, then
 # each fuzz target for a short time from its seeds (scripts/fuzz.sh with the same build).
-# usage: scripts/test-sanitizers.sh [FUZZ_SECONDS_PER_TARGET]   (default 15)
+# usage: scripts/test-sanitizers.sh [FUZZ_SECONDS_PER_TARGET]   (default 10)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build-asan
@@ -24,4 +24,4 @@ export LSAN_OPTIONS=suppressions=$root/scripts/lsan-suppressions.txt:print_suppr
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 (cd "$build" && ASAN_OPTIONS=detect_leaks=1:$asan ctest --output-on-failure -j "$(nproc)" -LE cli)
 (cd "$build" && ASAN_OPTIONS=detect_leaks=0:$asan ctest --output-on-failure -j "$(nproc)" -L cli)
-URDFSNAP_FUZZ_BUILD=$build "$root/scripts/fuzz.sh" "${1:-15}"
+URDFSNAP_FUZZ_BUILD=$build "$root/scripts/fuzz.sh" "${1:-10}"
