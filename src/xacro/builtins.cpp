@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "xacro/attributes.h"
+#include "xacro/evaluation_budget.h"
 #include "xacro/number_format.h"
 #include "xacro/operators.h"
 
@@ -280,11 +281,18 @@ Value Range(ValueList& a) {
     if (a.size() == 3) step = IntArg("range", a[2]);
   }
   if (step == 0) throw EvalError("range() arg 3 must not be zero");
+  // the length is known before anything is built, so a huge range costs nothing to refuse
+  // (found by fuzzing: a filtered comprehension over range(10**28) allocated gigabytes first)
+  Int span = 0;
+  const bool overflow = step > 0 ? __builtin_sub_overflow(stop, start, &span)
+                                 : __builtin_sub_overflow(start, stop, &span);
+  const Int stride = step > 0 ? step : -step;
+  const Int count = span <= 0 ? 0 : (span - 1) / stride + 1;
+  if (overflow) throw EvalError("range() too large: its length does not fit in 127 bits");
+  CheckListSize(count, "range()");
   ValueList out;
-  for (Int k = start; step > 0 ? k < stop : k > stop; k += step) {
-    if (out.size() >= kMaxItems) throw EvalError("range() too large");
-    out.push_back(Value::Integer(k));
-  }
+  out.reserve(static_cast<size_t>(count));
+  for (Int k = 0; k < count; ++k) out.push_back(Value::Integer(start + k * step));
   return Value::List(std::move(out));
 }
 

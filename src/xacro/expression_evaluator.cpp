@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "xacro/attributes.h"
+#include "xacro/evaluation_budget.h"
 #include "xacro/operators.h"
 
 namespace urdfsnap::xacro {
@@ -131,7 +132,8 @@ class Evaluator {
 
   void Comprehend(const Expr& e, size_t clause_index, ValueList& out) {
     if (clause_index == e.clauses.size()) {
-      if (out.size() >= kMaxItems) throw EvalError("comprehension result too large");
+      if (out.size() == kMaxListItems) CheckListSize(static_cast<Int>(out.size() + 1), "comprehension result");
+      EvaluationBudget::Charge(1);
       out.push_back(Eval(*e.kids[0]));
       return;
     }
@@ -139,6 +141,7 @@ class Evaluator {
     const ValueList items = Iterate(Eval(*clause.iter));
     const size_t mark = locals_.size();
     for (const Value& item : items) {
+      EvaluationBudget::Charge(1);  // filtered-out steps are work too
       locals_.resize(mark);
       if (clause.unpack) {
         const ValueList parts = Iterate(item);
@@ -168,6 +171,9 @@ class Evaluator {
 
 }  // namespace
 
-Value Evaluate(const Expr& expr, NameLookup& names) { return Evaluator(names).Eval(expr); }
+Value Evaluate(const Expr& expr, NameLookup& names) {
+  const EvaluationBudget budget;  // the document's, when a processor has opened one
+  return Evaluator(names).Eval(expr);
+}
 
 }  // namespace urdfsnap::xacro

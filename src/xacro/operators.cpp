@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "xacro/evaluation_budget.h"
 #include "xacro/number_format.h"
 #include "xacro/string_format.h"
 
@@ -133,9 +134,11 @@ Value Repeat(const Value& seq, const Value& count) {
   // an empty sequence stays empty however often it is repeated (found by fuzzing: '[] * 10**12'
   // looped 10^12 times)
   const Int n = unit == 0 ? 0 : std::max<Int>(0, AsInt(count));
-  if (unit != 0 && n > static_cast<Int>(kMaxItems / unit)) {
-    throw EvalError("result of repetition is too large (limit " + std::to_string(kMaxItems) + ")");
+  const size_t limit = seq.type == Value::Type::kStr ? kMaxItems : kMaxListItems;
+  if (unit != 0 && n > static_cast<Int>(limit / unit)) {
+    throw EvalError("result of repetition is too large (limit " + std::to_string(limit) + ")");
   }
+  if (seq.type != Value::Type::kStr) CheckListSize(n * static_cast<Int>(unit), "repeated sequence");
   if (seq.type == Value::Type::kStr) {
     std::string out;
     out.reserve(unit * static_cast<size_t>(n));
@@ -183,6 +186,7 @@ Value BinaryOp(const std::string& op, const Value& a, const Value& b) {
       return Value::Str(a.s + b.s);
     }
     if (a.IsSequence() && a.type == b.type) {
+      CheckListSize(static_cast<Int>(a.list->size() + b.list->size()), "concatenated sequence");
       ValueList out = *a.list;
       out.insert(out.end(), b.list->begin(), b.list->end());
       return a.type == Value::Type::kList ? Value::List(std::move(out)) : Value::Tuple(std::move(out));

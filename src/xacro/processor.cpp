@@ -12,6 +12,7 @@
 #include "common/error.h"
 #include "xacro/expression_evaluator.h"
 #include "xacro/builtins.h"
+#include "xacro/evaluation_budget.h"
 #include "xacro/number_format.h"
 #include "xacro/yaml_loader.h"
 
@@ -689,6 +690,7 @@ void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& m
 }
 
 Result Processor::Run(const std::string& path) {
+  const EvaluationBudget budget;  // one for all of the document's expressions
   try {
     files_.push_back(path);
     file_stack_.push_back({0, 0});

@@ -1,6 +1,8 @@
 // Python's rules for values: constructors, str()/repr(), truth, equality and ordering.
 #include "xacro/python_value.h"
 
+#include "xacro/evaluation_budget.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -279,6 +281,7 @@ ValueList Iterate(const Value& v) {
   switch (v.type) {
     case Value::Type::kList:
     case Value::Type::kTuple: {
+      CheckListSize(static_cast<Int>(v.list->size()), "sequence");
       if (!v.wrapped) return *v.list;
       ValueList out;
       out.reserve(v.list->size());
@@ -286,20 +289,21 @@ ValueList Iterate(const Value& v) {
       return out;
     }
     case Value::Type::kStr: {
-      // one item per UTF-8 code point
-      ValueList out;
-      for (size_t k = 0; k < v.s.size();) {
-        size_t len = 1;
+      // one item per UTF-8 code point, counted before any is made
+      const auto length = [&](size_t k) {
         const unsigned char c = v.s[k];
-        if (c >= 0xf0) len = 4;
-        else if (c >= 0xe0) len = 3;
-        else if (c >= 0xc0) len = 2;
-        out.push_back(Value::Str(v.s.substr(k, len)));
-        k += len;
-      }
+        return c >= 0xf0 ? 4 : c >= 0xe0 ? 3 : c >= 0xc0 ? 2 : 1;
+      };
+      Int count = 0;
+      for (size_t k = 0; k < v.s.size(); k += length(k)) ++count;
+      CheckListSize(count, "string to iterate");
+      ValueList out;
+      out.reserve(static_cast<size_t>(count));
+      for (size_t k = 0; k < v.s.size(); k += length(k)) out.push_back(Value::Str(v.s.substr(k, length(k))));
       return out;
     }
     case Value::Type::kDict: {
+      CheckListSize(static_cast<Int>(v.dict->items.size()), "dict");
       ValueList out;
       for (const auto& item : v.dict->items) out.push_back(item.first);
       return out;

@@ -273,6 +273,34 @@ TEST(Expression, ErrorsArePythonsErrors) {
   for (const auto& c : cases) EXPECT_EQ(EvalFailure(c.expr), c.expected) << c.expr;
 }
 
+// Lists are bounded before they are built, and all an expression builds is bounded in all, so no
+// expression can take gigabytes or minutes (found by fuzzing: a filtered comprehension over
+// range(10**28) asked malloc for 2.4 GB before "range() too large").
+TEST(Expression, ListsAreBoundedBeforeTheyAreBuilt) {
+  const Case cases[] = {
+      {"[i for i in python.range(55555555555555555555555555556) if i % 2 if i //1]",
+       "range() too large: 55555555555555555555555555556 items (the limit is 1048576)"},
+      {"len([i for i in python.range(100000000) if i % 2])",
+       "range() too large: 100000000 items (the limit is 1048576)"},
+      {"python.range(-2**126, 2**126)", "range() too large: its length does not fit in 127 bits"},
+      {"[c for c in 'a' * 2000000]", "string to iterate too large: 2000000 items (the limit is 1048576)"},
+      {"[0] * 2000000", "result of repetition is too large (limit 1048576)"},
+      {"python.range(1000000) + python.range(1000000)",
+       "concatenated sequence too large: 2000000 items (the limit is 1048576)"},
+      {"[0 for i in python.range(4000) for j in python.range(4000) if 0]",
+       "expressions build more than 4194304 list items in all (runaway comprehension or range()?)"},
+      {"[python.range(1000000) for i in python.range(10)]",
+       "expressions build more than 4194304 list items in all (runaway comprehension or range()?)"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(EvalFailure(c.expr), c.expected) << c.expr;
+  // what fits is exact
+  EXPECT_EQ(Eval("len(python.range(1048576))"), "1048576");
+  EXPECT_EQ(Eval("python.range(10, 0, -3)"), "[10, 7, 4, 1]");
+  EXPECT_EQ(Eval("python.range(-5, 5, 4)"), "[-5, -1, 3]");
+  EXPECT_EQ(Eval("python.range(5, 5)"), "[]");
+  EXPECT_EQ(Eval("python.sum([i for i in python.range(1000) for j in python.range(1000) if j == 0])"), "499500");
+}
+
 TEST(Expression, NestingIsBounded) {
   EXPECT_EQ(EvalFailure(std::string(1000, '(') + "1" + std::string(1000, ')')),
             "too many nested parentheses (<expression>, line 1)");
