@@ -11,8 +11,8 @@
 #include "model/joint_values.h"
 #include "model/robot.h"
 #include "model/robot_description.h"
-#include "render/scene_builder.h"
-#include "render/view_fitting.h"
+#include "scene/scene_builder.h"
+#include "scene/view_fitting.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   urdfsnap::fuzz::EnterFreshWorkDir();
@@ -27,14 +27,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const model::Robot robot = model::LoadRobot(text, "robot.urdf", warnings);
     model::DescribeRobot(robot);
     const std::vector<double> positions = model::ResolveJointPositions(robot, {}, true, warnings);
-    render::SceneOptions options;
+    scene::SceneOptions options;
     options.model_file = "robot.urdf";
     options.allow_missing_meshes = true;
     options.tf.enabled = true;
     options.show_collision = true;
-    const render::Scene scene =
-        render::BuildScene(robot, model::ComputeLinkPoses(robot, positions), options, warnings);
-    render::FitView(scene, render::OrbitView{}, 4.0 / 3.0, false);
+    const scene::Scene scene =
+        scene::BuildScene(robot, model::ComputeLinkPoses(robot, positions), options, warnings);
+    scene::FitView(scene, scene::OrbitView{}, 4.0 / 3.0, false);
   } catch (const Error&) {
   }
   return 0;

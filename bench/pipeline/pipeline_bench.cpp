@@ -26,8 +26,8 @@
 #include "image/png_writer.h"
 #include "model/forward_kinematics.h"
 #include "model/joint_values.h"
-#include "render/renderer.h"
-#include "render/scene_builder.h"
+#include "gl/renderer.h"
+#include "scene/scene_builder.h"
 
 extern char** environ;
 
@@ -90,7 +90,7 @@ struct Figures {
 
 // `tf_args` are the render options that give `tf` (none, "--tf", "--tf --no-tf-names").
 Figures Measure(const std::string& binary, const std::string& model_path, int process_runs,
-                const urdfsnap::render::TfOptions& tf = {}, const std::vector<std::string>& tf_args = {}) {
+                const urdfsnap::scene::TfOptions& tf = {}, const std::vector<std::string>& tf_args = {}) {
   using namespace urdfsnap;
   Figures figures;
   const std::string out = "/tmp/urdfsnap_bench_" + std::to_string(getpid()) + ".png";
@@ -106,10 +106,10 @@ Figures Measure(const std::string& binary, const std::string& model_path, int pr
   // per frame, one process, one context
   Warnings warnings;
   const model::Robot robot = model::LoadRobot(ReadText(model_path), model_path, warnings);
-  render::SceneOptions options;
+  scene::SceneOptions options;
   options.model_file = model_path;
   options.tf = tf;
-  render::Renderer renderer(4);
+  gl::Renderer renderer(4);
   std::mt19937 random(42);
   std::uniform_real_distribution<double> angle(-3.0, 3.0);
   std::vector<model::NamedValues> poses(200);
@@ -121,10 +121,10 @@ Figures Measure(const std::string& binary, const std::string& model_path, int pr
   for (const auto& pose : poses) {
     const auto t0 = Clock::now();
     const auto positions = model::ResolveJointPositions(robot, pose, true, warnings);
-    const render::Scene scene =
-        render::BuildScene(robot, model::ComputeLinkPoses(robot, positions), options, warnings);
+    const scene::Scene scene =
+        scene::BuildScene(robot, model::ComputeLinkPoses(robot, positions), options, warnings);
     const auto t1 = Clock::now();
-    frame = renderer.Render(scene, render::OrbitView{}, 640, 480);
+    frame = renderer.Render(scene, scene::OrbitView{}, 640, 480);
     scene_times.push_back(Seconds(t0, t1));
     draw_times.push_back(Seconds(t1, Clock::now()));
     if (figures.triangles == 0) {
@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
                                          "/models/mrm_description/urdf/mrm.urdf";
   const std::string heavy_dir = "/tmp/urdfsnap_bench_heavy_" + std::to_string(getpid());
   const std::string heavy = urdfsnap::bench::WriteHeavyRobot(heavy_dir, 200000);
-  urdfsnap::render::TfOptions tf;
+  urdfsnap::scene::TfOptions tf;
   tf.enabled = true;
   const Figures a = Measure(binary, mrm, 20);
   const Figures t = Measure(binary, mrm, 20, tf, {"--tf"});

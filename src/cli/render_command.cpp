@@ -6,7 +6,7 @@
 #include "cli/command.h"
 #include "cli/model_source.h"
 #include "image/png_writer.h"
-#include "render/gl_context.h"
+#include "gl/gl_context.h"
 #include "request/render_session.h"
 
 namespace urdfsnap::cli {
@@ -27,7 +27,7 @@ std::string DefaultOutput(const std::string& model_path) {
 }
 
 void Run(RenderOptions& o) {
-  const auto gl_loading = render::StartLoadingGl();  // overlaps loading Mesa with reading the model
+  const auto gl_loading = gl::StartLoadingGl();  // overlaps loading Mesa with reading the model
   o.request.model = o.model.ToRequest();
   for (const auto& word : o.joint_words) model::ParseJointAssignment(word, o.request.joints);
   Warnings warnings;

@@ -9,7 +9,7 @@
 #include "cli/command.h"
 #include "common/error.h"
 #include "image/png_writer.h"
-#include "render/gl_context.h"
+#include "gl/gl_context.h"
 #include "snapshot/case_check.h"
 #include "snapshot/reports.h"
 
@@ -59,7 +59,7 @@ int ExitStatus(const std::vector<snapshot::CaseResult>& results) {
 
 void Check(const SnapshotOptions& o) {
   const snapshot::Suite suite = snapshot::ReadSuite(o.suite);
-  const auto gl_loading = render::StartLoadingGl();  // overlaps Mesa with the first model
+  const auto gl_loading = gl::StartLoadingGl();  // overlaps Mesa with the first model
   request::RenderSession session;
   Warnings warnings;
   std::vector<snapshot::CaseResult> results;
@@ -102,7 +102,7 @@ std::vector<const snapshot::SnapshotCase*> Selected(const snapshot::Suite& suite
 void Update(const SnapshotOptions& o) {
   const snapshot::Suite suite = snapshot::ReadSuite(o.suite);
   const auto selected = Selected(suite, o.case_names);
-  const auto gl_loading = render::StartLoadingGl();
+  const auto gl_loading = gl::StartLoadingGl();
   request::RenderSession session;
   Warnings warnings;
   std::vector<snapshot::CaseResult> results;

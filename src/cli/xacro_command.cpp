@@ -11,7 +11,7 @@
 #include "cli/command.h"
 #include "common/error.h"
 #include "common/warnings.h"
-#include "image/atomic_file.h"
+#include "common/atomic_file.h"
 #include "xacro/xacro.h"
 
 namespace urdfsnap::cli {
@@ -66,7 +66,7 @@ void Run(const XacroFlags& flags) {
     const std::filesystem::path parent = std::filesystem::path(flags.output).parent_path();
     std::error_code ignored;  // a folder that cannot be made shows as the write error below
     if (!parent.empty()) std::filesystem::create_directories(parent, ignored);
-    image::WriteFileAtomically(flags.output, text);
+    WriteFileAtomically(flags.output, text);
   }
 }
 

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "common/error.h"
-#include "image/atomic_file.h"
+#include "common/atomic_file.h"
 
 namespace {
 

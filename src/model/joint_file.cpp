@@ -8,7 +8,7 @@
 #include "common/error.h"
 #include "common/file_reading.h"
 #include "model/joint_values.h"
-#include "model/number_text.h"
+#include "common/number_text.h"
 
 namespace urdfsnap::model {
 

@@ -6,7 +6,7 @@
 #include <functional>
 
 #include "common/error.h"
-#include "model/number_text.h"
+#include "common/number_text.h"
 
 namespace urdfsnap::model {
 

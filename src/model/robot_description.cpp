@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "model/number_text.h"
+#include "common/number_text.h"
 
 namespace urdfsnap::model {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "model/number_text.h"
+#include "common/number_text.h"
 
 namespace urdfsnap::model {
 

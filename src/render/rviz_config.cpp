@@ -16,7 +16,7 @@
 
 #include "common/error.h"
 #include "common/file_reading.h"
-#include "model/number_text.h"
+#include "common/number_text.h"
 
 namespace urdfsnap::render {
 namespace {
@@ -99,7 +99,7 @@ class Section {
     const YAML::Node node = Value(key);
     if (!node.IsDefined()) return;
     double value = 0;
-    if (!node.IsScalar() || !model::ParseNumber(node.Scalar(), value)) Fail(key, "a number");
+    if (!node.IsScalar() || !ParseNumber(node.Scalar(), value)) Fail(key, "a number");
     out = std::clamp(value, min, max);
   }
 
@@ -254,7 +254,7 @@ const Display* Chosen(const std::vector<Display>& displays, Warnings& warnings) 
 }
 
 // The Global Options of src/rviz/visualization_manager.cpp (L172-179).
-void ReadGlobalOptions(const Section& manager, SceneOptions& scene) {
+void ReadGlobalOptions(const Section& manager, scene::SceneOptions& scene) {
   const std::optional<Section> global = manager.Child("Global Options", "Global Options");
   if (!global) return;
   global->ReadColour("Background Color", scene.background);
@@ -262,7 +262,7 @@ void ReadGlobalOptions(const Section& manager, SceneOptions& scene) {
 }
 
 // The Grid display's properties (src/rviz/default_plugin/grid_display.cpp L50-99).
-void ReadGrid(const Display& display, const std::string& fixed_frame, GridOptions& grid,
+void ReadGrid(const Display& display, const std::string& fixed_frame, scene::GridOptions& grid,
               Warnings& warnings) {
   const Section& section = display.section;
   grid.enabled = display.enabled;
@@ -276,11 +276,11 @@ void ReadGrid(const Display& display, const std::string& fixed_frame, GridOption
     std::string plane;
     section.ReadString("Plane", plane);
     if (plane == "XY") {
-      grid.plane = GridOptions::Plane::kXY;
+      grid.plane = scene::GridOptions::Plane::kXY;
     } else if (plane == "XZ") {
-      grid.plane = GridOptions::Plane::kXZ;
+      grid.plane = scene::GridOptions::Plane::kXZ;
     } else if (plane == "YZ") {
-      grid.plane = GridOptions::Plane::kYZ;
+      grid.plane = scene::GridOptions::Plane::kYZ;
     } else {
       section.Fail("Plane", "XY, XZ or YZ");
     }
@@ -308,7 +308,7 @@ void ReadGrid(const Display& display, const std::string& fixed_frame, GridOption
 
 // The RobotModel display's properties (src/rviz/default_plugin/robot_model_display.cpp L60-86);
 // a disabled display hides the robot.
-void ReadRobotModel(const Display& display, SceneOptions& scene) {
+void ReadRobotModel(const Display& display, scene::SceneOptions& scene) {
   display.section.ReadBool("Visual Enabled", scene.show_visual);
   display.section.ReadBool("Collision Enabled", scene.show_collision);
   display.section.ReadNumber("Alpha", scene.alpha, 0, 1);
@@ -316,7 +316,7 @@ void ReadRobotModel(const Display& display, SceneOptions& scene) {
 }
 
 // The TF display's properties (src/rviz/default_plugin/tf_display.cpp L164-191).
-void ReadTf(const Display& display, TfOptions& tf, Warnings& warnings) {
+void ReadTf(const Display& display, scene::TfOptions& tf, Warnings& warnings) {
   const Section& section = display.section;
   tf.enabled = display.enabled;
   section.ReadBool("Show Names", tf.show_names);
@@ -333,7 +333,7 @@ void ReadTf(const Display& display, TfOptions& tf, Warnings& warnings) {
 // Views/Current (src/rviz/view_manager.cpp) when it is an Orbit view: its properties in
 // src/rviz/default_plugin/view_controllers/orbit_view_controller.cpp L58-88 and the near clip of
 // src/rviz/view_controller.cpp L58-62, with their limits.
-void ReadView(const Section& manager, OrbitView& view, Warnings& warnings) {
+void ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings) {
   const std::optional<Section> views = manager.Child("Views", "Views");
   if (!views) return;
   const std::optional<Section> current = views->Child("Current", "Views/Current");

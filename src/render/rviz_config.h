@@ -5,15 +5,15 @@
 #include <string>
 
 #include "common/warnings.h"
-#include "render/orbit_view.h"
-#include "render/scene_builder.h"
+#include "scene/orbit_view.h"
+#include "scene/scene_builder.h"
 
 namespace urdfsnap::render {
 
 // The parts of an .rviz file urdfsnap honours, applied on top of the given defaults.
 struct RvizConfig {
-  SceneOptions scene;
-  OrbitView view;
+  scene::SceneOptions scene;
+  scene::OrbitView view;
 };
 
 // Reads the file at `path` and applies to `defaults`:

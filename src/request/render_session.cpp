@@ -6,11 +6,11 @@
 
 #include "common/error.h"
 #include "model/forward_kinematics.h"
-#include "model/number_text.h"
-#include "render/mesh_prefetch.h"
+#include "common/number_text.h"
+#include "scene/mesh_prefetch.h"
 #include "render/rviz_config.h"
-#include "render/scene_builder.h"
-#include "render/view_fitting.h"
+#include "scene/scene_builder.h"
+#include "scene/view_fitting.h"
 #include "request/value_parsing.h"
 
 namespace urdfsnap::request {
@@ -20,8 +20,8 @@ namespace {
 double ParseInRange(const std::string& text, const std::string& option, double low, double high) {
   const double value = ParseFinite(text, option);
   if (value < low || value > high) {
-    throw Error(option + " '" + text + "': expected a value from " + model::FormatNumber(low) +
-                " to " + model::FormatNumber(high));
+    throw Error(option + " '" + text + "': expected a value from " + FormatNumber(low) +
+                " to " + FormatNumber(high));
   }
   return value;
 }
@@ -34,7 +34,7 @@ Eigen::Vector3f ParseColour(const std::string& text, const std::string& option) 
   return (rgb / 255).cast<float>();
 }
 
-void ApplyView(const RenderRequest& r, const OptionLabel& label, render::OrbitView& view) {
+void ApplyView(const RenderRequest& r, const OptionLabel& label, scene::OrbitView& view) {
   if (!r.yaw.empty()) view.yaw = ParseFinite(r.yaw, label("yaw"));
   if (!r.pitch.empty()) view.pitch = ParseFinite(r.pitch, label("pitch"));
   if (!r.distance.empty()) view.distance = ParseInRange(r.distance, label("distance"), 0.01, 1e6);
@@ -43,7 +43,7 @@ void ApplyView(const RenderRequest& r, const OptionLabel& label, render::OrbitVi
   if (!r.fov.empty()) view.fov_y = ParseInRange(r.fov, label("fov"), 0.06, 90) * std::numbers::pi / 180;
 }
 
-void ApplyScene(const RenderRequest& r, const OptionLabel& label, render::SceneOptions& scene) {
+void ApplyScene(const RenderRequest& r, const OptionLabel& label, scene::SceneOptions& scene) {
   if (!r.fixed_frame.empty()) scene.fixed_frame = r.fixed_frame;
   if (!r.background.empty()) scene.background = ParseColour(r.background, label("background"));
   if (!r.alpha.empty()) scene.alpha = ParseInRange(r.alpha, label("alpha"), 0, 1);
@@ -75,9 +75,9 @@ const RenderSession::LoadedModel& RenderSession::Model(const ModelRequest& reque
   return models_.emplace(request, LoadedModel{std::move(robot), std::move(warnings)}).first->second;
 }
 
-render::Renderer& RenderSession::RendererFor(int samples) {
-  std::unique_ptr<render::Renderer>& renderer = renderers_[samples];
-  if (!renderer) renderer = std::make_unique<render::Renderer>(samples);
+gl::Renderer& RenderSession::RendererFor(int samples) {
+  std::unique_ptr<gl::Renderer>& renderer = renderers_[samples];
+  if (!renderer) renderer = std::make_unique<gl::Renderer>(samples);
   return *renderer;
 }
 
@@ -106,11 +106,11 @@ image::Image RenderSession::Render(const RenderRequest& r, const OptionLabel& la
   given.insert(given.end(), r.joints.begin(), r.joints.end());
   const std::vector<double> positions =
       model::ResolveJointPositions(robot, given, !r.no_clamp, warnings);
-  render::PrefetchMeshFiles(robot, config.scene);  // all cores on the first render of a model
-  const render::Scene scene =
-      render::BuildScene(robot, model::ComputeLinkPoses(robot, positions), config.scene, warnings);
+  scene::PrefetchMeshFiles(robot, config.scene);  // all cores on the first render of a model
+  const scene::Scene scene =
+      scene::BuildScene(robot, model::ComputeLinkPoses(robot, positions), config.scene, warnings);
   const double aspect = static_cast<double>(size.width) / size.height;
-  if (r.fit) config.view = render::FitView(scene, config.view, aspect, !r.focal.empty());
+  if (r.fit) config.view = scene::FitView(scene, config.view, aspect, !r.focal.empty());
   return RendererFor(r.no_aa ? 0 : 4).Render(scene, config.view, size.width, size.height);
 }
 

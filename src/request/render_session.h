@@ -12,7 +12,7 @@
 #include "common/warnings.h"
 #include "image/image.h"
 #include "model/robot.h"
-#include "render/renderer.h"
+#include "gl/renderer.h"
 #include "request/render_request.h"
 
 namespace urdfsnap::request {
@@ -39,10 +39,10 @@ class RenderSession {
     Warnings warnings;  // given again to every render of the model
   };
   const LoadedModel& Model(const ModelRequest& request);
-  render::Renderer& RendererFor(int samples);
+  gl::Renderer& RendererFor(int samples);
 
   std::map<ModelRequest, LoadedModel> models_;
-  std::map<int, std::unique_ptr<render::Renderer>> renderers_;
+  std::map<int, std::unique_ptr<gl::Renderer>> renderers_;
 };
 
 }  // namespace urdfsnap::request

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "image/atomic_file.h"
+#include "common/atomic_file.h"
 #include "image/png_writer.h"
 #include "snapshot/markup_text.h"
 #include "snapshot/reports.h"
@@ -129,7 +129,7 @@ void WriteHtmlReport(const std::string& dir, const Suite& suite, const std::vect
     if (r.status != CaseStatus::kPassed) html << CaseSection(dir, r);
   }
   html << kScript << "</body>\n</html>\n";
-  image::WriteFileAtomically((fs::path(dir) / "index.html").string(), html.str());
+  WriteFileAtomically((fs::path(dir) / "index.html").string(), html.str());
 }
 
 }  // namespace urdfsnap::snapshot

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "image/atomic_file.h"
+#include "common/atomic_file.h"
 #include "snapshot/markup_text.h"
 #include "snapshot/reports.h"
 
@@ -73,7 +73,7 @@ void WriteJunitReport(const std::string& path, const Suite& suite,
         << element << ">\n    </testcase>\n";
   }
   xml << "  </testsuite>\n</testsuites>\n";
-  image::WriteFileAtomically(path, xml.str());
+  WriteFileAtomically(path, xml.str());
 }
 
 }  // namespace urdfsnap::snapshot

@@ -8,7 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "common/error.h"
-#include "model/number_text.h"
+#include "common/number_text.h"
 
 namespace urdfsnap::snapshot {
 
@@ -111,9 +111,9 @@ class SuiteReader {
   double Number(const YAML::Node& value, const std::string& key, double low, double high) const {
     double number = 0;
     const std::string text = Text(value, key);
-    if (!model::ParseNumber(text, number) || number < low || number > high) {
-      throw ErrorAt(value, "'" + key + "': expected a number from " + model::FormatNumber(low) +
-                               " to " + model::FormatNumber(high) + ", got '" + text + "'");
+    if (!ParseNumber(text, number) || number < low || number > high) {
+      throw ErrorAt(value, "'" + key + "': expected a number from " + FormatNumber(low) +
+                               " to " + FormatNumber(high) + ", got '" + text + "'");
     }
     return number;
   }

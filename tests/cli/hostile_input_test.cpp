@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "support/temp_folder.h"
 #include "urdfsnap_process.h"
 
 namespace {
@@ -327,9 +328,8 @@ int ErrorLines(const std::string& err) {
 
 TEST_P(HostileInputTest, EndsWithOneLocatedErrorAndLeavesTheOutputAlone) {
   const HostileCase& c = GetParam();
-  const fs::path dir = fs::temp_directory_path() / ("urdfsnap_hostile_" + c.name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const urdfsnap::test::TempFolder folder("hostile_" + c.name);
+  const fs::path& dir = folder.path();
   for (const auto& [name, bytes] : c.files) std::ofstream(dir / name, std::ios::binary) << bytes;
   const fs::path out = dir / "out.png";
   const std::string precious = "an image the user cares about";
@@ -352,7 +352,6 @@ TEST_P(HostileInputTest, EndsWithOneLocatedErrorAndLeavesTheOutputAlone) {
   }
   EXPECT_EQ(ReadAll(out), precious);
   EXPECT_EQ(Listing(dir), before) << "a file appeared or disappeared";
-  fs::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, HostileInputTest, ::testing::ValuesIn(Cases()),

@@ -6,7 +6,8 @@
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
-#include <random>
+
+#include "support/temp_folder.h"
 
 namespace urdfsnap {
 namespace {
@@ -15,17 +16,10 @@ namespace fs = std::filesystem;
 
 class FileReadingTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("urdfsnap-file-reading-" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string Write(const std::string& name, const std::string& bytes) const {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
+    return folder_.Write(name, bytes);
   }
-  fs::path dir_;
+  test::TempFolder folder_{"file_reading"};
 };
 
 // The reason and errno ReadFileBounded throws for `path`, or "no error".
@@ -58,9 +52,9 @@ TEST_F(FileReadingTest, EndlessDevicesStopAtTheLimit) {
 }
 
 TEST_F(FileReadingTest, SystemErrorsKeepTheirReasonAndErrno) {
-  EXPECT_EQ(Failure((dir_ / "missing").string(), 100),
+  EXPECT_EQ(Failure(folder_.Path("missing"), 100),
             std::make_pair(std::string("No such file or directory"), ENOENT));
-  EXPECT_EQ(Failure(dir_.string(), 100), std::make_pair(std::string("Is a directory"), EISDIR));
+  EXPECT_EQ(Failure(folder_.path().string(), 100), std::make_pair(std::string("Is a directory"), EISDIR));
 }
 
 }  // namespace

@@ -169,7 +169,7 @@ struct RvizConfigTest : ::testing::Test {
 
 TEST_F(RvizConfigTest, ReadsEveryPropertyOfAFileRvizWrote) {
   const RvizConfig config = Read(kEveryProperty);
-  const SceneOptions& scene = config.scene;
+  const scene::SceneOptions& scene = config.scene;
   EXPECT_EQ(scene.fixed_frame, "link_02");  // RViz drops the leading '/'
   EXPECT_TRUE(scene.background.isApprox(Eigen::Vector3f(1, 128 / 255.f, 0)));
 
@@ -178,7 +178,7 @@ TEST_F(RvizConfigTest, ReadsEveryPropertyOfAFileRvizWrote) {
   EXPECT_EQ(scene.grid.cell_size, 0.5);
   EXPECT_TRUE(scene.grid.colour.isApprox(Eigen::Vector3f(10, 20, 30) / 255.f));
   EXPECT_EQ(scene.grid.alpha, 0.25f);
-  EXPECT_EQ(scene.grid.plane, GridOptions::Plane::kXZ);
+  EXPECT_EQ(scene.grid.plane, scene::GridOptions::Plane::kXZ);
   EXPECT_EQ(scene.grid.offset, Eigen::Vector3d(1, -2, 0.5));
 
   EXPECT_FALSE(scene.show_visual);
@@ -191,14 +191,14 @@ TEST_F(RvizConfigTest, ReadsEveryPropertyOfAFileRvizWrote) {
   EXPECT_FALSE(scene.tf.show_arrows);
   EXPECT_EQ(scene.tf.marker_scale, 2.5);
 
-  const OrbitView& view = config.view;
+  const scene::OrbitView& view = config.view;
   EXPECT_EQ(view.distance, 3.25);
   EXPECT_EQ(view.yaw, 5.5);
   EXPECT_EQ(view.pitch, -0.25);
   EXPECT_TRUE(view.focal.isApprox(Eigen::Vector3d(0.1, -0.2, 0.3), 1e-7));
   EXPECT_EQ(view.fov_y, 0.5);
   EXPECT_EQ(view.near_clip, 0.05);
-  EXPECT_EQ(view.far_clip, OrbitView{}.far_clip);
+  EXPECT_EQ(view.far_clip, scene::OrbitView{}.far_clip);
 
   EXPECT_THAT(warnings.messages(),
               ElementsAre(path + ": skipped display class 'rviz/MarkerArray', which urdfsnap "
@@ -213,10 +213,10 @@ TEST_F(RvizConfigTest, MrmSampleIsTheCloseView) {
   EXPECT_NEAR(config.view.pitch, 0.35, 1e-7);
   EXPECT_EQ(config.view.distance, 4.5);
   EXPECT_TRUE(config.view.focal.isApprox(Eigen::Vector3d(0, 0, 1.2), 1e-7));
-  EXPECT_NEAR(config.view.fov_y, OrbitView{}.fov_y, 1e-7);
-  EXPECT_NEAR(config.view.near_clip, OrbitView{}.near_clip, 1e-9);
+  EXPECT_NEAR(config.view.fov_y, scene::OrbitView{}.fov_y, 1e-7);
+  EXPECT_NEAR(config.view.near_clip, scene::OrbitView{}.near_clip, 1e-9);
   // everything else is RViz's default: grid and robot on, TF off
-  const SceneOptions defaults;
+  const scene::SceneOptions defaults;
   EXPECT_EQ(config.scene.background, defaults.background);
   EXPECT_TRUE(config.scene.grid.enabled);
   EXPECT_EQ(config.scene.grid.plane_cell_count, defaults.grid.plane_cell_count);
@@ -253,12 +253,12 @@ TEST_F(RvizConfigTest, MissingKeysKeepTheDefaults) {
   EXPECT_EQ(config.scene.alpha, 0.3);
   EXPECT_TRUE(config.scene.show_visual);
   EXPECT_EQ(config.scene.grid.cell_size, 2);
-  EXPECT_EQ(config.scene.grid.plane, GridOptions::Plane::kXY);
+  EXPECT_EQ(config.scene.grid.plane, scene::GridOptions::Plane::kXY);
   EXPECT_TRUE(config.scene.tf.enabled);
   EXPECT_EQ(config.scene.tf.marker_scale, 3);
   EXPECT_EQ(config.view.yaw, 1);
   EXPECT_EQ(config.view.focal, Eigen::Vector3d(1, 2, 3));
-  EXPECT_EQ(config.view.distance, OrbitView{}.distance);
+  EXPECT_EQ(config.view.distance, scene::OrbitView{}.distance);
   EXPECT_TRUE(warnings.empty());
 }
 

@@ -4,23 +4,16 @@
 #include <string>
 
 #include "common/warnings.h"
+#include "support/temp_folder.h"
 #include "xacro/xacro.h"
 
 namespace urdfsnap::xacro {
 
-class TestFiles {
+// A temporary folder to write xacro files into (Write(name, text) returns the full path).
+class TestFiles : public test::TempFolder {
  public:
-  TestFiles();
-  ~TestFiles();
-  TestFiles(const TestFiles&) = delete;
-  TestFiles& operator=(const TestFiles&) = delete;
-
-  // Writes `text` to `name` (relative to the folder, subfolders created); returns the full path.
-  std::string Write(const std::string& name, const std::string& text) const;
-  const std::string& dir() const { return dir_; }
-
- private:
-  std::string dir_;
+  TestFiles() : TempFolder("xacro_test") {}
+  std::string dir() const { return path().string(); }
 };
 
 // Expands `text` written as input.xacro in a fresh folder; returns the output XML.

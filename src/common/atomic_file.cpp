@@ -1,0 +1,76 @@
+// Temporary-file-and-rename writing of whole files (PNG, and the HTML/XML/URDF other commands
+// write).
+#include "common/atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <random>
+#include <system_error>
+
+#include "common/error.h"
+
+namespace urdfsnap {
+namespace {
+
+[[noreturn]] void ThrowWriteError(const std::string& path, int error_number) {
+  throw Error(path + ": cannot write: " + std::system_category().message(error_number));
+}
+
+// Six random letters and digits, as mkstemp would pick (mkstemp itself makes files mode 0600;
+// an output image should get the usual 0666 less the umask).
+std::string RandomSuffix() {
+  static constexpr char kAlphabet[] =
+      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+  std::random_device device;
+  std::uniform_int_distribution<int> pick(0, sizeof kAlphabet - 2);
+  std::string suffix;
+  for (int i = 0; i < 6; ++i) suffix += kAlphabet[pick(device)];
+  return suffix;
+}
+
+// Opens a new temporary file beside `path`; returns its descriptor and fills `temp_path`.
+int CreateTemporary(const std::string& path, std::string& temp_path) {
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    temp_path = path + ".tmp-" + RandomSuffix();
+    const int fd = ::open(temp_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) return fd;
+    if (errno != EEXIST) ThrowWriteError(path, errno);
+  }
+  ThrowWriteError(path, EEXIST);
+}
+
+// Writes all of `bytes`; returns 0 or the errno of the failure.
+int WriteAll(int fd, std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t written = ::write(fd, bytes.data(), bytes.size());
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    bytes.remove_prefix(static_cast<std::size_t>(written));
+  }
+  return 0;
+}
+
+}  // namespace
+
+void WriteFileAtomically(const std::string& path, std::string_view bytes) {
+  std::string temp_path;
+  const int fd = CreateTemporary(path, temp_path);
+  // no fsync: the promise is "never a partial file after a failed run", not durability across a
+  // power cut, and fsync would cost more than encoding the image
+  int error_number = WriteAll(fd, bytes);
+  if (::close(fd) != 0 && error_number == 0) error_number = errno;
+  if (error_number == 0 && std::rename(temp_path.c_str(), path.c_str()) != 0) {
+    error_number = errno;
+  }
+  if (error_number != 0) {
+    ::unlink(temp_path.c_str());
+    ThrowWriteError(path, error_number);
+  }
+}
+
+}  // namespace urdfsnap

@@ -1,0 +1,99 @@
+// The OpenGL core-profile API, for the render library's .cpp files only (never a public header).
+// libOSMesa (and through it LLVM, 100 ms of relocations) is loaded only when a context is made,
+// so commands that do not render start fast: every GL entry point used is a function pointer
+// here, filled by LoadGlFunctions from OSMesaGetProcAddress. A call to a GL function not in
+// this list fails to compile, which is how the list stays complete.
+#pragma once
+
+#include <GL/glcorearb.h>
+
+// X(type, name) for each GL function the renderer calls.
+#define URDFSNAP_GL_FUNCTIONS(X)                                      \
+  X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                          \
+  X(PFNGLATTACHSHADERPROC, glAttachShader)                            \
+  X(PFNGLBINDBUFFERPROC, glBindBuffer)                                \
+  X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                      \
+  X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                    \
+  X(PFNGLBINDTEXTUREPROC, glBindTexture)                              \
+  X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                      \
+  X(PFNGLBLENDFUNCPROC, glBlendFunc)                                  \
+  X(PFNGLBLENDFUNCSEPARATEPROC, glBlendFuncSeparate)                  \
+  X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)                      \
+  X(PFNGLBUFFERDATAPROC, glBufferData)                                \
+  X(PFNGLBUFFERSUBDATAPROC, glBufferSubData)                          \
+  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)        \
+  X(PFNGLCLEARPROC, glClear)                                          \
+  X(PFNGLCLEARCOLORPROC, glClearColor)                                \
+  X(PFNGLCLEARDEPTHPROC, glClearDepth)                                \
+  X(PFNGLCOLORMASKPROC, glColorMask)                                  \
+  X(PFNGLCOMPILESHADERPROC, glCompileShader)                          \
+  X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                          \
+  X(PFNGLCREATESHADERPROC, glCreateShader)                            \
+  X(PFNGLCULLFACEPROC, glCullFace)                                    \
+  X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                          \
+  X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)                \
+  X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                          \
+  X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)              \
+  X(PFNGLDELETESHADERPROC, glDeleteShader)                            \
+  X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                        \
+  X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays)                \
+  X(PFNGLDEPTHFUNCPROC, glDepthFunc)                                  \
+  X(PFNGLDEPTHMASKPROC, glDepthMask)                                  \
+  X(PFNGLDISABLEPROC, glDisable)                                      \
+  X(PFNGLDISABLEVERTEXATTRIBARRAYPROC, glDisableVertexAttribArray)    \
+  X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                \
+  X(PFNGLDRAWELEMENTSPROC, glDrawElements)                            \
+  X(PFNGLENABLEPROC, glEnable)                                        \
+  X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)      \
+  X(PFNGLFINISHPROC, glFinish)                                        \
+  X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)      \
+  X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)            \
+  X(PFNGLFRONTFACEPROC, glFrontFace)                                  \
+  X(PFNGLGENBUFFERSPROC, glGenBuffers)                                \
+  X(PFNGLGENERATEMIPMAPPROC, glGenerateMipmap)                        \
+  X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                      \
+  X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                    \
+  X(PFNGLGENTEXTURESPROC, glGenTextures)                              \
+  X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                      \
+  X(PFNGLGETERRORPROC, glGetError)                                    \
+  X(PFNGLGETINTEGERVPROC, glGetIntegerv)                              \
+  X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                  \
+  X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                            \
+  X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                    \
+  X(PFNGLGETSHADERIVPROC, glGetShaderiv)                              \
+  X(PFNGLGETSTRINGPROC, glGetString)                                  \
+  X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                \
+  X(PFNGLLINEWIDTHPROC, glLineWidth)                                  \
+  X(PFNGLLINKPROGRAMPROC, glLinkProgram)                              \
+  X(PFNGLPIXELSTOREIPROC, glPixelStorei)                              \
+  X(PFNGLPOLYGONOFFSETPROC, glPolygonOffset)                          \
+  X(PFNGLREADPIXELSPROC, glReadPixels)                                \
+  X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)              \
+  X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, glRenderbufferStorageMultisample) \
+  X(PFNGLSHADERSOURCEPROC, glShaderSource)                            \
+  X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                \
+  X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                          \
+  X(PFNGLTEXSUBIMAGE2DPROC, glTexSubImage2D)                          \
+  X(PFNGLUNIFORM1FPROC, glUniform1f)                                  \
+  X(PFNGLUNIFORM1IPROC, glUniform1i)                                  \
+  X(PFNGLUNIFORM2FVPROC, glUniform2fv)                                \
+  X(PFNGLUNIFORM3FVPROC, glUniform3fv)                                \
+  X(PFNGLUNIFORM4FVPROC, glUniform4fv)                                \
+  X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                    \
+  X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                    \
+  X(PFNGLUSEPROGRAMPROC, glUseProgram)                                \
+  X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer)              \
+  X(PFNGLVIEWPORTPROC, glViewport)
+
+namespace urdfsnap::gl {
+
+#define URDFSNAP_DECLARE_GL_FUNCTION(type, name) inline type name = nullptr;
+URDFSNAP_GL_FUNCTIONS(URDFSNAP_DECLARE_GL_FUNCTION)
+#undef URDFSNAP_DECLARE_GL_FUNCTION
+
+// Fills every pointer above through `get_proc` (OSMesaGetProcAddress). Throws urdfsnap::Error
+// naming the first function the library does not provide.
+using GlProcLookup = void (*(*)(const char* name))();
+void LoadGlFunctions(GlProcLookup get_proc);
+
+}  // namespace urdfsnap::gl

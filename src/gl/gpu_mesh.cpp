@@ -1,0 +1,54 @@
+// Upload and drawing of triangle meshes.
+#include "gl/gpu_mesh.h"
+
+#include <vector>
+
+#include "gl/gl_api.h"
+
+namespace urdfsnap::gl {
+
+GpuMesh::GpuMesh(const geometry::TriangleMesh& mesh)
+    : index_count_(static_cast<int>(mesh.indices.size())) {
+  std::vector<float> interleaved;
+  interleaved.reserve(mesh.positions.size() * 8);
+  const bool has_uvs = mesh.uvs.size() == mesh.positions.size();
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    interleaved.insert(interleaved.end(), mesh.positions[i].data(), mesh.positions[i].data() + 3);
+    interleaved.insert(interleaved.end(), mesh.normals[i].data(), mesh.normals[i].data() + 3);
+    // without coordinates every vertex samples (0, 0), as Ogre's fixed-function default does
+    const Eigen::Vector2f uv = has_uvs ? mesh.uvs[i] : Eigen::Vector2f::Zero();
+    interleaved.insert(interleaved.end(), uv.data(), uv.data() + 2);
+  }
+  glGenVertexArrays(1, &vertex_array_);
+  glBindVertexArray(vertex_array_);
+  glGenBuffers(2, buffers_);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
+               interleaved.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[1]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+               static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+               mesh.indices.data(), GL_STATIC_DRAW);
+  const GLsizei stride = 8 * sizeof(float);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(3 * sizeof(float)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(6 * sizeof(float)));
+  glBindVertexArray(0);
+}
+
+GpuMesh::~GpuMesh() {
+  glDeleteBuffers(2, buffers_);
+  glDeleteVertexArrays(1, &vertex_array_);
+}
+
+void GpuMesh::Draw() const {
+  glBindVertexArray(vertex_array_);
+  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace urdfsnap::gl

@@ -1,0 +1,92 @@
+// GLSL compilation and linking with readable errors (after Drake's internal_shader_program.cc).
+#include "gl/shader_program.h"
+
+#include <vector>
+
+#include "common/error.h"
+#include "gl/embedded_shaders.h"
+#include "gl/gl_api.h"
+
+namespace urdfsnap::gl {
+
+namespace {
+
+std::string InfoLog(GLuint object, bool is_program) {
+  GLint length = 0;
+  if (is_program) {
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  } else {
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  }
+  std::vector<char> log(static_cast<size_t>(length) + 1, '\0');
+  if (is_program) {
+    glGetProgramInfoLog(object, length, nullptr, log.data());
+  } else {
+    glGetShaderInfoLog(object, length, nullptr, log.data());
+  }
+  return log.data();
+}
+
+GLuint Compile(GLenum stage, const std::string& name) {
+  const std::string_view source = EmbeddedShader(name);
+  const GLchar* text = source.data();
+  const GLint length = static_cast<GLint>(source.size());
+  const GLuint shader = glCreateShader(stage);
+  glShaderSource(shader, 1, &text, &length);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    const std::string log = InfoLog(shader, false);
+    glDeleteShader(shader);
+    throw Error("shader '" + name + "' failed to compile: " + log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+ShaderProgram::ShaderProgram(const std::string& vertex_name, const std::string& fragment_name) {
+  const GLuint vertex = Compile(GL_VERTEX_SHADER, vertex_name);
+  const GLuint fragment = Compile(GL_FRAGMENT_SHADER, fragment_name);
+  id_ = glCreateProgram();
+  glAttachShader(id_, vertex);
+  glAttachShader(id_, fragment);
+  glLinkProgram(id_);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    const std::string log = InfoLog(id_, true);
+    glDeleteProgram(id_);
+    throw Error("shader program '" + vertex_name + "' + '" + fragment_name +
+                "' failed to link: " + log);
+  }
+}
+
+ShaderProgram::~ShaderProgram() { glDeleteProgram(id_); }
+
+void ShaderProgram::Use() const { glUseProgram(id_); }
+
+int ShaderProgram::Location(const char* name) const { return glGetUniformLocation(id_, name); }
+
+void ShaderProgram::Set(const char* name, const Eigen::Matrix4f& value) const {
+  glUniformMatrix4fv(Location(name), 1, GL_FALSE, value.data());
+}
+
+void ShaderProgram::Set(const char* name, const Eigen::Matrix3f& value) const {
+  glUniformMatrix3fv(Location(name), 1, GL_FALSE, value.data());
+}
+
+void ShaderProgram::Set(const char* name, const Eigen::Vector4f& value) const {
+  glUniform4fv(Location(name), 1, value.data());
+}
+
+void ShaderProgram::Set(const char* name, const Eigen::Vector3f& value) const {
+  glUniform3fv(Location(name), 1, value.data());
+}
+
+void ShaderProgram::Set(const char* name, int value) const { glUniform1i(Location(name), value); }
+
+}  // namespace urdfsnap::gl

@@ -1,0 +1,52 @@
+// The GL-free description of one frame: what to draw, where, in which colour. The scene builder
+// fills it from a posed robot; the renderer turns it into pixels. Everything is expressed in the
+// fixed frame F.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "geometry/triangle_mesh.h"
+#include "scene/text_layout.h"
+#include "scene/texture_image.h"
+
+namespace urdfsnap::scene {
+
+// One lit mesh: a robot visual or collision shape, or a part of a TF marker.
+struct DrawItem {
+  std::shared_ptr<const geometry::TriangleMesh> mesh;
+  Eigen::Affine3d X_FG;                 // mesh pose in the fixed frame, including its scale
+  Eigen::Vector4f rgba{1, 0, 0, 1};     // diffuse colour and alpha
+  std::string link;                     // the link it belongs to ("" for markers)
+  // modulates the lit colour (Ogre's default texture unit), sampled at the mesh's uvs; none if null
+  std::shared_ptr<const TextureImage> texture;
+  Eigen::Vector3f emissive{0, 0, 0};    // self-illumination, added to the lit colour
+};
+
+// Unlit line segments (pairs of points), drawn 1 pixel wide.
+struct LineSet {
+  std::vector<Eigen::Vector3f> points;  // segment i runs from points[2i] to points[2i+1]
+  Eigen::Vector4f rgba{1, 1, 1, 1};
+};
+
+// Unlit text that faces the camera (TF frame names): quads in the camera's image plane, x right and
+// y up in metres, hung at an anchor point, textured with a luminance-alpha glyph texture, blended,
+// depth-tested without depth writes and pulled slightly towards the camera (movable_text.cpp).
+struct TextLabel {
+  std::shared_ptr<const TextureImage> texture;
+  std::vector<GlyphQuad> quads;
+  Eigen::Vector3d anchor = Eigen::Vector3d::Zero();   // in the fixed frame
+  Eigen::Vector4f rgba{1, 1, 1, 1};
+};
+
+struct Scene {
+  Eigen::Vector3f background{48 / 255.f, 48 / 255.f, 48 / 255.f};
+  std::vector<DrawItem> items;
+  std::vector<LineSet> lines;           // transparent overlays such as the grid
+  std::vector<TextLabel> labels;        // blended with the transparent geometry
+};
+
+}  // namespace urdfsnap::scene

@@ -1,0 +1,58 @@
+// Texture decoding with stb_image (compiled here, privately) and a process-wide cache.
+#include "scene/texture_file.h"
+
+#include <filesystem>
+#include <map>
+#include <mutex>
+
+#include "common/error.h"
+#include "image/image.h"
+
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_NO_LINEAR
+#define STBI_NO_HDR
+#define STBI_MAX_DIMENSIONS 16384   // the same as image::kMaxImageSide
+#include <stb/stb_image.h>
+
+namespace urdfsnap::scene {
+
+namespace {
+
+static_assert(STBI_MAX_DIMENSIONS == image::kMaxImageSide);
+
+std::shared_ptr<const TextureImage> Decode(const std::string& path) {
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* pixels = stbi_load(path.c_str(), &width, &height, &channels, 4);
+  if (!pixels) throw Error(SourceLocation{path}, std::string("cannot read texture: ") + stbi_failure_reason());
+  auto texture = std::make_shared<TextureImage>();
+  texture->width = width;
+  texture->height = height;
+  texture->channels = 4;
+  texture->texels.assign(pixels, pixels + static_cast<size_t>(width) * height * 4);
+  stbi_image_free(pixels);
+  return texture;
+}
+
+}  // namespace
+
+std::shared_ptr<const TextureImage> LoadTextureFile(const std::string& path) {
+  std::error_code error;
+  const std::string key = std::filesystem::canonical(path, error).string();
+  if (error) throw Error(SourceLocation{path}, "cannot read texture: " + error.message());
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const TextureImage>> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto& texture = cache[key];
+  if (!texture) {
+    try {
+      texture = Decode(key);
+    } catch (...) {
+      cache.erase(key);
+      throw;
+    }
+  }
+  return texture;
+}
+
+}  // namespace urdfsnap::scene
