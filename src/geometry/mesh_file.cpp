@@ -13,13 +13,12 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <future>
 #include <iterator>
-#include <map>
-#include <mutex>
 #include <system_error>
+#include <tuple>
 
 #include "common/error.h"
+#include "common/shared_cache.h"
 
 namespace urdfsnap::geometry {
 
@@ -204,32 +203,12 @@ std::shared_ptr<const MeshFile> LoadMeshFile(const std::string& path) {
   std::error_code ec;
   const fs::path canonical = fs::canonical(path, ec);
   if (ec) throw Error(SourceLocation{path}, "cannot read mesh file: " + ec.message());
-
-  // one load per file: the first caller loads, concurrent callers of the same file wait for it
-  using Result = std::shared_future<std::shared_ptr<const MeshFile>>;
-  static std::mutex mutex;
-  static std::map<std::string, Result> cache;
-  std::promise<std::shared_ptr<const MeshFile>> promise;
-  Result result;
-  bool first = false;
-  {
-    std::lock_guard lock(mutex);
-    auto [it, inserted] = cache.try_emplace(canonical.string());
-    if (inserted) it->second = promise.get_future().share();
-    result = it->second;
-    first = inserted;
-  }
-  if (first) {
-    try {
-      promise.set_value(std::make_shared<const MeshFile>(Load(canonical)));
-    } catch (...) {
-      // callers already waiting get the error; later ones try again
-      promise.set_exception(std::current_exception());
-      std::lock_guard lock(mutex);
-      cache.erase(canonical.string());
-    }
-  }
-  return result.get();
+  // keyed by the file's identity and version, so an edited file is read again
+  const auto modified = fs::last_write_time(canonical, ec).time_since_epoch().count();
+  const auto size = fs::file_size(canonical, ec);
+  static SharedCache<std::tuple<std::string, long long, std::uintmax_t>, MeshFile> cache;
+  return cache.Get({canonical.string(), static_cast<long long>(modified), ec ? 0 : size},
+                   [&] { return std::make_shared<const MeshFile>(Load(canonical)); });
 }
 
 }  // namespace urdfsnap::geometry

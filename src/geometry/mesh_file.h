@@ -45,9 +45,10 @@ struct MeshFile {
 inline constexpr std::size_t kMaxMeshFileBytes = std::size_t{512} << 20;
 inline constexpr std::size_t kMaxMeshTriangles = 20'000'000;
 
-// Loads the mesh file at `path` (a file system path, see mesh_uri.h for URIs) as RViz does. Each
-// file is read once per process: later calls with a path naming the same file (canonical path)
-// return the same object. Thread-safe. Vertex colours are ignored; the first set of texture
+// Loads the mesh file at `path` (a file system path, see mesh_uri.h for URIs) as RViz does. While
+// the returned object is held anywhere, later calls naming the same file (canonical path, same
+// modification time and size) return it instead of reading the file again; an edited file is read
+// anew. Thread-safe (common/shared_cache.h). Vertex colours are ignored; the first set of texture
 // coordinates is kept (flipped so that v = 0 is the image's top, as RViz imports them). Throws
 // urdfsnap::Error "PATH: ..." when the file is missing, unreadable, not a mesh assimp can read,
 // holds no triangles, is larger than kMaxMeshFileBytes or has more than kMaxMeshTriangles

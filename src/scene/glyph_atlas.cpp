@@ -18,6 +18,7 @@
 #include <mutex>
 
 #include "common/error.h"
+#include "common/shared_cache.h"
 
 namespace urdfsnap::scene {
 
@@ -62,20 +63,19 @@ class LoadedFont {
   LoadedFont(const LoadedFont&) = delete;
   LoadedFont& operator=(const LoadedFont&) = delete;
 
-  // The atlas of `code_points`, built once per set (a renderer keeps the texture of each atlas it
-  // draws, so handing out the same one keeps that from growing).
+  // The atlas of `code_points`, built once while it is held anywhere.
   std::shared_ptr<const GlyphAtlas> Atlas(const std::set<char32_t>& code_points) const {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    auto& atlas = atlases_[code_points];
-    if (!atlas) atlas = std::make_shared<const GlyphAtlas>(BuildAtlas(code_points));
-    return atlas;
+    return atlases_.Get(code_points, [&] {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      return std::make_shared<const GlyphAtlas>(BuildAtlas(code_points));
+    });
   }
 
  private:
   GlyphAtlas BuildAtlas(const std::set<char32_t>& code_points) const;
 
   mutable std::mutex mutex_;   // a FreeType face serves one thread at a time
-  mutable std::map<std::set<char32_t>, std::shared_ptr<const GlyphAtlas>> atlases_;
+  mutable SharedCache<std::set<char32_t>, GlyphAtlas> atlases_;
   FT_Library library_ = nullptr;
   FT_Face face_ = nullptr;
   int cell_height_ = 0;        // Ogre's max_height >> 6: the max over glyphs of 2 * rows - bearing

@@ -39,8 +39,8 @@ std::string FindLiberationSans(const std::vector<std::string>& candidates = Libe
 // loading, movable_text.cpp), each glyph sits in its cell at its left bearing, clipped to its
 // advance, with luminance 255 over its bitmap and the coverage as alpha; cells are one empty texel
 // apart. Code points the font has no bitmap for (space, controls) get no cell. The font file is
-// opened once per process and each atlas built once (later calls with the same font and code
-// points return the same atlas). Thread-safe. Throws urdfsnap::Error for an unreadable or invalid
+// opened once per process; an atlas is built once while it is held anywhere (later calls with the
+// same font and code points return it). Thread-safe. Throws urdfsnap::Error for an unreadable or invalid
 // file.
 std::shared_ptr<const GlyphAtlas> BuildGlyphAtlas(const std::string& font_path,
                                                   const std::set<char32_t>& code_points);

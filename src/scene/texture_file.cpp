@@ -2,10 +2,10 @@
 #include "scene/texture_file.h"
 
 #include <filesystem>
-#include <map>
-#include <mutex>
+#include <utility>
 
 #include "common/error.h"
+#include "common/shared_cache.h"
 #include "image/image.h"
 
 #define STB_IMAGE_STATIC
@@ -38,21 +38,12 @@ std::shared_ptr<const TextureImage> Decode(const std::string& path) {
 
 std::shared_ptr<const TextureImage> LoadTextureFile(const std::string& path) {
   std::error_code error;
-  const std::string key = std::filesystem::canonical(path, error).string();
+  const std::string canonical = std::filesystem::canonical(path, error).string();
   if (error) throw Error(SourceLocation{path}, "cannot read texture: " + error.message());
-  static std::mutex mutex;
-  static std::map<std::string, std::shared_ptr<const TextureImage>> cache;
-  const std::lock_guard<std::mutex> lock(mutex);
-  auto& texture = cache[key];
-  if (!texture) {
-    try {
-      texture = Decode(key);
-    } catch (...) {
-      cache.erase(key);
-      throw;
-    }
-  }
-  return texture;
+  // keyed by the file's identity and version, so an edited file is read again
+  const auto modified = std::filesystem::last_write_time(canonical, error).time_since_epoch().count();
+  static SharedCache<std::pair<std::string, long long>, TextureImage> cache;
+  return cache.Get({canonical, static_cast<long long>(modified)}, [&] { return Decode(canonical); });
 }
 
 }  // namespace urdfsnap::scene

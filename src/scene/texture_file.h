@@ -10,7 +10,8 @@
 namespace urdfsnap::scene {
 
 // Loads the image file at `path` (PNG, JPEG, BMP, TGA, GIF, PSD, PNM) as 4-channel RGBA, top row
-// first. Each file is read once per process (keyed by its canonical path). Thread-safe. Throws
+// first. While the returned image is held anywhere, later calls naming the same unchanged file
+// return it (common/shared_cache.h). Thread-safe. Throws
 // urdfsnap::Error "PATH: ..." when the file is missing, not an image, or larger than
 // image::kMaxImageSide on a side.
 std::shared_ptr<const TextureImage> LoadTextureFile(const std::string& path);
