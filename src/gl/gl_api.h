@@ -23,6 +23,8 @@
   X(PFNGLBUFFERSUBDATAPROC, glBufferSubData)                          \
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)        \
   X(PFNGLCLEARPROC, glClear)                                          \
+  X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                          \
+  X(PFNGLCLEARBUFFERUIVPROC, glClearBufferuiv)                        \
   X(PFNGLCLEARCOLORPROC, glClearColor)                                \
   X(PFNGLCLEARDEPTHPROC, glClearDepth)                                \
   X(PFNGLCOLORMASKPROC, glColorMask)                                  \
@@ -42,6 +44,7 @@
   X(PFNGLDISABLEPROC, glDisable)                                      \
   X(PFNGLDISABLEVERTEXATTRIBARRAYPROC, glDisableVertexAttribArray)    \
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                \
+  X(PFNGLDRAWBUFFERSPROC, glDrawBuffers)                              \
   X(PFNGLDRAWELEMENTSPROC, glDrawElements)                            \
   X(PFNGLENABLEPROC, glEnable)                                        \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)      \
@@ -55,6 +58,7 @@
   X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                    \
   X(PFNGLGENTEXTURESPROC, glGenTextures)                              \
   X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                      \
+  X(PFNGLGETACTIVEUNIFORMPROC, glGetActiveUniform)                    \
   X(PFNGLGETERRORPROC, glGetError)                                    \
   X(PFNGLGETINTEGERVPROC, glGetIntegerv)                              \
   X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                  \
@@ -67,6 +71,7 @@
   X(PFNGLLINKPROGRAMPROC, glLinkProgram)                              \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                              \
   X(PFNGLPOLYGONOFFSETPROC, glPolygonOffset)                          \
+  X(PFNGLREADBUFFERPROC, glReadBuffer)                                \
   X(PFNGLREADPIXELSPROC, glReadPixels)                                \
   X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)              \
   X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, glRenderbufferStorageMultisample) \
@@ -76,6 +81,7 @@
   X(PFNGLTEXSUBIMAGE2DPROC, glTexSubImage2D)                          \
   X(PFNGLUNIFORM1FPROC, glUniform1f)                                  \
   X(PFNGLUNIFORM1IPROC, glUniform1i)                                  \
+  X(PFNGLUNIFORM1UIPROC, glUniform1ui)                                \
   X(PFNGLUNIFORM2FVPROC, glUniform2fv)                                \
   X(PFNGLUNIFORM3FVPROC, glUniform3fv)                                \
   X(PFNGLUNIFORM4FVPROC, glUniform4fv)                                \

@@ -46,7 +46,8 @@ GLuint Compile(GLenum stage, const std::string& name) {
 
 }  // namespace
 
-ShaderProgram::ShaderProgram(const std::string& vertex_name, const std::string& fragment_name) {
+ShaderProgram::ShaderProgram(const std::string& vertex_name, const std::string& fragment_name)
+    : name_(vertex_name + " + " + fragment_name) {
   const GLuint vertex = Compile(GL_VERTEX_SHADER, vertex_name);
   const GLuint fragment = Compile(GL_FRAGMENT_SHADER, fragment_name);
   id_ = glCreateProgram();
@@ -63,13 +64,29 @@ ShaderProgram::ShaderProgram(const std::string& vertex_name, const std::string& 
     throw Error("shader program '" + vertex_name + "' + '" + fragment_name +
                 "' failed to link: " + log);
   }
+  GLint count = 0;
+  glGetProgramiv(id_, GL_ACTIVE_UNIFORMS, &count);
+  for (GLint i = 0; i < count; ++i) {
+    GLchar name[256];
+    GLsizei length = 0;
+    GLint size = 0;
+    GLenum type = 0;
+    glGetActiveUniform(id_, static_cast<GLuint>(i), sizeof name, &length, &size, &type, name);
+    locations_.emplace(std::string(name, static_cast<size_t>(length)), glGetUniformLocation(id_, name));
+  }
 }
 
 ShaderProgram::~ShaderProgram() { glDeleteProgram(id_); }
 
 void ShaderProgram::Use() const { glUseProgram(id_); }
 
-int ShaderProgram::Location(const char* name) const { return glGetUniformLocation(id_, name); }
+int ShaderProgram::Location(const char* name) const {
+  const auto it = locations_.find(std::string_view(name));
+  if (it == locations_.end()) {
+    throw Error("shader program " + name_ + " has no active uniform '" + name + "'");
+  }
+  return it->second;
+}
 
 void ShaderProgram::Set(const char* name, const Eigen::Matrix4f& value) const {
   glUniformMatrix4fv(Location(name), 1, GL_FALSE, value.data());
@@ -88,5 +105,7 @@ void ShaderProgram::Set(const char* name, const Eigen::Vector3f& value) const {
 }
 
 void ShaderProgram::Set(const char* name, int value) const { glUniform1i(Location(name), value); }
+
+void ShaderProgram::Set(const char* name, unsigned value) const { glUniform1ui(Location(name), value); }
 
 }  // namespace urdfsnap::gl

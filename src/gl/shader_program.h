@@ -2,6 +2,7 @@
 // Internal to the render library; needs a current GL context.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include <Eigen/Core>
@@ -18,16 +19,20 @@ class ShaderProgram {
   ShaderProgram& operator=(const ShaderProgram&) = delete;
 
   void Use() const;
-  // Setters for the program in use; a uniform the linker removed is ignored.
+  // Setters for the program in use. A name that is not an active uniform of the program (a typo,
+  // or one the linker removed as unused) throws urdfsnap::Error, as Drake's shader program does.
   void Set(const char* name, const Eigen::Matrix4f& value) const;
   void Set(const char* name, const Eigen::Matrix3f& value) const;
   void Set(const char* name, const Eigen::Vector4f& value) const;
   void Set(const char* name, const Eigen::Vector3f& value) const;
-  void Set(const char* name, int value) const;   // also a sampler's texture unit
+  void Set(const char* name, int value) const;        // also a sampler's texture unit
+  void Set(const char* name, unsigned value) const;
 
  private:
   int Location(const char* name) const;
+  std::string name_;                    // "lit.vert + lit.frag", for messages
   unsigned id_ = 0;
+  std::map<std::string, int, std::less<>> locations_;   // the active uniforms, read after linking
 };
 
 }  // namespace urdfsnap::gl
