@@ -14,8 +14,17 @@ install(TARGETS urdfsnap ${urdfsnap_libraries} EXPORT urdfsnapTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${urdfsnap_include_dir})
+# Only the public API's headers: not the GL plumbing (no GL headers in the installed API), the
+# xacro processor's internals (xacro.h is its interface) or other stage-internal helpers.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${urdfsnap_include_dir}
-  FILES_MATCHING PATTERN "*.h" PATTERN "cli" EXCLUDE)
+  FILES_MATCHING PATTERN "*.h"
+  PATTERN "cli" EXCLUDE
+  REGEX "gl/(gl_api|framebuffer|gpu_mesh|gpu_texture|shader_program|embedded_shaders)\\.h$" EXCLUDE
+  REGEX "xacro/[a-z_]+\\.h$" EXCLUDE
+  REGEX "scene/mesh_loading\\.h$" EXCLUDE
+  REGEX "model/urdf_validation\\.h$" EXCLUDE
+  REGEX "geometry/(circle_parts|texture_coordinates)\\.h$" EXCLUDE)
+install(FILES ${PROJECT_SOURCE_DIR}/src/xacro/xacro.h DESTINATION ${urdfsnap_include_dir}/xacro)
 install(EXPORT urdfsnapTargets NAMESPACE urdfsnap:: DESTINATION ${urdfsnap_package_dir})
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/urdfsnapConfig.cmake.in

@@ -11,7 +11,7 @@
 #include "model/joint_values.h"
 #include "model/robot.h"
 #include "model/robot_description.h"
-#include "scene/scene_builder.h"
+#include "scene/robot_scene.h"
 #include "scene/view_fitting.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
@@ -33,7 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     options.tf.enabled = true;
     options.show_collision = true;
     const scene::Scene scene =
-        scene::BuildScene(robot, model::ComputeLinkPoses(robot, positions), options, warnings);
+        scene::RobotScene(robot, options, warnings).Pose(model::ComputeLinkPoses(robot, positions));
     scene::FitView(scene, scene::OrbitView{}, 4.0 / 3.0, false);
   } catch (const Error&) {
   }

@@ -2,7 +2,9 @@
 // with RViz's TF display with and without frame names, and for a generated robot of 200,000 mesh
 // triangles (heavy_robot.h):
 //   - the whole `urdfsnap render` process, model file to PNG on disk (median of N runs),
-//   - per frame over 200 poses in one process: FK + scene, draw with 4x MSAA + read back,
+//   - per frame over 200 poses in one process, through the typed core (render::RobotRenderer, the
+//     robot prepared once): joints + FK + posing the scene, draw with 4x MSAA + read back, and the
+//     same with the depth and link-label images as well,
 //   - PNG encoding of one frame,
 //   - forward kinematics alone for all links.
 // usage: urdfsnap_pipeline_bench [URDFSNAP_BINARY [MODEL]]
@@ -27,7 +29,7 @@
 #include "model/forward_kinematics.h"
 #include "model/joint_values.h"
 #include "gl/renderer.h"
-#include "scene/scene_builder.h"
+#include "render/robot_renderer.h"
 
 extern char** environ;
 
@@ -81,8 +83,9 @@ std::string ReadText(const std::string& path) {
 
 struct Figures {
   double process = 0;  // whole `urdfsnap render` process, seconds (median)
-  double scene = 0;    // per frame: joints + FK + scene building
+  double scene = 0;    // per frame: joints + FK + posing the prepared scene
   double draw = 0;     // per frame: draw (4x MSAA) + read back
+  double outputs = 0;  // per frame: draw + read back with depth and labels too
   double png = 0;      // per frame: PNG encoding
   double fk = 0;       // forward kinematics of all links
   std::size_t links = 0, triangles = 0;
@@ -105,10 +108,13 @@ Figures Measure(const std::string& binary, const std::string& model_path, int pr
 
   // per frame, one process, one context
   Warnings warnings;
-  const model::Robot robot = model::LoadRobot(ReadText(model_path), model_path, warnings);
+  const auto robot_pointer =
+      std::make_shared<const model::Robot>(model::LoadRobot(ReadText(model_path), model_path, warnings));
+  const model::Robot& robot = *robot_pointer;
   scene::SceneOptions options;
   options.model_file = model_path;
   options.tf = tf;
+  const render::RobotRenderer robot_renderer(robot_pointer, options, warnings);
   gl::Renderer renderer(4);
   std::mt19937 random(42);
   std::uniform_real_distribution<double> angle(-3.0, 3.0);
@@ -116,23 +122,27 @@ Figures Measure(const std::string& binary, const std::string& model_path, int pr
   for (auto& pose : poses) {
     for (const auto& name : robot.MovableJointNames()) pose.emplace_back(name, angle(random));
   }
-  std::vector<double> scene_times, draw_times;
+  std::vector<double> scene_times, draw_times, output_times;
   image::Image frame;
+  const image::FrameOutputs all{true, true, true};
   for (const auto& pose : poses) {
     const auto t0 = Clock::now();
     const auto positions = model::ResolveJointPositions(robot, pose, true, warnings);
-    const scene::Scene scene =
-        scene::BuildScene(robot, model::ComputeLinkPoses(robot, positions), options, warnings);
+    const scene::Scene scene = robot_renderer.Pose(positions);
     const auto t1 = Clock::now();
-    frame = renderer.Render(scene, scene::OrbitView{}, 640, 480);
+    frame = renderer.Render(scene, scene::OrbitView{}, 640, 480).colour;
+    const auto t2 = Clock::now();
+    renderer.Render(scene, scene::OrbitView{}, 640, 480, all);
     scene_times.push_back(Seconds(t0, t1));
-    draw_times.push_back(Seconds(t1, Clock::now()));
+    draw_times.push_back(Seconds(t1, t2));
+    output_times.push_back(Seconds(t2, Clock::now()));
     if (figures.triangles == 0) {
       for (const auto& item : scene.items) figures.triangles += item.mesh->indices.size() / 3;
     }
   }
   figures.scene = Median(scene_times);
   figures.draw = Median(draw_times);
+  figures.outputs = Median(output_times);
   figures.png = MedianTime(50, [&] { image::EncodePng(frame); });
 
   // forward kinematics alone
@@ -171,8 +181,9 @@ int main(int argc, char** argv) {
   std::printf("|----------------------------------------------|--------------|--------------|----------------|----------------|\n");
   std::printf("| triangles drawn                              | %12zu | %12zu | %14zu | %14zu |\n", a.triangles, t.triangles, u.triangles, b.triangles);
   std::printf("| whole `urdfsnap render` process, URDF → PNG  | %9.1f ms | %9.1f ms | %11.1f ms | %11.1f ms |\n", a.process * 1e3, t.process * 1e3, u.process * 1e3, b.process * 1e3);
-  std::printf("| per frame: joints + FK + scene building      | %9.4f ms | %9.4f ms | %11.4f ms | %11.4f ms |\n", a.scene * 1e3, t.scene * 1e3, u.scene * 1e3, b.scene * 1e3);
+  std::printf("| per frame: joints + FK + posing the scene    | %9.4f ms | %9.4f ms | %11.4f ms | %11.4f ms |\n", a.scene * 1e3, t.scene * 1e3, u.scene * 1e3, b.scene * 1e3);
   std::printf("| per frame: draw (4x MSAA) + read back        | %9.3f ms | %9.3f ms | %11.3f ms | %11.3f ms |\n", a.draw * 1e3, t.draw * 1e3, u.draw * 1e3, b.draw * 1e3);
+  std::printf("| per frame: the same + depth + labels         | %9.3f ms | %9.3f ms | %11.3f ms | %11.3f ms |\n", a.outputs * 1e3, t.outputs * 1e3, u.outputs * 1e3, b.outputs * 1e3);
   std::printf("| per frame: PNG encoding                      | %9.3f ms | %9.3f ms | %11.3f ms | %11.3f ms |\n", a.png * 1e3, t.png * 1e3, u.png * 1e3, b.png * 1e3);
   std::printf("| FK alone, all links (%zu / %zu)                 | %9.3f µs | %9.3f µs | %11.3f µs | %11.3f µs |\n", a.links, b.links, a.fk * 1e6, t.fk * 1e6, u.fk * 1e6, b.fk * 1e6);
   return 0;

@@ -1,6 +1,5 @@
 // `urdfsnap info`: the robot's links, joints (type, axis, limits, mimic) and tree.
 #include <memory>
-#include <optional>
 
 #include "cli/command.h"
 #include "cli/model_source.h"
@@ -15,9 +14,9 @@ void AddInfoCommand(CLI::App& app) {
   model->AddOptions(*cmd);
   cmd->callback([model] {
     Warnings warnings;
-    std::optional<model::Robot> robot;
+    std::shared_ptr<const model::Robot> robot;
     try {
-      robot.emplace(request::LoadModel(model->ToRequest(), warnings));
+      robot = request::LoadModel(model->ToRequest(), warnings).robot;
     } catch (...) {
       PrintWarningsBeforeError(warnings);
       throw;

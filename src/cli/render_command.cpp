@@ -6,6 +6,7 @@
 #include "cli/command.h"
 #include "cli/model_source.h"
 #include "image/png_writer.h"
+#include "render/frame_files.h"
 #include "gl/gl_context.h"
 #include "request/render_session.h"
 
@@ -16,6 +17,7 @@ namespace {
 struct RenderOptions {
   ModelSource model;
   std::string output;
+  std::string depth, labels;              // optional depth and link-label image files
   std::vector<std::string> joint_words;  // NAME=VALUE
   request::RenderRequest request;        // everything else, filled by CLI11 directly
 };
@@ -30,12 +32,17 @@ void Run(RenderOptions& o) {
   const auto gl_loading = gl::StartLoadingGl();  // overlaps loading Mesa with reading the model
   o.request.model = o.model.ToRequest();
   for (const auto& word : o.joint_words) model::ParseJointAssignment(word, o.request.joints);
+  if (!o.depth.empty()) render::CheckDepthPath(o.depth, "--depth");
+  if (!o.labels.empty()) render::CheckLabelsPath(o.labels, "--labels");
   Warnings warnings;
   request::RenderSession session;
-  image::Image frame;
+  image::Frame frame;
+  std::shared_ptr<const model::Robot> robot;
   try {
     frame = session.Render(
-        o.request, [](std::string_view name) { return "--" + std::string(name); }, warnings);
+        o.request, [](std::string_view name) { return "--" + std::string(name); }, warnings,
+        {true, !o.depth.empty(), !o.labels.empty()});
+    robot = session.LoadRobot(o.request.model, warnings);
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -43,7 +50,9 @@ void Run(RenderOptions& o) {
   PrintWarnings(warnings);
   const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
   if (o.output.empty()) std::filesystem::create_directories("output");
-  image::WritePng(frame, output);
+  image::WritePng(frame.colour, output);
+  if (!o.depth.empty()) render::WriteDepthFile(frame.depth, o.depth);
+  if (!o.labels.empty()) render::WriteLabelFiles(frame.labels, *robot, o.labels);
 }
 
 }  // namespace
@@ -53,6 +62,14 @@ void AddRenderCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render a robot pose to a PNG image, as RViz shows it");
   o->model.AddOptions(*cmd);
   cmd->add_option("-o,--output", o->output, "PNG file to write (default output/<model>.png)");
+  cmd->add_option("--depth", o->depth,
+                  "also write the robot's depth image from the same view: FILE.png (16-bit, mm along "
+                  "the viewing axis, 0 off the robot, ROS's 16UC1) or FILE.npy (float32 m, NaN off "
+                  "the robot, ROS's 32FC1); robot geometry only (default: none)");
+  cmd->add_option("--labels", o->labels,
+                  "also write the link-label image FILE.png (16-bit: 1 + the index of the link "
+                  "nearest at each pixel, in `info`'s link order, 0 off the robot) and FILE.json "
+                  "(value -> link name) (default: none)");
   cmd->add_option("-j,--joint", o->joint_words, "joint value NAME=VALUE in rad or m (repeatable)");
   cmd->add_option("--joints", o->request.joint_file,
                   "YAML/JSON joint file: {name: value} or {name: [...], position: [...]}");

@@ -1,8 +1,10 @@
-// Framebuffer objects for multisampled off-screen rendering and read-back.
+// Framebuffer objects for multisampled off-screen rendering, the label/depth target, and read-back.
 #include "gl/framebuffer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "common/error.h"
 #include "gl/gl_api.h"
@@ -17,6 +19,22 @@ void Check(GLuint fbo, int width, int height, int samples) {
     throw Error("OpenGL cannot render " + std::to_string(width) + "x" + std::to_string(height) +
                 " pixels with " + std::to_string(samples) + " samples");
   }
+}
+
+// Reads `components` values of `type` per pixel from the bound read framebuffer's current buffer
+// and returns them with the top row first.
+template <typename T>
+std::vector<T> ReadRows(int width, int height, int components, GLenum format, GLenum type) {
+  std::vector<T> values(static_cast<size_t>(width) * height * components);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, format, type, values.data());
+  // GL's first row is the bottom one; images start at the top
+  const size_t stride = static_cast<size_t>(width) * components;
+  for (int y = 0; y < height / 2; ++y) {
+    std::swap_ranges(values.begin() + y * stride, values.begin() + (y + 1) * stride,
+                     values.begin() + (height - 1 - y) * stride);
+  }
+  return values;
 }
 
 }  // namespace
@@ -60,19 +78,56 @@ image::Image Framebuffer::ReadPixels() const {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  image::Image image;
-  image.width = width_;
-  image.height = height_;
-  image.rgb.resize(static_cast<size_t>(width_) * height_ * 3);
-  glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, image.rgb.data());
-  // GL's first row is the bottom one; images start at the top
-  const size_t stride = static_cast<size_t>(width_) * 3;
-  for (int y = 0; y < height_ / 2; ++y) {
-    std::swap_ranges(image.rgb.begin() + y * stride, image.rgb.begin() + (y + 1) * stride,
-                     image.rgb.begin() + (height_ - 1 - y) * stride);
+  return {width_, height_, ReadRows<std::uint8_t>(width_, height_, 3, GL_RGB, GL_UNSIGNED_BYTE)};
+}
+
+LabelFramebuffer::LabelFramebuffer(int width, int height) : width_(width), height_(height) {
+  glGenRenderbuffers(3, renderbuffers_);
+  const GLenum formats[3] = {GL_R16UI, GL_R32F, GL_DEPTH_COMPONENT32F};
+  for (int k = 0; k < 3; ++k) {
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[k]);
+    glRenderbufferStorage(GL_RENDERBUFFER, formats[k], width, height);
   }
-  return image;
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, renderbuffers_[1]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[2]);
+  const GLenum outputs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, outputs);
+  Check(fbo_, width, height, 0);
+}
+
+LabelFramebuffer::~LabelFramebuffer() {
+  glDeleteFramebuffers(1, &fbo_);
+  glDeleteRenderbuffers(3, renderbuffers_);
+}
+
+void LabelFramebuffer::BindAndClear() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(0, 0, width_, height_);
+  const GLuint no_label[4] = {0, 0, 0, 0};
+  const GLfloat no_depth[4] = {0, 0, 0, 0};
+  const GLfloat far = 1;
+  glClearBufferuiv(GL_COLOR, 0, no_label);
+  glClearBufferfv(GL_COLOR, 1, no_depth);
+  glClearBufferfv(GL_DEPTH, 0, &far);
+}
+
+image::LabelImage LabelFramebuffer::ReadLabels() const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  return {width_, height_, ReadRows<std::uint16_t>(width_, height_, 1, GL_RED_INTEGER, GL_UNSIGNED_SHORT)};
+}
+
+image::DepthImage LabelFramebuffer::ReadDepths(const image::LabelImage& labels) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  image::DepthImage depth{width_, height_, ReadRows<float>(width_, height_, 1, GL_RED, GL_FLOAT)};
+  for (size_t i = 0; i < depth.metres.size(); ++i) {
+    if (labels.labels[i] == 0) depth.metres[i] = std::nanf("");
+  }
+  return depth;
 }
 
 }  // namespace urdfsnap::gl

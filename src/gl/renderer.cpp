@@ -2,10 +2,12 @@
 #include "gl/renderer.h"
 
 #include <algorithm>
+#include <string>
 #include <unordered_map>
 #include <variant>
 #include <vector>
 
+#include "common/error.h"
 #include "gl/framebuffer.h"
 #include "gl/gl_api.h"
 #include "gl/gl_context.h"
@@ -26,21 +28,33 @@ struct Transparent {
   std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*> what;
 };
 
-// GPU copies of scene data, made on first use and kept for later frames. Keyed by the source's
-// address; the shared_ptr kept beside each copy keeps that address from being reused.
+// GPU copies of scene data, made on first use and kept while the source object lives: entries
+// hold the source weakly and are dropped (their GPU memory freed) once it is gone, so a renderer
+// that draws many robots or reloaded models does not grow. Keyed by the source's address; an
+// entry whose source died is replaced when a new object reuses the address.
 template <typename Source, typename Gpu>
 class GpuCache {
  public:
   const Gpu& Get(const std::shared_ptr<const Source>& source) {
     auto it = entries_.find(source.get());
-    if (it == entries_.end()) {
-      it = entries_.try_emplace(source.get(), source, std::make_unique<Gpu>(*source)).first;
+    if (it == entries_.end() || it->second.source.expired()) {
+      if (entries_.size() >= purge_at_) Purge();
+      it = entries_.insert_or_assign(source.get(), Entry{source, std::make_unique<Gpu>(*source)}).first;
     }
-    return *it->second.second;
+    return *it->second.gpu;
   }
 
  private:
-  std::unordered_map<const Source*, std::pair<std::shared_ptr<const Source>, std::unique_ptr<Gpu>>> entries_;
+  struct Entry {
+    std::weak_ptr<const Source> source;
+    std::unique_ptr<Gpu> gpu;
+  };
+  void Purge() {
+    std::erase_if(entries_, [](const auto& entry) { return entry.second.source.expired(); });
+    purge_at_ = std::max<size_t>(64, 2 * entries_.size());
+  }
+  std::unordered_map<const Source*, Entry> entries_;
+  size_t purge_at_ = 64;
 };
 
 }  // namespace
@@ -51,7 +65,8 @@ struct Renderer::Impl {
         context(CreateOsMesaContext()),
         lit("lit.vert", "lit.frag"),
         line("line.vert", "line.frag"),
-        text("text.vert", "text.frag") {
+        text("text.vert", "text.frag"),
+        label("label.vert", "label.frag") {
     glGenVertexArrays(1, &stream_array);
     glGenBuffers(1, &stream_buffer);
   }
@@ -136,13 +151,109 @@ struct Renderer::Impl {
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
+  // The colour image: opaque geometry first, then transparent geometry, lines and text blended
+  // back to front, as Ogre orders RViz's scene.
+  image::Image DrawColour(const scene::Scene& scene, const scene::OrbitView& view, const Eigen::Matrix4d& V,
+                          const Eigen::Matrix4d& P, int width, int height) {
+    if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height) {
+      framebuffer.reset();
+      framebuffer = std::make_unique<Framebuffer>(width, height, samples);
+    }
+    framebuffer->Bind();
+    const Eigen::Matrix4d PV = P * V;
+    const Eigen::Vector3d eye = scene::EyePosition(view);
+
+    glClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
+    glClearDepth(1.0);
+    glDepthMask(GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+
+    // opaque geometry first, writing depth
+    glDisable(GL_BLEND);
+    lit.Use();
+    std::vector<Transparent> transparent;
+    for (const auto& item : scene.items) {
+      if (item.rgba.w() >= kOpaqueAlpha) {
+        DrawMesh(item, V, PV);
+      } else {
+        transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
+      }
+    }
+    for (const auto& lines : scene.lines) {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const auto& p : lines.points) centre += p.cast<double>();
+      if (!lines.points.empty()) centre /= static_cast<double>(lines.points.size());
+      transparent.push_back({(centre - eye).squaredNorm(), &lines});
+    }
+    // Ogre sorts MovableText with the transparent objects by its node's position, the anchor
+    for (const auto& text_label : scene.labels) {
+      transparent.push_back({(text_label.anchor - eye).squaredNorm(), &text_label});
+    }
+
+    // then blended geometry back to front, depth-tested but not writing depth
+    std::stable_sort(transparent.begin(), transparent.end(),
+                     [](const Transparent& a, const Transparent& b) { return a.depth > b.depth; });
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    for (const auto& t : transparent) {
+      if (const auto* item = std::get_if<const scene::DrawItem*>(&t.what)) {
+        lit.Use();
+        DrawMesh(**item, V, PV);
+      } else if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
+        DrawLines(**lines, PV);
+      } else {
+        DrawLabel(*std::get<const scene::TextLabel*>(t.what), V, P);
+      }
+    }
+    glDepthMask(GL_TRUE);
+    return framebuffer->ReadPixels();
+  }
+
+  // The label image (the depths stay in the label framebuffer for ReadDepths): every draw item
+  // with a link, opaque or not, depth-tested and depth-writing, culled as in the colour image.
+  image::LabelImage DrawLabels(const scene::Scene& scene, const Eigen::Matrix4d& V,
+                               const Eigen::Matrix4d& P, int width, int height) {
+    if (!label_framebuffer || label_framebuffer->width() != width || label_framebuffer->height() != height) {
+      label_framebuffer.reset();
+      label_framebuffer = std::make_unique<LabelFramebuffer>(width, height);
+    }
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    label_framebuffer->BindAndClear();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    label.Use();
+    label.Set("projection", Eigen::Matrix4f(P.cast<float>()));
+    for (const auto& item : scene.items) {
+      if (item.link < 0) continue;
+      if (item.link >= 0xFFFF) {
+        throw Error("the label image holds 65534 links; link index " + std::to_string(item.link) + " does not fit");
+      }
+      const Eigen::Matrix4d M = item.X_FG.matrix();
+      label.Set("model_view", Eigen::Matrix4f((V * M).cast<float>()));
+      label.Set("label", static_cast<unsigned>(item.link + 1));
+      glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
+      meshes.Get(item.mesh).Draw();
+    }
+    return label_framebuffer->ReadLabels();
+  }
+
   int samples;
   std::unique_ptr<GlContext> context;
   ShaderProgram lit;
   ShaderProgram line;
   ShaderProgram text;
+  ShaderProgram label;
   unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
   std::unique_ptr<Framebuffer> framebuffer;
+  std::unique_ptr<LabelFramebuffer> label_framebuffer;
   GpuCache<geometry::TriangleMesh, GpuMesh> meshes;
   GpuCache<scene::TextureImage, GpuTexture> textures;
 };
@@ -151,69 +262,20 @@ Renderer::Renderer(int samples) : impl_(std::make_unique<Impl>(samples)) {}
 
 Renderer::~Renderer() = default;
 
-image::Image Renderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width, int height) {
+image::Frame Renderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width,
+                              int height, const image::FrameOutputs& outputs) {
   Impl& r = *impl_;
   r.context->MakeCurrent();
-  if (!r.framebuffer || r.framebuffer->width() != width || r.framebuffer->height() != height) {
-    r.framebuffer.reset();
-    r.framebuffer = std::make_unique<Framebuffer>(width, height, r.samples);
-  }
-  r.framebuffer->Bind();
-
   const Eigen::Matrix4d V = scene::ViewMatrix(view);
   const Eigen::Matrix4d P = scene::ProjectionMatrix(view, static_cast<double>(width) / height);
-  const Eigen::Matrix4d PV = P * V;
-  const Eigen::Vector3d eye = scene::EyePosition(view);
-
-  glClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glEnable(GL_CULL_FACE);
-  glCullFace(GL_BACK);
-
-  // opaque geometry first, writing depth
-  glDisable(GL_BLEND);
-  glDepthMask(GL_TRUE);
-  r.lit.Use();
-  std::vector<Transparent> transparent;
-  for (const auto& item : scene.items) {
-    if (item.rgba.w() >= kOpaqueAlpha) {
-      r.DrawMesh(item, V, PV);
-    } else {
-      transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
-    }
+  image::Frame frame;
+  if (outputs.colour) frame.colour = r.DrawColour(scene, view, V, P, width, height);
+  if (outputs.depth || outputs.labels) {
+    image::LabelImage labels = r.DrawLabels(scene, V, P, width, height);
+    if (outputs.depth) frame.depth = r.label_framebuffer->ReadDepths(labels);
+    if (outputs.labels) frame.labels = std::move(labels);
   }
-  for (const auto& lines : scene.lines) {
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (const auto& p : lines.points) centre += p.cast<double>();
-    if (!lines.points.empty()) centre /= static_cast<double>(lines.points.size());
-    transparent.push_back({(centre - eye).squaredNorm(), &lines});
-  }
-  // Ogre sorts MovableText with the transparent objects by its node's position, the anchor
-  for (const auto& label : scene.labels) {
-    transparent.push_back({(label.anchor - eye).squaredNorm(), &label});
-  }
-
-  // then blended geometry back to front, depth-tested but not writing depth
-  std::stable_sort(transparent.begin(), transparent.end(),
-                   [](const Transparent& a, const Transparent& b) { return a.depth > b.depth; });
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  glDepthMask(GL_FALSE);
-  for (const auto& t : transparent) {
-    if (const auto* item = std::get_if<const scene::DrawItem*>(&t.what)) {
-      r.lit.Use();
-      r.DrawMesh(**item, V, PV);
-    } else if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
-      r.DrawLines(**lines, PV);
-    } else {
-      r.DrawLabel(*std::get<const scene::TextLabel*>(t.what), V, P);
-    }
-  }
-  glDepthMask(GL_TRUE);
-  return r.framebuffer->ReadPixels();
+  return frame;
 }
 
 }  // namespace urdfsnap::gl

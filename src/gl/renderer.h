@@ -1,7 +1,8 @@
 // Draws Scenes into images with OpenGL, the way RViz's Ogre pipeline does: one head-light,
 // per-vertex diffuse lighting, opaque geometry first, then transparent geometry and lines
-// blended back to front, 4x multisampling. One Renderer owns one GL context; reuse it for many
-// frames (meshes are uploaded once and kept).
+// blended back to front, 4x multisampling; and, from the same scene and view, the depth and
+// link-label images of the robot's geometry. One Renderer owns one GL context; reuse it for many
+// frames (meshes and textures are uploaded once and kept while the scene objects live).
 #pragma once
 
 #include <memory>
@@ -21,8 +22,12 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Renders `scene` seen through `view` into a width x height RGB image.
-  image::Image Render(const scene::Scene& scene, const scene::OrbitView& view, int width, int height);
+  // Renders `scene` seen through `view` into width x height images: the colour image as RViz
+  // shows it, and the depth and label images of the draw items with a link (robot geometry; never
+  // the grid, TF markers or names), as `outputs` asks. Throws urdfsnap::Error when GL cannot
+  // render the size, or a draw item's link index does not fit a 16-bit label.
+  image::Frame Render(const scene::Scene& scene, const scene::OrbitView& view, int width, int height,
+                      const image::FrameOutputs& outputs = {});
 
  private:
   struct Impl;

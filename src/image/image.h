@@ -1,5 +1,6 @@
-// The pixel buffer every stage hands on: 8-bit RGB, rows from top to bottom (PNG order; GL's
-// read-back is bottom-up, the render stage flips it).
+// The pixel buffers every stage hands on, rows from top to bottom (PNG order; GL's read-back is
+// bottom-up, the GL stage flips it): the 8-bit RGB colour image, and the depth and link-label
+// images rendered beside it; and Frame, what one render returns.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,35 @@ struct Image {
   int width = 0;
   int height = 0;
   std::vector<std::uint8_t> rgb;  // width * height * 3 bytes, row after row, top row first
+};
+
+// Distance from the camera along its viewing axis, in metres; NaN where no robot geometry is.
+struct DepthImage {
+  int width = 0;
+  int height = 0;
+  std::vector<float> metres;   // width * height, top row first
+};
+
+// 1 + the index of the robot link whose geometry is nearest at each pixel (links in Robot::links()
+// order, as `urdfsnap info` lists them); 0 where there is none.
+struct LabelImage {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint16_t> labels;   // width * height, top row first
+};
+
+// Which images a render produces; all come from the same view and pose.
+struct FrameOutputs {
+  bool colour = true;
+  bool depth = false;
+  bool labels = false;
+};
+
+// The images of one render; those not asked for are empty (0x0).
+struct Frame {
+  Image colour;
+  DepthImage depth;
+  LabelImage labels;
 };
 
 // The largest width and height urdfsnap encodes or decodes, in pixels: far above any render, and

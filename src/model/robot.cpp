@@ -37,12 +37,11 @@ bool Joint::IsMovable() const {
 }
 
 Robot::Robot(std::string name, std::string source, std::vector<Link> links,
-             std::vector<Joint> joints, ::urdf::ModelInterfaceSharedPtr urdf)
+             std::vector<Joint> joints)
     : name_(std::move(name)),
       source_(std::move(source)),
       links_(std::move(links)),
       joints_(std::move(joints)),
-      urdf_(std::move(urdf)),
       kinematic_steps_(MakeKinematicSteps(links_, joints_)) {}
 
 int Robot::FindLink(std::string_view name) const { return IndexOfName(links_, name); }

@@ -1,15 +1,15 @@
-// The loaded robot: links in tree order, joints with their origins, axes, limits and mimic rules,
-// and the urdfdom model that the scene builder reads visuals, collisions and materials from.
+// The loaded robot: links in tree order with their visual and collision shapes and materials,
+// joints with their origins, axes, limits and mimic rules. Its own records, not urdfdom's: the
+// stages after this one see abstract geometry only (urdfdom stays inside model/).
 // LoadRobot (urdf_loader.cpp) is the way to make one from URDF text.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <Eigen/Geometry>
-#include <urdf_model/model.h>
-#include <urdf_world/types.h>
 
 #include "common/warnings.h"
 #include "model/kinematic_step.h"
@@ -38,19 +38,51 @@ struct Joint {
   bool IsMovable() const;
 };
 
+// A URDF <geometry>: a box, cylinder or sphere in metres, or a mesh file with its scale.
+struct Shape {
+  enum class Type { kBox, kCylinder, kSphere, kMesh };
+  Type type = Type::kBox;
+  Eigen::Vector3d box_size = Eigen::Vector3d::Ones();   // m, x y z
+  double radius = 0;                                    // m, cylinder and sphere
+  double length = 0;                                    // m, cylinder
+  std::string mesh_uri;                                 // as written: package://, file://, a path
+  Eigen::Vector3d mesh_scale = Eigen::Vector3d::Ones(); // per axis; negative mirrors
+};
+
+// A URDF <material> as a visual defines or names it (urdfdom has already replaced a named
+// material by the robot-level one of that name).
+struct Material {
+  std::string name;                          // "" for an anonymous inline material
+  Eigen::Vector4f rgba{0, 0, 0, 0};          // <color rgba>; urdfdom's default when none
+  std::string texture;                       // <texture filename> URI; "" for none
+};
+
+struct Visual {
+  Shape shape;
+  Eigen::Isometry3d X_LG = Eigen::Isometry3d::Identity();  // <origin> in the link frame
+  std::string material_name;                 // the name the visual's <material> gives, or ""
+  std::optional<Material> material;          // none when the visual has no (known) material
+};
+
+struct Collision {
+  Shape shape;
+  Eigen::Isometry3d X_LG = Eigen::Isometry3d::Identity();
+};
+
 struct Link {
   std::string name;
   int parent_joint = -1;  // index into Robot::joints(); -1 for the root
   int line = 0;           // source line of the <link> element (0 if unknown)
-  ::urdf::LinkConstSharedPtr urdf;
+  std::vector<Visual> visuals;        // in document order
+  std::vector<Collision> collisions;  // in document order
+  std::optional<double> mass;         // kg, from <inertial><mass> when given
 };
 
 class Robot {
  public:
   // Takes links in tree order (root first, every parent before its children) and joints whose
   // indices refer to them; precomputes the kinematics. LoadRobot is the usual way to make one.
-  Robot(std::string name, std::string source, std::vector<Link> links, std::vector<Joint> joints,
-        ::urdf::ModelInterfaceSharedPtr urdf);
+  Robot(std::string name, std::string source, std::vector<Link> links, std::vector<Joint> joints);
 
   const std::string& name() const { return name_; }
   // The file the description came from, as given to LoadRobot.
@@ -68,9 +100,6 @@ class Robot {
   // document order.
   std::vector<std::string> MovableJointNames() const;
 
-  // urdfdom's model: visuals, collisions and materials for the scene builder.
-  const ::urdf::ModelInterface& urdf() const { return *urdf_; }
-
   // Per-link kinematics precomputed for ComputeLinkPoses, one step for each non-root link in
   // links() order.
   const std::vector<KinematicStep>& kinematic_steps() const { return kinematic_steps_; }
@@ -80,7 +109,6 @@ class Robot {
   std::string source_;
   std::vector<Link> links_;
   std::vector<Joint> joints_;
-  ::urdf::ModelInterfaceSharedPtr urdf_;
   std::vector<KinematicStep> kinematic_steps_;
 };
 

@@ -54,8 +54,8 @@ std::string DescribeRobot(const Robot& robot) {
   text += "\nlinks:\n";
   for (const Link& link : links) {
     text += "  " + Padded(link.name, link_width) + "  " +
-            Plural(link.urdf ? link.urdf->visual_array.size() : 0, "visual") + ", " +
-            Plural(link.urdf ? link.urdf->collision_array.size() : 0, "collision") + "\n";
+            Plural(link.visuals.size(), "visual") + ", " +
+            Plural(link.collisions.size(), "collision") + "\n";
   }
 
   text += "\njoints:\n";

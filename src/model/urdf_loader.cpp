@@ -1,7 +1,9 @@
 // LoadRobot: URDF text -> Robot. tinyxml2 reads the text for lines and located checks, urdfdom
-// builds the model the scene builder uses, and the links are put in tree order for kinematics.
+// parses the model, which is copied into the Robot's own records (shapes, materials, joints) with
+// the links in tree order for kinematics.
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string_view>
 #include <utility>
@@ -83,6 +85,60 @@ Eigen::Isometry3d ToIsometry(const urdf::Pose& pose) {
   X.linear() = Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
   X.translation() = Eigen::Vector3d(p.x, p.y, p.z);
   return X;
+}
+
+Shape ToShape(const urdf::Geometry& geometry) {
+  Shape shape;
+  switch (geometry.type) {
+    case urdf::Geometry::BOX: {
+      const auto& box = static_cast<const urdf::Box&>(geometry);
+      shape.type = Shape::Type::kBox;
+      shape.box_size = {box.dim.x, box.dim.y, box.dim.z};
+      break;
+    }
+    case urdf::Geometry::CYLINDER: {
+      const auto& cylinder = static_cast<const urdf::Cylinder&>(geometry);
+      shape.type = Shape::Type::kCylinder;
+      shape.radius = cylinder.radius;
+      shape.length = cylinder.length;
+      break;
+    }
+    case urdf::Geometry::SPHERE:
+      shape.type = Shape::Type::kSphere;
+      shape.radius = static_cast<const urdf::Sphere&>(geometry).radius;
+      break;
+    case urdf::Geometry::MESH: {
+      const auto& mesh = static_cast<const urdf::Mesh&>(geometry);
+      shape.type = Shape::Type::kMesh;
+      shape.mesh_uri = mesh.filename;
+      shape.mesh_scale = {mesh.scale.x, mesh.scale.y, mesh.scale.z};
+      break;
+    }
+  }
+  return shape;
+}
+
+std::optional<Material> ToMaterial(const urdf::MaterialSharedPtr& material) {
+  if (!material) return std::nullopt;
+  const urdf::Color& c = material->color;
+  return Material{material->name, Eigen::Vector4f(c.r, c.g, c.b, c.a), material->texture_filename};
+}
+
+// The link's name, line and parent joint, and copies of its shapes (urdfdom refuses a visual or
+// collision without geometry, but a null one is skipped all the same).
+Link ToLink(const urdf::Link& u, int parent_joint, int line) {
+  Link link{u.name, parent_joint, line, {}, {}, std::nullopt};
+  for (const auto& visual : u.visual_array) {
+    if (!visual->geometry) continue;
+    link.visuals.push_back({ToShape(*visual->geometry), ToIsometry(visual->origin),
+                            visual->material_name, ToMaterial(visual->material)});
+  }
+  for (const auto& collision : u.collision_array) {
+    if (!collision->geometry) continue;
+    link.collisions.push_back({ToShape(*collision->geometry), ToIsometry(collision->origin)});
+  }
+  if (u.inertial) link.mass = u.inertial->mass;
+  return link;
 }
 
 JointType ToJointType(int urdf_type) {
@@ -167,18 +223,14 @@ std::vector<Link> OrderLinks(const tinyxml2::XMLElement& robot, const urdf::Mode
   }
 
   std::vector<Link> links;
-  const auto add_link = [&](const urdf::LinkConstSharedPtr& u, int parent_joint) {
-    links.push_back(Link{u->name, parent_joint, line_of_link[u->name], u});
-  };
-  add_link(model.getRoot(), -1);
+  links.push_back(ToLink(*model.getRoot(), -1, line_of_link[model.getRoot()->name]));
   for (size_t i = 0; i < links.size(); ++i) {
     // inserting each link's children right after it yields the depth-first order
     const std::vector<int>& children = child_joints[links[i].name];
     std::vector<Link> inserted;
     for (int j : children) {
       const urdf::JointConstSharedPtr u = model.getJoint(joints[j].name);
-      inserted.push_back(Link{u->child_link_name, j, line_of_link[u->child_link_name],
-                              model.getLink(u->child_link_name)});
+      inserted.push_back(ToLink(*model.getLink(u->child_link_name), j, line_of_link[u->child_link_name]));
     }
     links.insert(links.begin() + i + 1, inserted.begin(), inserted.end());
   }
@@ -219,7 +271,7 @@ Robot LoadRobot(const std::string& urdf_text, const std::string& source, Warning
   std::vector<Joint> joints = ReadJoints(robot, *model);
   std::vector<Link> links = OrderLinks(robot, *model, joints);
   std::string name = model->getName();
-  return Robot(std::move(name), source, std::move(links), std::move(joints), std::move(model));
+  return Robot(std::move(name), source, std::move(links), std::move(joints));
 }
 
 }  // namespace urdfsnap::model

@@ -6,7 +6,7 @@
 
 #include "common/warnings.h"
 #include "scene/orbit_view.h"
-#include "scene/scene_builder.h"
+#include "scene/scene_options.h"
 
 namespace urdfsnap::render {
 

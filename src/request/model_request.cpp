@@ -23,18 +23,25 @@ bool EndsWith(const std::string& s, const std::string& suffix) {
 
 }  // namespace
 
-model::Robot LoadModel(const ModelRequest& request, Warnings& warnings) {
+LoadedModel LoadModel(const ModelRequest& request, Warnings& warnings) {
   const std::string text = ReadFile(request.path);
   const bool is_xacro = EndsWith(request.path, ".xacro") || !request.xacro_args.empty() ||
                         text.find("http://www.ros.org/wiki/xacro") != std::string::npos;
-  if (!is_xacro) return model::LoadRobot(text, request.path, warnings);
+  if (!is_xacro) {
+    return {std::make_shared<const model::Robot>(model::LoadRobot(text, request.path, warnings)), {request.path}};
+  }
   xacro::Options options;
   options.args = request.xacro_args;
   options.packages = request.packages;
   options.xacro_ns = request.xacro_ns;
+  xacro::Result expanded = xacro::ExpandFile(request.path, options, warnings);
+  LoadedModel loaded;
+  loaded.files.push_back(request.path);
+  loaded.files.insert(loaded.files.end(), expanded.dependencies.begin(), expanded.dependencies.end());
   // lines in URDF errors refer to the expanded document, not to the xacro source
-  return model::LoadRobot(xacro::ExpandFile(request.path, options, warnings).xml,
-                          request.path + " (expanded)", warnings);
+  loaded.robot = std::make_shared<const model::Robot>(
+      model::LoadRobot(expanded.xml, request.path + " (expanded)", warnings));
+  return loaded;
 }
 
 }  // namespace urdfsnap::request

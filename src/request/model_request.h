@@ -4,6 +4,7 @@
 
 #include <compare>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,8 +24,13 @@ struct ModelRequest {
   auto operator<=>(const ModelRequest&) const = default;
 };
 
+struct LoadedModel {
+  std::shared_ptr<const model::Robot> robot;
+  std::vector<std::string> files;   // the model file, then the xacro includes and YAML files read
+};
+
 // Reads the file (expanding xacro when the name ends in .xacro, xacro arguments are given or the
 // robot declares the xacro namespace) and loads the robot. Throws urdfsnap::Error.
-model::Robot LoadModel(const ModelRequest& request, Warnings& warnings);
+LoadedModel LoadModel(const ModelRequest& request, Warnings& warnings);
 
 }  // namespace urdfsnap::request

@@ -1,23 +1,17 @@
 // Strict parsing of option values: the whole text must be used, numbers must be finite.
 #include "request/value_parsing.h"
 
-#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <vector>
 
 #include "common/error.h"
+#include "common/number_text.h"
 #include "image/image.h"
 
 namespace urdfsnap::request {
 
 namespace {
-
-bool ParseNumber(const std::string& text, double& value) {
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  return ec == std::errc() && ptr == end && std::isfinite(value);
-}
 
 std::vector<std::string> Split(const std::string& text, char separator) {
   std::vector<std::string> parts;
@@ -38,7 +32,16 @@ double ParseFinite(const std::string& text, const std::string& option) {
   return value;
 }
 
-ImageSize ParseImageSize(const std::string& text, const std::string& option) {
+double ParseInRange(const std::string& text, const std::string& option, double low, double high) {
+  const double value = ParseFinite(text, option);
+  if (value < low || value > high) {
+    throw Error(option + " '" + text + "': expected a value from " + FormatNumber(low) + " to " +
+                FormatNumber(high));
+  }
+  return value;
+}
+
+render::ImageSize ParseImageSize(const std::string& text, const std::string& option) {
   const auto parts = Split(text, 'x');
   double w = 0, h = 0;
   if (parts.size() != 2 || !ParseNumber(parts[0], w) || !ParseNumber(parts[1], h) ||
@@ -60,6 +63,14 @@ Eigen::Vector3d ParseVector3(const std::string& text, const std::string& option)
     throw Error(option + " '" + text + "': expected three finite numbers X,Y,Z");
   }
   return v;
+}
+
+Eigen::Vector3f ParseColour(const std::string& text, const std::string& option) {
+  const Eigen::Vector3d rgb = ParseVector3(text, option);
+  if (rgb.minCoeff() < 0 || rgb.maxCoeff() > 255) {
+    throw Error(option + " '" + text + "': expected R,G,B from 0 to 255");
+  }
+  return (rgb / 255).cast<float>();
 }
 
 }  // namespace urdfsnap::request

@@ -16,6 +16,8 @@ struct GridOptions {
   float alpha = 0.5f;
   Eigen::Vector3d offset{0, 0, 0};                           // m, in the fixed frame
   enum class Plane { kXY, kXZ, kYZ } plane = Plane::kXY;     // grid_display.cpp L90-94
+
+  bool operator==(const GridOptions&) const = default;
 };
 
 // plane_cell_count + 1 lines per direction in the chosen plane of the fixed frame, centred on the

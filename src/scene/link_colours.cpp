@@ -11,32 +11,31 @@ namespace {
 const LinkMaterial kRed{{1, 0, 0, 1}, ""};
 
 // RobotLink::getMaterialForLink: the colour RViz builds for `material` in `link`.
-LinkMaterial MaterialColour(const urdf::Link& link, urdf::MaterialSharedPtr material) {
+LinkMaterial MaterialColour(const model::Link& link, const std::optional<model::Material>& given) {
+  const model::Material* material = given ? &*given : nullptr;
   // "only the first visual's material actually comprises color values": look the name up there
   if (material && !material->name.empty()) {
-    for (const auto& visual : link.visual_array) {
-      if (visual->material_name == material->name) {
-        material = visual->material;
+    for (const auto& visual : link.visuals) {
+      if (visual.material_name == material->name) {
+        material = visual.material ? &*visual.material : nullptr;
         break;
       }
     }
   }
-  if (!material && link.visual && link.visual->material) material = link.visual->material;
+  // urdfdom's link.visual is the first visual
+  if (!material && !link.visuals.empty() && link.visuals[0].material) material = &*link.visuals[0].material;
   if (!material) return kRed;
-  if (!material->texture_filename.empty()) return {{1, 1, 1, 1}, material->texture_filename};
-  const urdf::Color& c = material->color;
-  return {{c.r, c.g, c.b, c.a}, ""};
+  if (!material->texture.empty()) return {{1, 1, 1, 1}, material->texture};
+  return {material->rgba, ""};
 }
 
 }  // namespace
 
-LinkColours ResolveLinkColours(const urdf::Link& link) {
+LinkColours ResolveLinkColours(const model::Link& link) {
   LinkColours colours;
   std::optional<LinkMaterial> current;   // RobotLink::default_material_
-  for (const auto& visual : link.visual_array) {
-    if (visual->geometry && (!current || visual->material)) {
-      current = MaterialColour(link, visual->material);
-    }
+  for (const auto& visual : link.visuals) {
+    if (!current || visual.material) current = MaterialColour(link, visual.material);
     colours.visuals.push_back(current.value_or(kRed));
   }
   colours.collision = current.value_or(kRed);

@@ -6,7 +6,8 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <urdf_model/link.h>
+
+#include "model/robot.h"
 
 namespace urdfsnap::scene {
 
@@ -19,16 +20,17 @@ struct LinkMaterial {
 };
 
 struct LinkColours {
-  std::vector<LinkMaterial> visuals;      // per entry of link.visual_array
+  std::vector<LinkMaterial> visuals;      // per entry of link.visuals
   LinkMaterial collision;                 // for every collision shape of the link
 };
 
 // Applies RViz's rules, in its order (visuals, then collisions):
-//  - a visual with a material uses the first visual of the link that names the same material
-//    (urdfdom already made robot-level materials win over inline colours of the same name);
+//  - a visual with a material uses the material of the first visual of the link that names the
+//    same material (urdfdom already made robot-level materials win over inline colours of the
+//    same name);
 //  - a visual without a material keeps the link's current material: that of the last visual
 //    before it that had one, or, before any, the first visual's material, else red;
 //  - collision shapes take the link's current material after all visuals, else red.
-LinkColours ResolveLinkColours(const urdf::Link& link);
+LinkColours ResolveLinkColours(const model::Link& link);
 
 }  // namespace urdfsnap::scene

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <memory>
-#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -20,7 +19,7 @@ struct DrawItem {
   std::shared_ptr<const geometry::TriangleMesh> mesh;
   Eigen::Affine3d X_FG;                 // mesh pose in the fixed frame, including its scale
   Eigen::Vector4f rgba{1, 0, 0, 1};     // diffuse colour and alpha
-  std::string link;                     // the link it belongs to ("" for markers)
+  int link = -1;                        // index into the robot's links(); -1 for markers
   // modulates the lit colour (Ogre's default texture unit), sampled at the mesh's uvs; none if null
   std::shared_ptr<const TextureImage> texture;
   Eigen::Vector3f emissive{0, 0, 0};    // self-illumination, added to the lit colour

@@ -26,7 +26,7 @@ constexpr float kNameHeight = 0.1f;
 
 void Add(const std::shared_ptr<const geometry::TriangleMesh>& mesh, const Eigen::Affine3d& X_FG,
          const Eigen::Vector4f& rgba, Scene& scene) {
-  scene.items.push_back({mesh, X_FG, rgba, "", nullptr, Eigen::Vector3f::Zero()});
+  scene.items.push_back({mesh, X_FG, rgba, -1, nullptr, Eigen::Vector3f::Zero()});
 }
 
 // A unit mesh along +Z stretched to `length` with `diameter`, its centre at `centre`, its +Z
@@ -64,21 +64,22 @@ void AddParentArrow(const Eigen::Vector3d& from, const Eigen::Vector3d& to, doub
       kHeadColour, scene);
 }
 
-void AddNames(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_FL, double scale,
-              Scene& scene) {
+}  // namespace
+
+std::vector<TextLabel> MakeTfNameLabels(const model::Robot& robot, const TfOptions& options) {
   std::vector<std::string> names;
   for (const auto& link : robot.links()) names.push_back(link.name);
   const std::shared_ptr<const GlyphAtlas> atlas = BuildGlyphAtlas(FindLiberationSans(), CodePointsOf(names));
-  for (size_t i = 0; i < names.size(); ++i) {
-    scene.labels.push_back({atlas->texture, LayOutText(*atlas, names[i], kNameHeight * static_cast<float>(scale)),
-                            X_FL[i].translation(), Eigen::Vector4f::Ones()});
+  std::vector<TextLabel> labels;
+  for (const std::string& name : names) {
+    labels.push_back({atlas->texture, LayOutText(*atlas, name, kNameHeight * static_cast<float>(options.marker_scale)),
+                      Eigen::Vector3d::Zero(), Eigen::Vector4f::Ones()});
   }
+  return labels;
 }
 
-}  // namespace
-
 void AddTfMarkers(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_FL,
-                  const TfOptions& options, Scene& scene) {
+                  const TfOptions& options, const std::vector<TextLabel>& names, Scene& scene) {
   for (size_t i = 0; i < robot.links().size(); ++i) {
     if (options.show_axes) AddAxes(X_FL[i], options.marker_scale, scene);
     const int joint = robot.links()[i].parent_joint;
@@ -86,8 +87,11 @@ void AddTfMarkers(const model::Robot& robot, const std::vector<Eigen::Isometry3d
       const int parent = robot.joints()[joint].parent_link;
       AddParentArrow(X_FL[i].translation(), X_FL[parent].translation(), options.marker_scale, scene);
     }
+    if (i < names.size()) {
+      scene.labels.push_back(names[i]);
+      scene.labels.back().anchor = X_FL[i].translation();
+    }
   }
-  if (options.show_names) AddNames(robot, X_FL, options.marker_scale, scene);
 }
 
 }  // namespace urdfsnap::scene

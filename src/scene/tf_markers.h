@@ -19,11 +19,17 @@ struct TfOptions {
   bool show_axes = true;
   bool show_arrows = true;
   double marker_scale = 1.0;
+
+  bool operator==(const TfOptions&) const = default;
 };
 
-// Adds the axes, names and parent arrows of every link frame, as `options` ask. X_FL: link poses in
-// the fixed frame. Throws urdfsnap::Error when names are asked for and Liberation Sans is missing.
+// The frame names as text labels (one per robot.links(), anchored at the origin), laid out once
+// with Liberation Sans at the marker scale. Throws urdfsnap::Error when the font is missing.
+std::vector<TextLabel> MakeTfNameLabels(const model::Robot& robot, const TfOptions& options);
+
+// Adds the axes and parent arrows of every link frame as `options` ask, and `names` (from
+// MakeTfNameLabels, or empty) moved to the frames. X_FL: link poses in the fixed frame.
 void AddTfMarkers(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_FL,
-                  const TfOptions& options, Scene& scene);
+                  const TfOptions& options, const std::vector<TextLabel>& names, Scene& scene);
 
 }  // namespace urdfsnap::scene

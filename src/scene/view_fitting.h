@@ -1,15 +1,23 @@
-// --fit: an orbit view that frames the whole scene, for documentation images.
+// --fit: an orbit view that frames the whole scene, or every scene of an animation, for
+// documentation images.
 #pragma once
+
+#include <functional>
 
 #include "scene/orbit_view.h"
 #include "scene/scene.h"
 
 namespace urdfsnap::scene {
 
-// Returns `view` with the focal point at the centre of the scene's draw items' bounding box (when
-// keep_focal is false) and the smallest distance at which every vertex of every item projects
-// inside the image shrunk by `margin` (a fraction of each side) at that yaw, pitch and field of
-// view. An empty scene returns `view` unchanged.
+// Returns `view` with the focal point at the centre of the bounding box of every draw item of
+// every scene `scene_of(k)`, k = 0 .. count-1 (when keep_focal is false), and the smallest
+// distance at which all their vertices project inside the image shrunk by `margin` (a fraction of
+// each side) at that yaw, pitch and field of view. Scenes are asked for twice (bounds, then
+// distance) and not kept, so memory does not grow with `count`. No vertices: `view` unchanged.
+OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitView view, double aspect,
+                  bool keep_focal, double margin = 0.05);
+
+// FitView for one scene.
 OrbitView FitView(const Scene& scene, OrbitView view, double aspect, bool keep_focal,
                   double margin = 0.05);
 

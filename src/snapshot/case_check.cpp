@@ -51,7 +51,7 @@ CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const 
   result.snapshot_case = &c;
   try {
     result.actual = session.Render(
-        c.request, [&](std::string_view name) { return OptionLocation(suite, c, name); }, warnings);
+        c.request, [&](std::string_view name) { return OptionLocation(suite, c, name); }, warnings).colour;
     Compare(c, result);
   } catch (const Error& e) {
     result.status = CaseStatus::kError;

@@ -49,7 +49,7 @@ Renderer* RendererTest::renderer_ = nullptr;
 TEST_F(RendererTest, EmptySceneIsTheBackgroundEverywhere) {
   Scene scene;
   scene.background = {48 / 255.f, 48 / 255.f, 48 / 255.f};
-  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48);
+  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
   ASSERT_EQ(image.width, 64);
   ASSERT_EQ(image.height, 48);
   for (int y = 0; y < 48; ++y) {
@@ -64,7 +64,7 @@ TEST_F(RendererTest, TriangleFacingTheLightHasItsFullColourAndTopRowComesFirst) 
   item.X_FG = Eigen::Affine3d::Identity();
   item.rgba = {1, 0.2f, 0, 1};
   scene.items.push_back(item);
-  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48);
+  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
   // n · l = 1, so the colour is exactly the diffuse colour (0.2 · 255 = 51)
   EXPECT_EQ(Pixel(image, 32, 14), (Rgb{255, 51, 0}));
   // the triangle is above the centre, so the bottom rows are background
@@ -78,7 +78,7 @@ TEST_F(RendererTest, BackFacesAreCulled) {
   item.mesh = UpperTriangle();
   item.X_FG = Eigen::AngleAxisd(3.14159265358979, Eigen::Vector3d::UnitZ()) * Eigen::Affine3d::Identity();
   scene.items.push_back(item);
-  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48);
+  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
   EXPECT_EQ(Pixel(image, 32, 14), (Rgb{48, 48, 48}));
 }
 
@@ -89,7 +89,7 @@ TEST_F(RendererTest, GridLinesBlendAtHalfAlphaAsRvizMeasured) {
   OrbitView top;
   top.pitch = 1.5;
   top.distance = 12;
-  const image::Image image = no_aa.Render(scene, top, 320, 240);
+  const image::Image image = no_aa.Render(scene, top, 320, 240).colour;
   // without multisampling a line pixel has full coverage: 0.5·(160,160,164) + 0.5·48, and where
   // two lines cross the second blends over the first
   const Rgb line{104, 104, 106}, crossing{132, 132, 135}, background{48, 48, 48};
@@ -130,7 +130,7 @@ TEST_F(RendererTest, TextureModulatesTheLitColourWithVZeroAtTheImageTop) {
   box.texture = FourColours();
   scene.items.push_back(box);
   Renderer no_aa(0);
-  const image::Image image = no_aa.Render(scene, FrontView(), 128, 128);
+  const image::Image image = no_aa.Render(scene, FrontView(), 128, 128).colour;
   // the face spans 77 px around the centre; the texel centres (u, v = 0.25, 0.75) lie 19 px from
   // it, where bilinear filtering gives nearly the texels' own colours (within half a pixel). Seen from +X, +Y (u) runs to the
   // right and v = 0 is the top: red top left, green top right, blue bottom left (times the
@@ -149,7 +149,7 @@ TEST_F(RendererTest, EmissionAddsToTheLitColourAndClampsAtOne) {
   item.rgba = {0.5f, 0.5f, 0, 1};
   item.emissive = {0.8f, 0, 0.25f};
   scene.items.push_back(item);
-  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48);
+  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
   // n · l = cos 0.9 = 0.6216: red 0.8 + 0.311 clamps to 255, green 0.311·255, blue 0.25·255
   EXPECT_EQ(Pixel(image, 32, 14), (Rgb{255, 79, 64}));
 }
@@ -176,7 +176,7 @@ std::array<int, 4> InkBox(const image::Image& image) {
 TEST_F(RendererTest, LabelIsWhiteUnlitTextHangingBelowItsAnchor) {
   Scene scene;
   scene.labels.push_back(LetterH());
-  const image::Image image = renderer_->Render(scene, FrontView(), 128, 96);
+  const image::Image image = renderer_->Render(scene, FrontView(), 128, 96).colour;
   const std::array<int, 4> box = InkBox(image);
   ASSERT_GE(box[0], 0) << "nothing drawn";
   // the anchor projects to the image centre (64, 48): the letter is centred under it
@@ -191,7 +191,7 @@ TEST_F(RendererTest, LabelIsWhiteUnlitTextHangingBelowItsAnchor) {
   // seen from the side the label still faces the camera and keeps its width
   OrbitView side = FrontView();
   side.yaw = 1.2;
-  const std::array<int, 4> turned = InkBox(renderer_->Render(scene, side, 128, 96));
+  const std::array<int, 4> turned = InkBox(renderer_->Render(scene, side, 128, 96).colour);
   EXPECT_NEAR(turned[2] - turned[0], box[2] - box[0], 1);
 }
 
@@ -204,7 +204,7 @@ TEST_F(RendererTest, LabelIsHiddenBehindOpaqueGeometryButWinsAgainstASurfaceThro
   box.X_FG = Eigen::Translation3d(0.5, 0, -0.2) * Eigen::Scaling(0.1, 1.0, 0.8);
   box.rgba = {0, 0, 1, 1};
   scene.items.push_back(box);
-  const image::Image hidden = renderer_->Render(scene, FrontView(), 128, 96);
+  const image::Image hidden = renderer_->Render(scene, FrontView(), 128, 96).colour;
   for (int y = 0; y < hidden.height; ++y) {
     for (int x = 0; x < hidden.width; ++x) ASSERT_NE(Pixel(hidden, x, y), (Rgb{255, 255, 255}));
   }
@@ -212,7 +212,7 @@ TEST_F(RendererTest, LabelIsHiddenBehindOpaqueGeometryButWinsAgainstASurfaceThro
   // one step of the 24-bit depth buffer, about 24 µm at 2 m with the 0.01 m near plane (without
   // the bias this face hides the text)
   scene.items[0].X_FG = Eigen::Translation3d(-0.05 + 2e-5, 0, -0.2) * Eigen::Scaling(0.1, 1.0, 0.8);
-  const image::Image coplanar = renderer_->Render(scene, FrontView(), 128, 96);
+  const image::Image coplanar = renderer_->Render(scene, FrontView(), 128, 96).colour;
   int white = 0;
   for (int y = 0; y < coplanar.height; ++y) {
     for (int x = 0; x < coplanar.width; ++x) white += Pixel(coplanar, x, y) == Rgb{255, 255, 255};

@@ -25,9 +25,8 @@ TEST(UrdfLoaderTest, LoadsTheMrmRobot) {
   EXPECT_EQ(robot.links()[0].name, "base_link");
   EXPECT_EQ(robot.links()[0].line, 3);
   EXPECT_EQ(robot.links()[0].parent_joint, -1);
-  ASSERT_TRUE(robot.links()[0].urdf);
-  EXPECT_EQ(robot.links()[0].urdf->visual_array.size(), 1u);
-  EXPECT_EQ(robot.urdf().getName(), "mrm");
+  ASSERT_EQ(robot.links()[0].visuals.size(), 1u);
+  EXPECT_EQ(robot.links()[0].visuals[0].shape.type, Shape::Type::kBox);
 
   const Joint& shoulder = robot.joints()[robot.FindJoint("link_01__link_02")];
   EXPECT_EQ(shoulder.type, JointType::kRevolute);

@@ -10,8 +10,7 @@
 
 #include "common/error.h"
 #include "model/forward_kinematics.h"
-#include "scene/mesh_prefetch.h"
-#include "scene/scene_builder.h"
+#include "scene/robot_scene.h"
 #include "support/temp_folder.h"
 
 namespace urdfsnap::scene {
@@ -52,8 +51,7 @@ class SceneMeshTest : public ::testing::Test {
   Scene Build(const std::string& base_uri, const std::string& arm_uri) {
     const model::Robot robot =
         model::LoadRobot(TwoMeshLinks(base_uri, arm_uri), options_.model_file, warnings_);
-    PrefetchMeshFiles(robot, options_);  // as a render session does before building
-    return BuildScene(robot, model::ComputeLinkPoses(robot, {0.0}), options_, warnings_);
+    return RobotScene(robot, options_, warnings_).Pose(model::ComputeLinkPoses(robot, {0.0}));
   }
   std::string ErrorOf(const std::string& base_uri, const std::string& arm_uri) {
     try {

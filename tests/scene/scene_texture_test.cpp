@@ -4,12 +4,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "common/error.h"
 #include "model/forward_kinematics.h"
 #include "scene/primitive_meshes.h"
-#include "scene/scene_builder.h"
+#include "scene/robot_scene.h"
 
 namespace urdfsnap::scene {
 namespace {
@@ -22,9 +23,9 @@ class SceneTextureTest : public ::testing::Test {
  protected:
   Scene Build(const std::string& urdf_text) {
     options_.model_file = kTexbot.string();
-    const model::Robot robot = model::LoadRobot(urdf_text, options_.model_file, warnings_);
-    return BuildScene(robot, model::ComputeLinkPoses(robot, std::vector<double>(robot.joints().size(), 0.0)),
-                      options_, warnings_);
+    robot_.emplace(model::LoadRobot(urdf_text, options_.model_file, warnings_));
+    return RobotScene(*robot_, options_, warnings_)
+        .Pose(model::ComputeLinkPoses(*robot_, std::vector<double>(robot_->joints().size(), 0.0)));
   }
   Scene BuildTexbot() {
     std::ostringstream text;
@@ -33,6 +34,7 @@ class SceneTextureTest : public ::testing::Test {
   }
   SceneOptions options_;
   Warnings warnings_;
+  std::optional<model::Robot> robot_;   // the last one built
 };
 
 TEST_F(SceneTextureTest, UrdfTextureIsDrawnOnWhiteOnEveryShapeAndCollision) {
@@ -61,7 +63,7 @@ TEST_F(SceneTextureTest, MeshMaterialsKeepTheirTextureAndEmission) {
   const Scene scene = BuildTexbot();
   int lamp_parts = 0, textured = 0, glowing = 0;
   for (const DrawItem& item : scene.items) {
-    if (item.link != "lamp") continue;
+    if (item.link != robot_->FindLink("lamp")) continue;
     ++lamp_parts;
     textured += item.texture != nullptr;
     glowing += item.emissive.isApprox(Eigen::Vector3f(0, 0.6f, 0.2f));

@@ -1,5 +1,6 @@
-// Scene building from a posed robot: shapes, sizes, colours, frames and display switches (unit).
-#include "scene/scene_builder.h"
+// A robot's scene, prepared once and posed: shapes, sizes, colours, link indices, frames and display
+// switches (unit).
+#include "scene/robot_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -28,21 +29,21 @@ constexpr const char* kTwoLinks = R"(<?xml version="1.0"?>
   </link>
 </robot>)";
 
-struct SceneBuilderTest : ::testing::Test {
+struct RobotSceneTest : ::testing::Test {
   Scene Build(const SceneOptions& options, double lift = 0.5) {
     const model::Robot robot = model::LoadRobot(kTwoLinks, "two.urdf", warnings);
     const std::vector<double> positions = {lift};
-    return BuildScene(robot, model::ComputeLinkPoses(robot, positions), options, warnings);
+    return RobotScene(robot, options, warnings).Pose(model::ComputeLinkPoses(robot, positions));
   }
   Warnings warnings;
 };
 
-TEST_F(SceneBuilderTest, VisualsGetRvizShapesSizesAndColours) {
+TEST_F(RobotSceneTest, VisualsGetRvizShapesSizesAndColours) {
   const Scene scene = Build({});
   ASSERT_EQ(scene.items.size(), 2u);
   const DrawItem& box = scene.items[0];
   EXPECT_EQ(box.mesh, UnitBoxMesh());
-  EXPECT_EQ(box.link, "base");
+  EXPECT_EQ(box.link, 0);
   EXPECT_TRUE(box.rgba.isApprox(Eigen::Vector4f(1, 0, 0, 1)));  // no material: RViz red
   EXPECT_TRUE(box.X_FG.linear().isApprox(Eigen::Vector3d(1, 2, 3).asDiagonal().toDenseMatrix()));
   EXPECT_TRUE(box.X_FG.translation().isApprox(Eigen::Vector3d(0, 0, 0.5)));
@@ -55,7 +56,7 @@ TEST_F(SceneBuilderTest, VisualsGetRvizShapesSizesAndColours) {
   EXPECT_TRUE(warnings.empty());
 }
 
-TEST_F(SceneBuilderTest, FixedFrameMovesEverythingIntoThatLink) {
+TEST_F(RobotSceneTest, FixedFrameMovesEverythingIntoThatLink) {
   SceneOptions options;
   options.fixed_frame = "arm";
   const Scene scene = Build(options);
@@ -63,7 +64,7 @@ TEST_F(SceneBuilderTest, FixedFrameMovesEverythingIntoThatLink) {
   EXPECT_TRUE(scene.items[0].X_FG.translation().isApprox(Eigen::Vector3d(0, 0, -1.0)));
 }
 
-TEST_F(SceneBuilderTest, UnknownFixedFrameNamesTheLinks) {
+TEST_F(RobotSceneTest, UnknownFixedFrameNamesTheLinks) {
   SceneOptions options;
   options.fixed_frame = "world";
   try {
@@ -74,7 +75,7 @@ TEST_F(SceneBuilderTest, UnknownFixedFrameNamesTheLinks) {
   }
 }
 
-TEST_F(SceneBuilderTest, CollisionOnlyUsesTheVisualColourElseRed) {
+TEST_F(RobotSceneTest, CollisionOnlyUsesTheVisualColourElseRed) {
   SceneOptions options;
   options.show_visual = false;
   options.show_collision = true;
@@ -85,14 +86,14 @@ TEST_F(SceneBuilderTest, CollisionOnlyUsesTheVisualColourElseRed) {
   EXPECT_TRUE(scene.items[0].X_FG.linear().isApprox(Eigen::Matrix3d::Identity() * 0.5));
 }
 
-TEST_F(SceneBuilderTest, RobotAlphaMultipliesMaterialAlpha) {
+TEST_F(RobotSceneTest, RobotAlphaMultipliesMaterialAlpha) {
   SceneOptions options;
   options.alpha = 0.5;
   const Scene scene = Build(options);
   EXPECT_FLOAT_EQ(scene.items[1].rgba.w(), 0.5f);
 }
 
-TEST_F(SceneBuilderTest, GridIsElevenPlusElevenLinesOverTenMetres) {
+TEST_F(RobotSceneTest, GridIsElevenPlusElevenLinesOverTenMetres) {
   const Scene scene = Build({});
   ASSERT_EQ(scene.lines.size(), 1u);
   const LineSet& grid = scene.lines[0];
@@ -107,7 +108,7 @@ TEST_F(SceneBuilderTest, GridIsElevenPlusElevenLinesOverTenMetres) {
   EXPECT_TRUE(Build(no_grid).lines.empty());
 }
 
-TEST_F(SceneBuilderTest, TfDisplayGivesAxesArrowsAndANameAtEachFrame) {
+TEST_F(RobotSceneTest, TfDisplayGivesAxesArrowsAndANameAtEachFrame) {
   SceneOptions options;
   options.show_visual = false;
   options.tf.enabled = true;

@@ -1,23 +1,19 @@
-// Turns a posed robot into a Scene, the way RViz's RobotModel and Grid displays would show it:
-// which shapes are visible, where (in the fixed frame), and in which colour. GL-free.
+// What the displays show, with RViz's defaults: the RobotModel display (visual, collision, alpha),
+// the global options (fixed frame, background), the Grid and the TF display; and where the model's
+// files are found. Filled from flags, suite files and `.rviz` files (src/render/).
 #pragma once
 
 #include <map>
 #include <string>
-#include <vector>
 
-#include <Eigen/Geometry>
+#include <Eigen/Core>
 
-#include "common/warnings.h"
-#include "model/robot.h"
 #include "scene/grid.h"
-#include "scene/scene.h"
 #include "scene/tf_markers.h"
 
 namespace urdfsnap::scene {
 
-// What the displays show, with RViz's defaults (robot_model_display.cpp L60-86,
-// visualization_manager.cpp L172-179).
+// robot_model_display.cpp L60-86, visualization_manager.cpp L172-179.
 struct SceneOptions {
   std::string fixed_frame;        // a link name; "" means the root link
   // where mesh URIs are resolved from: relative paths and package.xml folders around this file,
@@ -31,11 +27,8 @@ struct SceneOptions {
   Eigen::Vector3f background{48 / 255.f, 48 / 255.f, 48 / 255.f};
   GridOptions grid;
   TfOptions tf;
-};
 
-// Builds the scene for link poses X_RL (one per robot.links(), in the root frame R, as
-// model::ComputeLinkPoses returns them). Throws urdfsnap::Error for an unknown fixed frame.
-Scene BuildScene(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_RL,
-                 const SceneOptions& options, Warnings& warnings);
+  bool operator==(const SceneOptions&) const = default;
+};
 
 }  // namespace urdfsnap::scene

@@ -1,0 +1,22 @@
+# Checks render_poses' output: 100 PNGs, and pose 0 equal (within `urdfsnap diff`'s default
+# tolerance) to what the urdfsnap command draws for the same pose and view.
+# usage: cmake -DURDFSNAP=... -DMODEL=... -DPOSES=DIR -P check_poses.cmake
+file(GLOB pngs "${POSES}/pose_[0-9][0-9][0-9].png")
+list(LENGTH pngs count)
+if(NOT count EQUAL 100)
+  message(FATAL_ERROR "expected 100 pose images in ${POSES}, found ${count}")
+endif()
+foreach(extra pose_000_depth.npy pose_000_labels.png pose_000_labels.json)
+  if(NOT EXISTS "${POSES}/${extra}")
+    message(FATAL_ERROR "${POSES}/${extra} is missing")
+  endif()
+endforeach()
+file(STRINGS "${POSES}/pose_000.args" arguments)
+execute_process(COMMAND ${URDFSNAP} render ${MODEL} -o cli_pose_000.png ${arguments} RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "urdfsnap render failed")
+endif()
+execute_process(COMMAND ${URDFSNAP} diff ${POSES}/pose_000.png cli_pose_000.png RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "pose 0 from the C++ API differs from `urdfsnap render`")
+endif()

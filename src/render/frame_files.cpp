@@ -1,0 +1,64 @@
+// Depth and label files: conversions to the stored units and the label names beside the image.
+#include "render/frame_files.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "image/gray16_png.h"
+#include "image/npy_writer.h"
+
+namespace urdfsnap::render {
+
+namespace {
+
+std::string Extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
+
+}  // namespace
+
+std::vector<std::uint16_t> DepthMillimetres(const image::DepthImage& depth) {
+  std::vector<std::uint16_t> mm(depth.metres.size());
+  for (std::size_t i = 0; i < mm.size(); ++i) {
+    const float metres = depth.metres[i];
+    mm[i] = std::isnan(metres) ? 0 : static_cast<std::uint16_t>(std::clamp(std::lround(metres * 1000.0), 1L, 65535L));
+  }
+  return mm;
+}
+
+void CheckDepthPath(const std::string& path, const std::string& option) {
+  const std::string extension = Extension(path);
+  if (extension != ".png" && extension != ".npy") {
+    throw Error(option + " '" + path + "': expected a .png (16-bit millimetres) or .npy (float32 metres) file");
+  }
+}
+
+void CheckLabelsPath(const std::string& path, const std::string& option) {
+  if (Extension(path) != ".png") throw Error(option + " '" + path + "': expected a .png file (16-bit labels)");
+}
+
+void WriteDepthFile(const image::DepthImage& depth, const std::string& path) {
+  CheckDepthPath(path, "depth file");
+  if (Extension(path) == ".npy") {
+    image::WriteNpyFloat32(depth.width, depth.height, depth.metres, path);
+  } else {
+    image::WriteGray16Png(depth.width, depth.height, DepthMillimetres(depth), path);
+  }
+}
+
+std::string LabelNamesJson(const model::Robot& robot) {
+  nlohmann::ordered_json names = nlohmann::ordered_json::object();
+  for (std::size_t i = 0; i < robot.links().size(); ++i) names[std::to_string(i + 1)] = robot.links()[i].name;
+  return names.dump(2) + "\n";
+}
+
+void WriteLabelFiles(const image::LabelImage& labels, const model::Robot& robot, const std::string& path) {
+  CheckLabelsPath(path, "labels file");
+  image::WriteGray16Png(labels.width, labels.height, labels.labels, path);
+  WriteFileAtomically(std::filesystem::path(path).replace_extension(".json").string(), LabelNamesJson(robot));
+}
+
+}  // namespace urdfsnap::render

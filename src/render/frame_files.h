@@ -1,0 +1,39 @@
+// The depth and link-label images as files, in the conventions of the robotics field:
+//   depth .png: 16-bit, millimetres along the camera's viewing axis, 0 where no robot is (ROS's
+//               16UC1 depth images), values beyond 65.535 m saturate at 65535;
+//   depth .npy: float32 metres, NaN where no robot is (ROS's 32FC1), read by numpy.load;
+//   labels .png: 16-bit, 1 + the link's index (Robot::links() order, as `urdfsnap info` lists the
+//               links), 0 where none; with FILE.json beside FILE.png mapping each value (a decimal
+//               string) to the link's name.
+// All written atomically (temporary file + rename).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+#include "model/robot.h"
+
+namespace urdfsnap::render {
+
+// Millimetres as the 16-bit depth PNG stores them (0 where there is no robot).
+std::vector<std::uint16_t> DepthMillimetres(const image::DepthImage& depth);
+
+// Writes `depth` to `path` by its extension (.png or .npy). Throws urdfsnap::Error naming the
+// path for another extension or a write failure.
+void WriteDepthFile(const image::DepthImage& depth, const std::string& path);
+
+// The JSON object {"1": "base_link", "2": ...} for every link of `robot`.
+std::string LabelNamesJson(const model::Robot& robot);
+
+// Writes `labels` to `path` (which must end in .png) and LabelNamesJson beside it (same name,
+// .json). Throws urdfsnap::Error naming the path.
+void WriteLabelFiles(const image::LabelImage& labels, const model::Robot& robot, const std::string& path);
+
+// Throws urdfsnap::Error naming `option` unless `path` has an extension WriteDepthFile (depth) or
+// WriteLabelFiles (labels) takes: for checking command-line options before rendering.
+void CheckDepthPath(const std::string& path, const std::string& option);
+void CheckLabelsPath(const std::string& path, const std::string& option);
+
+}  // namespace urdfsnap::render

@@ -1,0 +1,52 @@
+// The typed render core that C++ users link and every command uses: a robot prepared once
+// (meshes, textures, colours, TF names: scene::RobotScene), then one call per frame with joint
+// positions, view, image size and the outputs wanted, doing no file I/O. The GL side (a context
+// and its uploaded meshes) is a gl::Renderer the caller owns and may share between robots.
+//
+//   auto robot = std::make_shared<const model::Robot>(model::LoadRobot(urdf, "arm.urdf", warnings));
+//   render::RobotRenderer arm(robot, settings.scene, warnings);
+//   gl::Renderer gl(settings.samples);
+//   for (const auto& positions : poses)
+//     image::Frame frame = arm.Render(gl, positions, settings.view, settings.size, {});
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "common/warnings.h"
+#include "gl/renderer.h"
+#include "image/image.h"
+#include "model/robot.h"
+#include "render/render_settings.h"
+#include "scene/robot_scene.h"
+
+namespace urdfsnap::render {
+
+class RobotRenderer {
+ public:
+  // Prepares `robot` for `options`. Throws urdfsnap::Error as scene::RobotScene does (files that
+  // cannot be found or read, located at the link; an unknown fixed frame; a missing font).
+  RobotRenderer(std::shared_ptr<const model::Robot> robot, scene::SceneOptions options, Warnings& warnings);
+
+  const model::Robot& robot() const { return *robot_; }
+  const scene::RobotScene& scene() const { return scene_; }
+
+  // The scene for `positions` (one per robot().joints(), radians or metres, mimic joints resolved,
+  // as model::ResolveJointPositions returns them). Throws urdfsnap::Error for a wrong count.
+  scene::Scene Pose(const std::vector<double>& positions) const;
+
+  // Renders one frame of the robot at `positions` through `gl`.
+  image::Frame Render(gl::Renderer& gl, const std::vector<double>& positions, const scene::OrbitView& view,
+                      ImageSize size, const image::FrameOutputs& outputs = {}) const;
+
+  // The view `fit` makes of `view` for the poses `pose(k)`, k = 0 .. count-1, as one camera for
+  // all of them (an animation's camera does not jump). The poses are asked for twice and not kept.
+  scene::OrbitView FitView(Fit fit, const scene::OrbitView& view, ImageSize size, int count,
+                           const std::function<std::vector<double>(int)>& pose) const;
+
+ private:
+  std::shared_ptr<const model::Robot> robot_;
+  scene::RobotScene scene_;
+};
+
+}  // namespace urdfsnap::render

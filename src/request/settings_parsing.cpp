@@ -1,0 +1,57 @@
+// ParseRenderSettings: each option's text checked and applied over the .rviz file's settings.
+#include "request/settings_parsing.h"
+
+#include <numbers>
+
+#include "render/rviz_config.h"
+#include "request/value_parsing.h"
+
+namespace urdfsnap::request {
+
+namespace {
+
+void ApplyView(const RenderRequest& r, const OptionLabel& label, scene::OrbitView& view) {
+  if (!r.yaw.empty()) view.yaw = ParseFinite(r.yaw, label("yaw"));
+  if (!r.pitch.empty()) view.pitch = ParseFinite(r.pitch, label("pitch"));
+  if (!r.distance.empty()) view.distance = ParseInRange(r.distance, label("distance"), 0.01, 1e6);
+  if (!r.focal.empty()) view.focal = ParseVector3(r.focal, label("focal"));
+  // RViz's Field of View property range, 0.001 to π/2 rad (orbit_view_controller.cpp L81-85)
+  if (!r.fov.empty()) view.fov_y = ParseInRange(r.fov, label("fov"), 0.06, 90) * std::numbers::pi / 180;
+}
+
+void ApplyScene(const RenderRequest& r, const OptionLabel& label, scene::SceneOptions& scene) {
+  if (!r.fixed_frame.empty()) scene.fixed_frame = r.fixed_frame;
+  if (!r.background.empty()) scene.background = ParseColour(r.background, label("background"));
+  if (!r.alpha.empty()) scene.alpha = ParseInRange(r.alpha, label("alpha"), 0, 1);
+  if (r.collision) scene.show_collision = true;
+  if (r.no_visual) scene.show_visual = false;
+  if (r.no_grid) scene.grid.enabled = false;
+  if (r.tf) scene.tf.enabled = true;
+  if (r.no_tf_names) scene.tf.show_names = false;
+  if (r.no_tf_axes) scene.tf.show_axes = false;
+  if (r.no_tf_arrows) scene.tf.show_arrows = false;
+  if (!r.tf_scale.empty()) scene.tf.marker_scale = ParseInRange(r.tf_scale, label("tf-scale"), 0, 1e6);
+  scene.allow_missing_meshes = r.allow_missing_meshes;
+  scene.model_file = r.model.path;
+  scene.packages = r.model.packages;
+}
+
+}  // namespace
+
+render::RenderSettings ParseRenderSettings(const RenderRequest& r, const OptionLabel& label,
+                                           Warnings& warnings) {
+  render::RenderSettings settings;
+  settings.size = ParseImageSize(r.size, label("size"));
+  if (!r.rviz.empty()) {
+    const render::RvizConfig config = render::ReadRvizConfig(r.rviz, {settings.scene, settings.view}, warnings);
+    settings.scene = config.scene;
+    settings.view = config.view;
+  }
+  ApplyView(r, label, settings.view);
+  ApplyScene(r, label, settings.scene);
+  settings.samples = r.no_aa ? 0 : 4;
+  settings.fit = !r.fit ? render::Fit::kNone : r.focal.empty() ? render::Fit::kFit : render::Fit::kKeepFocal;
+  return settings;
+}
+
+}  // namespace urdfsnap::request
