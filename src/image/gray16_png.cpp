@@ -9,7 +9,6 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
-#include "image/image.h"
 
 namespace urdfsnap::image {
 
@@ -46,7 +45,9 @@ bool WriteImage(png_structp png, png_infop info, int width, int height, const st
 
 }  // namespace
 
-std::vector<std::uint8_t> EncodeGray16Png(int width, int height, const std::vector<std::uint16_t>& values) {
+std::vector<std::uint8_t> EncodeGray16Png(const Gray16Image& image) {
+  const int width = image.width, height = image.height;
+  const std::vector<std::uint16_t>& values = image.values;
   if (width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide ||
       values.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
     throw Error("EncodeGray16Png: " + std::to_string(values.size()) + " values do not make a " +
@@ -66,8 +67,8 @@ std::vector<std::uint8_t> EncodeGray16Png(int width, int height, const std::vect
   return bytes;
 }
 
-void WriteGray16Png(int width, int height, const std::vector<std::uint16_t>& values, const std::string& path) {
-  const std::vector<std::uint8_t> png = EncodeGray16Png(width, height, values);
+void WriteGray16Png(const Gray16Image& image, const std::string& path) {
+  const std::vector<std::uint8_t> png = EncodeGray16Png(image);
   WriteFileAtomically(path, {reinterpret_cast<const char*>(png.data()), png.size()});
 }
 

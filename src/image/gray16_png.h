@@ -6,13 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "image/image.h"
+
 namespace urdfsnap::image {
 
-// The PNG file bytes of a width x height image of 16-bit grey values (top row first). Throws
-// urdfsnap::Error for a size outside 1..kMaxImageSide or a value count that does not match.
-std::vector<std::uint8_t> EncodeGray16Png(int width, int height, const std::vector<std::uint16_t>& values);
+// The PNG file bytes of `image` (16-bit grey, top row first). Throws urdfsnap::Error for a size
+// outside 1..kMaxImageSide or a value count that does not match it.
+std::vector<std::uint8_t> EncodeGray16Png(const Gray16Image& image);
 
 // Encodes and writes to `path` atomically (see WriteFileAtomically).
-void WriteGray16Png(int width, int height, const std::vector<std::uint16_t>& values, const std::string& path);
+void WriteGray16Png(const Gray16Image& image, const std::string& path);
 
 }  // namespace urdfsnap::image

@@ -31,6 +31,13 @@ struct LabelImage {
   std::vector<std::uint16_t> labels;   // width * height, top row first
 };
 
+// A 16-bit single-channel image as stored in a PNG: depth in millimetres, or link labels.
+struct Gray16Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint16_t> values;   // width * height, top row first
+};
+
 // Which images a render produces; all come from the same view and pose.
 struct FrameOutputs {
   bool colour = true;

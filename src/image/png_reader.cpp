@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
+#include <vector>
 
 #include "common/error.h"
 #include "common/file_reading.h"
@@ -111,35 +113,57 @@ void CheckPngHeader(const std::string& path, const std::uint8_t* bytes, std::siz
 
 }  // namespace
 
-Image ReadPng(const std::string& path) {
-  std::string bytes;
+namespace {
+
+std::string ReadPngFile(const std::string& path) {
   try {
-    bytes = ReadFileBounded(path, kMaxPngFileBytes);
+    return ReadFileBounded(path, kMaxPngFileBytes);
   } catch (const FileReadError& e) {
     throw Error(path + ": cannot read: " + e.what());
   }
-  return DecodePng(bytes, path);
 }
 
-Image DecodePng(std::string_view bytes, const std::string& path) {
+// Decodes with stb after the header checks: `load` is stbi_load_from_memory or its 16-bit twin,
+// asked for `channels` channels; `width` and `height` receive the size.
+template <typename Load>
+auto DecodeChecked(std::string_view bytes, const std::string& path, int channels, int& width, int& height,
+                   Load load) {
   const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
   CheckPngHeader(path, data, bytes.size());
   if (bytes.size() > kMaxPngFileBytes) throw Error(path + ": PNG file over 512 MiB");
-  Image image;
   int channels_in_file = 0;
   // stb keeps the reason of the last failure (per thread) and sets none for some corrupt data:
   // clear it, so that a message never carries an earlier file's reason
   stbi__g_failure_reason = nullptr;
-  // asking for 3 channels makes stb expand grey, drop alpha and reduce 16-bit samples
-  stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(bytes.size()), &image.width,
-                                          &image.height, &channels_in_file, 3);
+  auto* pixels = load(data, static_cast<int>(bytes.size()), &width, &height, &channels_in_file, channels);
   if (pixels == nullptr) {
     // no reason is a null C string (found by fuzzing)
     const char* reason = stbi_failure_reason();
     throw Error(path + ": cannot decode PNG: " + (reason ? reason : "corrupt image data"));
   }
-  image.rgb.assign(pixels, pixels + std::size_t(image.width) * image.height * 3);
+  using Sample = std::remove_pointer_t<decltype(pixels)>;
+  std::vector<Sample> samples(pixels, pixels + std::size_t(width) * height * channels);
   stbi_image_free(pixels);
+  return samples;
+}
+
+}  // namespace
+
+Image ReadPng(const std::string& path) { return DecodePng(ReadPngFile(path), path); }
+
+Image DecodePng(std::string_view bytes, const std::string& path) {
+  Image image;
+  // asking for 3 channels makes stb expand grey, drop alpha and reduce 16-bit samples
+  image.rgb = DecodeChecked(bytes, path, 3, image.width, image.height, stbi_load_from_memory);
+  return image;
+}
+
+Gray16Image ReadGray16Png(const std::string& path) { return DecodeGray16Png(ReadPngFile(path), path); }
+
+Gray16Image DecodeGray16Png(std::string_view bytes, const std::string& path) {
+  Gray16Image image;
+  // one 16-bit channel: 8-bit files are scaled up (x257), colour is turned grey
+  image.values = DecodeChecked(bytes, path, 1, image.width, image.height, stbi_load_16_from_memory);
   return image;
 }
 

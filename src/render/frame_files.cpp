@@ -20,11 +20,12 @@ std::string Extension(const std::string& path) { return std::filesystem::path(pa
 
 }  // namespace
 
-std::vector<std::uint16_t> DepthMillimetres(const image::DepthImage& depth) {
-  std::vector<std::uint16_t> mm(depth.metres.size());
-  for (std::size_t i = 0; i < mm.size(); ++i) {
+image::Gray16Image DepthMillimetres(const image::DepthImage& depth) {
+  image::Gray16Image mm{depth.width, depth.height, std::vector<std::uint16_t>(depth.metres.size())};
+  for (std::size_t i = 0; i < mm.values.size(); ++i) {
     const float metres = depth.metres[i];
-    mm[i] = std::isnan(metres) ? 0 : static_cast<std::uint16_t>(std::clamp(std::lround(metres * 1000.0), 1L, 65535L));
+    // a surface nearer than half a millimetre still reads as "robot here"
+    mm.values[i] = std::isnan(metres) ? 0 : static_cast<std::uint16_t>(std::clamp(std::lround(metres * 1000.0), 1L, 65535L));
   }
   return mm;
 }
@@ -45,7 +46,7 @@ void WriteDepthFile(const image::DepthImage& depth, const std::string& path) {
   if (Extension(path) == ".npy") {
     image::WriteNpyFloat32(depth.width, depth.height, depth.metres, path);
   } else {
-    image::WriteGray16Png(depth.width, depth.height, DepthMillimetres(depth), path);
+    image::WriteGray16Png(DepthMillimetres(depth), path);
   }
 }
 
@@ -57,7 +58,7 @@ std::string LabelNamesJson(const model::Robot& robot) {
 
 void WriteLabelFiles(const image::LabelImage& labels, const model::Robot& robot, const std::string& path) {
   CheckLabelsPath(path, "labels file");
-  image::WriteGray16Png(labels.width, labels.height, labels.labels, path);
+  image::WriteGray16Png({labels.width, labels.height, labels.labels}, path);
   WriteFileAtomically(std::filesystem::path(path).replace_extension(".json").string(), LabelNamesJson(robot));
 }
 

@@ -8,9 +8,7 @@
 // All written atomically (temporary file + rename).
 #pragma once
 
-#include <cstdint>
 #include <string>
-#include <vector>
 
 #include "image/image.h"
 #include "model/robot.h"
@@ -18,7 +16,7 @@
 namespace urdfsnap::render {
 
 // Millimetres as the 16-bit depth PNG stores them (0 where there is no robot).
-std::vector<std::uint16_t> DepthMillimetres(const image::DepthImage& depth);
+image::Gray16Image DepthMillimetres(const image::DepthImage& depth);
 
 // Writes `depth` to `path` by its extension (.png or .npy). Throws urdfsnap::Error naming the
 // path for another extension or a write failure.

@@ -30,6 +30,29 @@ TEST_F(CliTest, RendersThePngAtTheRequestedSize) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
 }
 
+TEST_F(CliTest, DepthAndLabelsComeFromTheSameViewBesideTheColourImage) {
+  const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("c.png") + " --size 160x120 --fit --depth " +
+                               Path("d.png") + " --labels " + Path("l.png"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const urdfsnap::image::Gray16Image depth = urdfsnap::image::ReadGray16Png(Path("d.png"));
+  const urdfsnap::image::Gray16Image labels = urdfsnap::image::ReadGray16Png(Path("l.png"));
+  ASSERT_EQ(depth.width, 160);
+  ASSERT_EQ(labels.height, 120);
+  // the robot fills the view (--fit): labels of all 6 links of mrm, depth wherever a label is
+  std::set<int> seen;
+  for (size_t i = 0; i < labels.values.size(); ++i) {
+    seen.insert(labels.values[i]);
+    EXPECT_EQ(labels.values[i] == 0, depth.values[i] == 0) << i;
+  }
+  EXPECT_EQ(seen, (std::set<int>{0, 1, 2, 3, 4, 5, 6}));
+  EXPECT_NE(urdfsnap::cli_test::ReadBytes(Path("l.json")).find("\"1\": \"base_link\""), std::string::npos);
+  // a depth file urdfsnap cannot write is refused before anything is rendered or written
+  const Result bad = RunUrdfsnap("render " + kMrm + " -o " + Path("c2.png") + " --depth " + Path("d.exr"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("--depth '" + Path("d.exr") + "': expected a .png"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(Path("c2.png")));
+}
+
 TEST_F(CliTest, RenderHelpGivesTheDefaultOfEveryViewAndDisplayOption) {
   const Result r = RunUrdfsnap("render --help");
   ASSERT_EQ(r.status, 0) << r.output;

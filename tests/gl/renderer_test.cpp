@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/error.h"
+#include "gl/shader_program.h"
 #include "scene/glyph_atlas.h"
 #include "scene/grid.h"
 #include "scene/primitive_meshes.h"
@@ -218,6 +220,19 @@ TEST_F(RendererTest, LabelIsHiddenBehindOpaqueGeometryButWinsAgainstASurfaceThro
     for (int x = 0; x < coplanar.width; ++x) white += Pixel(coplanar, x, y) == Rgb{255, 255, 255};
   }
   EXPECT_GT(white, 10);
+}
+
+TEST_F(RendererTest, MisspeltShaderUniformIsAnError) {
+  renderer_->Render(Scene{}, FrontView(), 8, 8);   // makes the renderer's context current
+  const ShaderProgram lit("lit.vert", "lit.frag");
+  lit.Use();
+  lit.Set("diffuse", Eigen::Vector4f(1, 0, 0, 1));
+  try {
+    lit.Set("difuse", Eigen::Vector4f(1, 0, 0, 1));
+    FAIL() << "no error for a misspelt uniform";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "shader program lit.vert + lit.frag has no active uniform 'difuse'");
+  }
 }
 
 }  // namespace

@@ -1,0 +1,98 @@
+// The render session: the files a model read (for a live view's reload), forgetting models after
+// an edit, caches that stay bounded over many models, and the outputs asked for (gl).
+#include "request/render_session.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/temp_folder.h"
+
+namespace urdfsnap::request {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A triangle in the z = 0 plane facing +Z, `size` metres on a side.
+std::string Stl(double size) {
+  const std::string s = std::to_string(size);
+  return "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex " + s + " 0 0\nvertex 0 " + s +
+         " 0\nendloop\nendfacet\nendsolid t\n";
+}
+
+// A robot whose one link draws meshes/part.stl through a package:// URI, and a xacro that
+// includes a property file.
+void WriteRobot(const test::TempFolder& folder) {
+  folder.Write("package.xml", "<package><name>demo_description</name></package>");
+  folder.Write("meshes/part.stl", Stl(1));
+  folder.Write("urdf/props.xacro",
+               "<robot xmlns:xacro=\"http://www.ros.org/wiki/xacro\"><xacro:property name=\"s\" value=\"1\"/></robot>");
+  folder.Write("urdf/robot.urdf.xacro",
+               "<robot name=\"demo\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
+               "<xacro:include filename=\"props.xacro\"/>\n"
+               "<link name=\"base\"><visual><geometry><mesh filename=\"package://demo_description/meshes/"
+               "part.stl\" scale=\"${s} ${s} ${s}\"/></geometry></visual></link>\n</robot>\n");
+}
+
+RenderRequest TopView(const std::string& model) {
+  RenderRequest request;
+  request.model.path = model;
+  request.size = "64x48";
+  request.pitch = "1.5";
+  request.distance = "4";
+  request.no_grid = true;
+  return request;
+}
+
+OptionLabel Dashes() {
+  return [](std::string_view name) { return "--" + std::string(name); };
+}
+
+int RobotPixels(const image::LabelImage& labels) {
+  return static_cast<int>(std::count_if(labels.labels.begin(), labels.labels.end(), [](auto l) { return l != 0; }));
+}
+
+TEST(RenderSession, SaysWhichFilesAModelReadAndReadsThemAgainAfterForgetting) {
+  const test::TempFolder folder("render_session");
+  WriteRobot(folder);
+  const std::string model = folder.Path("urdf/robot.urdf.xacro");
+  RenderSession session;
+  Warnings warnings;
+  const RenderRequest request = TopView(model);
+  const int before = RobotPixels(session.Render(request, Dashes(), warnings, {false, false, true}).labels);
+  EXPECT_GT(before, 10);
+  const std::vector<std::string> files = session.Files(request.model);
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_EQ(files[0], model);
+  EXPECT_EQ(fs::canonical(files[1]), fs::canonical(folder.Path("urdf/props.xacro")));
+  EXPECT_EQ(fs::canonical(files[2]), fs::canonical(folder.Path("meshes/part.stl")));
+
+  // an edited mesh is drawn anew once the session forgets what it loaded
+  folder.Write("meshes/part.stl", Stl(2));
+  session.ForgetModels();
+  EXPECT_TRUE(session.Files(request.model).empty());
+  const int after = RobotPixels(session.Render(request, Dashes(), warnings, {false, false, true}).labels);
+  EXPECT_GT(after, 3 * before);   // twice the size, four times the area
+}
+
+TEST(RenderSession, KeepsOnlyTheMostRecentlyUsedModels) {
+  const test::TempFolder folder("render_session_lru");
+  RenderSession session;
+  Warnings warnings;
+  std::vector<RenderRequest> requests;
+  for (size_t k = 0; k <= RenderSession::kCachedModels; ++k) {
+    const std::string name = "robot" + std::to_string(k) + ".urdf";
+    folder.Write(name, "<robot name=\"r\"><link name=\"a\"><visual><geometry><box size=\"1 1 1\"/>"
+                       "</geometry></visual></link></robot>");
+    requests.push_back(TopView(folder.Path(name)));
+    session.Render(requests.back(), Dashes(), warnings);
+  }
+  // the first model was the least recently used when the ninth came
+  EXPECT_TRUE(session.Files(requests[0].model).empty());
+  for (size_t k = 1; k < requests.size(); ++k) EXPECT_EQ(session.Files(requests[k].model).size(), 1u) << k;
+}
+
+}  // namespace
+}  // namespace urdfsnap::request
