@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "gl/renderer.h"
+#include "front_view.h"
 #include "scene/grid.h"
 #include "scene/primitive_meshes.h"
 
@@ -15,15 +16,6 @@ namespace {
 using namespace urdfsnap::scene;  // the scene vocabulary the renderer draws
 
 constexpr int kWidth = 64, kHeight = 48;
-
-// Looking down -X at the origin from 2 m away (the viewing axis is -X).
-OrbitView FrontView() {
-  OrbitView view;
-  view.yaw = 0;
-  view.pitch = 0;
-  view.distance = 2;
-  return view;
-}
 
 DrawItem Box(int link, const Eigen::Vector3d& centre, const Eigen::Vector3d& size, float alpha = 1) {
   DrawItem item;

@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "gl/shader_program.h"
 #include "scene/glyph_atlas.h"
+#include "front_view.h"
 #include "scene/grid.h"
 #include "scene/primitive_meshes.h"
 
@@ -20,15 +21,6 @@ using Rgb = std::array<int, 3>;
 Rgb Pixel(const image::Image& image, int x, int y) {
   const size_t i = (static_cast<size_t>(y) * image.width + x) * 3;
   return {image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]};
-}
-
-// Looking down -X at the origin from 2 m away: the image plane is the world's YZ plane.
-OrbitView FrontView() {
-  OrbitView view;
-  view.yaw = 0;
-  view.pitch = 0;
-  view.distance = 2;
-  return view;
 }
 
 // One triangle in the x = 0 plane, facing +X (the camera), covering the upper part of the view.
