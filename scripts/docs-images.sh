@@ -10,4 +10,17 @@ mrm=$root/models/mrm_description/urdf/mrm.xacro
 "$snap" render "$mrm" -o "$root/docs/images/mrm_pose.png" \
   -j base_link__link_01=0.5 -j link_01__link_02=-0.8 -j link_02__link_03=1.2 -j link_03__link_04=0.3 \
   --yaw 0.6 --pitch 0.35 --fit
+# the depth and link-label images beside the colour image, made viewable (they hold millimetres and
+# link numbers) by a docs-only script that needs Debian's python3-numpy and python3-pil
+for package in python3-numpy python3-pil; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+    apt-get install -y -qq --no-install-recommends "$package" >/dev/null
+done
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$snap" render "$mrm" -o "$work/colour.png" --size 320x240 --depth "$work/depth.png" --labels "$work/labels.png" \
+  -j base_link__link_01=0.5 -j link_01__link_02=-0.8 -j link_02__link_03=1.2 -j link_03__link_04=0.3 \
+  --yaw 0.6 --pitch 0.35 --fit 2>/dev/null
+"$root/scripts/depth_labels_preview.py" "$work/colour.png" "$work/depth.png" "$work/labels.png" \
+  "$root/docs/images/mrm_depth_labels.png"
 ls "$root/docs/images"
