@@ -38,5 +38,6 @@ void AddInfoCommand(CLI::App& app);
 void AddXacroCommand(CLI::App& app);
 void AddDiffCommand(CLI::App& app);
 void AddSnapshotCommand(CLI::App& app);
+void AddServeCommand(CLI::App& app);
 
 }  // namespace urdfsnap::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   urdfsnap::cli::AddXacroCommand(app);
   urdfsnap::cli::AddDiffCommand(app);
   urdfsnap::cli::AddSnapshotCommand(app);
+  urdfsnap::cli::AddServeCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -5,6 +5,7 @@
 
 #include "cli/command.h"
 #include "cli/model_source.h"
+#include "cli/render_options.h"
 #include "image/png_writer.h"
 #include "render/frame_files.h"
 #include "gl/gl_context.h"
@@ -14,12 +15,11 @@ namespace urdfsnap::cli {
 
 namespace {
 
-struct RenderOptions {
+struct RenderCommandOptions {
   ModelSource model;
   std::string output;
-  std::string depth, labels;              // optional depth and link-label image files
-  std::vector<std::string> joint_words;  // NAME=VALUE
-  request::RenderRequest request;        // everything else, filled by CLI11 directly
+  std::string depth, labels;  // optional depth and link-label image files
+  RenderOptions render;
 };
 
 std::string DefaultOutput(const std::string& model_path) {
@@ -28,10 +28,10 @@ std::string DefaultOutput(const std::string& model_path) {
   return (std::filesystem::path("output") / stem).string() + ".png";
 }
 
-void Run(RenderOptions& o) {
+void Run(RenderCommandOptions& o) {
   const auto gl_loading = gl::StartLoadingGl();  // overlaps loading Mesa with reading the model
-  o.request.model = o.model.ToRequest();
-  for (const auto& word : o.joint_words) model::ParseJointAssignment(word, o.request.joints);
+  o.render.request.model = o.model.ToRequest();
+  o.render.ParseJointWords();
   if (!o.depth.empty()) render::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) render::CheckLabelsPath(o.labels, "--labels");
   Warnings warnings;
@@ -40,9 +40,9 @@ void Run(RenderOptions& o) {
   std::shared_ptr<const model::Robot> robot;
   try {
     frame = session.Render(
-        o.request, [](std::string_view name) { return "--" + std::string(name); }, warnings,
+        o.render.request, [](std::string_view name) { return "--" + std::string(name); }, warnings,
         {true, !o.depth.empty(), !o.labels.empty()});
-    robot = session.LoadRobot(o.request.model, warnings);
+    robot = session.LoadRobot(o.render.request.model, warnings);
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -58,7 +58,7 @@ void Run(RenderOptions& o) {
 }  // namespace
 
 void AddRenderCommand(CLI::App& app) {
-  auto o = std::make_shared<RenderOptions>();
+  auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a robot pose to a PNG image, as RViz shows it");
   o->model.AddOptions(*cmd);
   cmd->add_option("-o,--output", o->output, "PNG file to write (default output/<model>.png)");
@@ -70,15 +70,7 @@ void AddRenderCommand(CLI::App& app) {
                   "also write the link-label image FILE.png (16-bit: 1 + the index of the link "
                   "nearest at each pixel, in `info`'s link order, 0 off the robot) and FILE.json "
                   "(value -> link name) (default: none)");
-  cmd->add_option("-j,--joint", o->joint_words, "joint value NAME=VALUE in rad or m (repeatable)");
-  cmd->add_option("--joints", o->request.joint_file,
-                  "YAML/JSON joint file: {name: value} or {name: [...], position: [...]}");
-  for (const request::TextOption& option : request::TextOptions()) {
-    cmd->add_option("--" + std::string(option.name), o->request.*option.field, option.help);
-  }
-  for (const request::FlagOption& option : request::FlagOptions()) {
-    cmd->add_flag("--" + std::string(option.name), o->request.*option.field, option.help);
-  }
+  o->render.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
 }
 

@@ -1,0 +1,422 @@
+// urdfsnap serve's page: joint sliders with joint_state_publisher_gui's rules, RViz's orbit
+// camera on the mouse, display toggles, and frames fetched from /render.png in `urdfsnap render`'s
+// option words, at most one request in flight (the newest state wins; states the renderer had no
+// time for are never asked for). The model's reloads are noticed by polling /api/status.
+'use strict';
+
+// RViz's orbit camera (rviz/default_plugin/view_controllers/orbit_view_controller.cpp)
+const PITCH_LIMIT = Math.PI / 2 - 0.001;  // the Pitch property's range
+const ROTATE_PER_PIXEL = 0.005;           // yaw and pitch per pixel dragged
+const ZOOM_PER_PIXEL = 0.01;              // right-drag: distance change per pixel, times distance
+const ZOOM_PER_WHEEL_UNIT = 0.001;        // per Qt wheel unit (120 a notch), times distance
+const WHEEL_UNITS_PER_PIXEL = 1.2;        // a browser's wheel notch is 100 pixels, Qt's 120 units
+const MIN_DISTANCE = 0.01, MAX_DISTANCE = 1e6;  // what `render --distance` accepts
+const SIZES = ['640x480', '800x600', '1024x768', '1280x720', '1280x960', '1920x1080'];
+const STATUS_POLL_MS = 1000;
+
+const $ = (id) => document.getElementById(id);
+
+const page = {
+  initial: null,      // /api/view: the options and pose urdfsnap serve started with
+  robot: null,        // /api/robot
+  model: null,        // the model's generation the page shows
+  view: null,         // {yaw, pitch, distance, focal: [x, y, z]}
+  options: null,      // {size, alpha, background, 'no-grid', tf, collision, 'no-visual'}
+  joints: new Map(),  // slider joint name -> value
+  modelError: '',
+  frameError: '',
+};
+
+// Numbers as the page writes them into URLs, joint files and suite cases: at most six decimals,
+// never an exponent, so the three say exactly the same thing.
+function num(x) {
+  const rounded = Number(x.toFixed(6));
+  return Object.is(rounded, -0) ? '0' : String(rounded);
+}
+
+function clamp(x, low, high) { return Math.min(high, Math.max(low, x)); }
+
+// ---- the view and display options --------------------------------------------------------
+
+function viewFromOptions(options) {
+  return {
+    yaw: Number(options.yaw),
+    pitch: Number(options.pitch),
+    distance: Number(options.distance),
+    focal: options.focal.split(',').map(Number),
+  };
+}
+
+function optionsFromInitial(options) {
+  const o = {};
+  for (const key of ['size', 'alpha', 'background', 'no-grid', 'tf', 'collision', 'no-visual']) o[key] = options[key];
+  return o;
+}
+
+// The render options the page sets, as key -> text (flags as "true"/"false").
+function pageOptions() {
+  const v = page.view, o = page.options;
+  return {
+    size: o.size,
+    yaw: num(v.yaw),
+    pitch: num(v.pitch),
+    distance: num(v.distance),
+    focal: v.focal.map(num).join(','),
+    alpha: num(Number(o.alpha)),
+    background: o.background,
+    'no-grid': String(o['no-grid']),
+    tf: String(o.tf),
+    collision: String(o.collision),
+    'no-visual': String(o['no-visual']),
+  };
+}
+
+function frameQuery() {
+  const query = new URLSearchParams(pageOptions());
+  for (const [name, value] of page.joints) query.set('j.' + name, num(value));
+  return query.toString();
+}
+
+function showControls() {
+  const o = page.options;
+  $('grid').checked = !o['no-grid'];
+  $('tf').checked = o.tf;
+  $('visual').checked = !o['no-visual'];
+  $('collision').checked = o.collision;
+  $('alpha').value = o.alpha;
+  $('background').value = '#' + o.background.split(',').map((c) => Number(c).toString(16).padStart(2, '0')).join('');
+  const select = $('size');
+  if (![...select.options].some((option) => option.value === o.size)) select.add(new Option(o.size, o.size));
+  select.value = o.size;
+}
+
+function wireControls() {
+  for (const size of SIZES) $('size').add(new Option(size, size));
+  const toggles = {grid: ['no-grid', true], tf: ['tf', false], visual: ['no-visual', true], collision: ['collision', false]};
+  for (const [id, [key, inverted]] of Object.entries(toggles)) {
+    $(id).addEventListener('change', (e) => { page.options[key] = e.target.checked !== inverted; requestFrame(); });
+  }
+  $('alpha').addEventListener('input', (e) => { page.options.alpha = e.target.value; requestFrame(); });
+  $('background').addEventListener('input', (e) => {
+    const hex = e.target.value;
+    page.options.background = [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16)).join(',');
+    requestFrame();
+  });
+  $('size').addEventListener('change', (e) => { page.options.size = e.target.value; requestFrame(); });
+  $('reset-view').addEventListener('click', () => {
+    page.view = viewFromOptions(page.initial.options);
+    page.options = optionsFromInitial(page.initial.options);
+    showControls();
+    requestFrame();
+  });
+  $('save-png').addEventListener('click', savePng);
+  $('copy-pose').addEventListener('click', () => copyText(poseYaml(), 'A joint file: urdfsnap render MODEL --joints FILE'));
+  $('copy-case').addEventListener('click', () => copyText(suiteCaseYaml(), 'A case for the cases: list of a snapshot suite (urdfsnap snapshot check)'));
+  $('centre').addEventListener('click', () => setJoints((joint) => joint.default));
+  $('randomize').addEventListener('click', () => setJoints((joint) => joint.lower + Math.random() * (joint.upper - joint.lower)));
+}
+
+// ---- the orbit camera, as RViz's Orbit view controller moves it ----------------------------
+
+function cameraAxes(view) {
+  const cp = Math.cos(view.pitch);
+  const back = [Math.cos(view.yaw) * cp, Math.sin(view.yaw) * cp, Math.sin(view.pitch)];
+  // right = forward x Z, up = right x forward (no roll: Z is the fixed yaw axis)
+  const right = [-back[1], back[0], 0];
+  const norm = Math.hypot(right[0], right[1]) || 1;
+  right[0] /= norm; right[1] /= norm;
+  const up = [-(right[1] * back[2]), right[0] * back[2], right[1] * back[0] - right[0] * back[1]];
+  return {right, up, back};
+}
+
+// OrbitViewController::move: the focal point moves by (x, y, z) in the camera's frame.
+function moveFocal(x, y, z) {
+  const {right, up, back} = cameraAxes(page.view);
+  page.view.focal = page.view.focal.map((f, i) => f + right[i] * x + up[i] * y + back[i] * z);
+}
+
+function zoom(amount) {
+  page.view.distance = clamp(page.view.distance - amount, MIN_DISTANCE, MAX_DISTANCE);
+}
+
+function wireOrbit() {
+  const viewport = $('viewport');
+  let drag = null;
+  viewport.addEventListener('contextmenu', (e) => e.preventDefault());
+  viewport.addEventListener('pointerdown', (e) => {
+    drag = {x: e.clientX, y: e.clientY, button: e.button};
+    viewport.setPointerCapture(e.pointerId);
+    viewport.classList.add('dragging');
+    e.preventDefault();
+  });
+  const end = () => { drag = null; viewport.classList.remove('dragging'); };
+  viewport.addEventListener('pointerup', end);
+  viewport.addEventListener('pointercancel', end);
+  viewport.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
+    drag.x = e.clientX; drag.y = e.clientY;
+    if (dx === 0 && dy === 0) return;
+    const v = page.view;
+    if (drag.button === 0 && !e.shiftKey) {
+      v.yaw = ((v.yaw - dx * ROTATE_PER_PIXEL) % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI);
+      v.pitch = clamp(v.pitch + dy * ROTATE_PER_PIXEL, -PITCH_LIMIT, PITCH_LIMIT);
+    } else if (drag.button === 1 || (drag.button === 0 && e.shiftKey)) {
+      // the point under the cursor at the focal distance follows the cursor
+      const box = $('frame').getBoundingClientRect();
+      const tanY = Math.tan(page.initial.fov / 2);
+      const tanX = tanY * box.width / box.height;
+      moveFocal(-dx / box.width * v.distance * tanX * 2, dy / box.height * v.distance * tanY * 2, 0);
+    } else if (drag.button === 2 && e.shiftKey) {
+      moveFocal(0, 0, dy * ZOOM_PER_PIXEL * v.distance);
+    } else if (drag.button === 2) {
+      zoom(-dy * ZOOM_PER_PIXEL * v.distance);
+    }
+    requestFrame();
+  });
+  viewport.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    const pixels = e.deltaY || e.deltaX;  // shift turns the wheel sideways in some browsers
+    const units = -pixels * (e.deltaMode === 0 ? WHEEL_UNITS_PER_PIXEL : e.deltaMode === 1 ? 40 : 120);
+    if (e.shiftKey) moveFocal(0, 0, -units * ZOOM_PER_WHEEL_UNIT * page.view.distance);
+    else zoom(units * ZOOM_PER_WHEEL_UNIT * page.view.distance);
+    requestFrame();
+  }, {passive: false});
+}
+
+// ---- joints ------------------------------------------------------------------------------
+
+function sliderJoints() { return page.robot ? page.robot.joints.filter((joint) => !joint.mimic) : []; }
+
+function buildSliders() {
+  const box = $('sliders');
+  box.replaceChildren();
+  const previous = page.joints;
+  page.joints = new Map();
+  const joints = sliderJoints();
+  if (joints.length === 0) {
+    const note = document.createElement('p');
+    note.className = 'empty';
+    note.textContent = 'This robot has no movable joints.';
+    box.append(note);
+  }
+  for (const joint of joints) {
+    const start = previous.get(joint.name) ?? page.initial.joints[joint.name] ?? joint.default;
+    page.joints.set(joint.name, clamp(start, joint.lower, joint.upper));
+    const row = document.createElement('div');
+    row.className = 'joint';
+    const name = document.createElement('span');
+    name.className = 'name';
+    name.textContent = joint.name;
+    name.title = `${joint.name} (${joint.type}, ${num(joint.lower)} to ${num(joint.upper)} ${joint.type === 'prismatic' ? 'm' : 'rad'})`;
+    const slider = document.createElement('input');
+    const field = document.createElement('input');
+    for (const input of [slider, field]) {
+      input.min = joint.lower;
+      input.max = joint.upper;
+      input.step = 'any';
+      input.dataset.joint = joint.name;
+    }
+    slider.type = 'range';
+    field.type = 'number';
+    slider.addEventListener('input', () => setJoint(joint, Number(slider.value), field));
+    field.addEventListener('change', () => {
+      if (field.value !== '' && Number.isFinite(Number(field.value))) setJoint(joint, Number(field.value), slider);
+      showJoint(joint.name, slider, field);
+    });
+    row.append(name, slider, field);
+    box.append(row);
+    showJoint(joint.name, slider, field);
+  }
+}
+
+function showJoint(name, slider, field) {
+  const value = page.joints.get(name);
+  slider.value = value;
+  field.value = num(value);
+}
+
+function setJoint(joint, value, other) {
+  const clamped = clamp(value, joint.lower, joint.upper);
+  page.joints.set(joint.name, clamped);
+  if (other.type === 'number') other.value = num(clamped); else other.value = clamped;
+  requestFrame();
+}
+
+function setJoints(valueOf) {
+  for (const joint of sliderJoints()) page.joints.set(joint.name, clamp(valueOf(joint), joint.lower, joint.upper));
+  for (const row of $('sliders').querySelectorAll('.joint')) {
+    const [slider, field] = row.querySelectorAll('input');
+    showJoint(slider.dataset.joint, slider, field);
+  }
+  requestFrame();
+}
+
+// ---- frames: one request in flight, the newest state wins ---------------------------------
+
+const frames = {wanted: null, asked: null, busy: false, url: null, blob: null};
+
+function requestFrame() {
+  frames.wanted = frameQuery();
+  pump();
+}
+
+async function pump() {
+  if (frames.busy || frames.wanted === null || frames.wanted === frames.asked) return;
+  const query = frames.wanted;
+  frames.asked = query;
+  frames.busy = true;
+  let retryAfter = 0;
+  try {
+    const response = await fetch('render.png?' + query, {cache: 'no-store'});
+    if (response.ok) {
+      const blob = await response.blob();
+      showFrame(blob);
+      page.frameError = '';
+      const generation = Number(response.headers.get('X-Urdfsnap-Model'));
+      if (generation !== page.model) pollStatus();
+    } else if (response.status === 503) {
+      frames.asked = null;  // the server is busy: ask again shortly
+      retryAfter = 100;
+    } else {
+      page.frameError = await response.text();
+    }
+  } catch (error) {
+    page.frameError = 'urdfsnap serve does not answer (' + error.message + '); retrying';
+    frames.asked = null;
+    retryAfter = 1000;
+  }
+  showError();
+  frames.busy = false;
+  if (retryAfter) setTimeout(pump, retryAfter); else pump();
+}
+
+function showFrame(blob) {
+  const old = frames.url;
+  frames.blob = blob;
+  frames.url = URL.createObjectURL(blob);
+  const img = $('frame');
+  img.src = frames.url;
+  if (old) img.decode().finally(() => URL.revokeObjectURL(old));
+  const o = page.options, v = page.view;
+  $('status').textContent = `yaw ${num(v.yaw)} · pitch ${num(v.pitch)} · distance ${num(v.distance)} · focal ${v.focal.map(num).join(',')} · ${o.size}`;
+}
+
+function showError() {
+  const text = page.modelError || page.frameError;
+  $('error').hidden = !text;
+  $('error').textContent = text;
+}
+
+// ---- the model: loaded once, again after every reload the server reports -------------------
+
+async function loadRobot() {
+  const response = await fetch('api/robot', {cache: 'no-store'});
+  const body = await response.json();
+  if (!response.ok) {
+    page.modelError = body.error;
+    showError();
+    return false;
+  }
+  page.robot = body;
+  page.modelError = '';
+  $('robot-name').textContent = body.name;
+  document.title = body.name + ' · urdfsnap serve';
+  buildSliders();
+  showError();
+  return true;
+}
+
+async function pollStatus() {
+  try {
+    const response = await fetch('api/status', {cache: 'no-store'});
+    const status = await response.json();
+    if (status.model !== page.model) {
+      page.model = status.model;
+      if (status.error) {
+        page.modelError = status.error;
+        showError();
+      } else if (await loadRobot()) {
+        frames.asked = null;  // the same view of a new model is a new frame
+        requestFrame();
+      }
+    }
+  } catch (error) {
+    // the frame loop reports a server that does not answer
+  }
+}
+
+async function pollForever() {
+  if (!document.hidden) await pollStatus();
+  setTimeout(pollForever, STATUS_POLL_MS);
+}
+
+// ---- save and copy -----------------------------------------------------------------------
+
+function savePng() {
+  if (!frames.url) return;
+  const link = document.createElement('a');
+  link.href = frames.url;
+  link.download = (page.robot ? page.robot.name : 'robot') + '.png';
+  link.click();
+}
+
+function yamlString(text) { return JSON.stringify(text); }
+
+function poseYaml() {
+  const lines = [`# ${page.robot ? page.robot.name : 'robot'}: joint values in rad or m, from urdfsnap serve`];
+  for (const [name, value] of page.joints) lines.push(`${yamlString(name)}: ${num(value)}`);
+  return lines.join('\n') + '\n';
+}
+
+function yamlMap(object) {
+  return '{' + Object.entries(object).map(([key, value]) => `${yamlString(key)}: ${yamlString(String(value))}`).join(', ') + '}';
+}
+
+function suiteCaseYaml() {
+  const base = page.initial.case;
+  const options = {...base.options, ...pageOptions()};
+  const lines = ['  # a case of a snapshot suite (urdfsnap snapshot check), made by urdfsnap serve',
+    `  - name: ${(page.robot ? page.robot.name : 'robot').replace(/[^A-Za-z0-9_.-]/g, '_')}_view`,
+    `    model: ${yamlString(base.model)}`];
+  if (Object.keys(base.args).length) lines.push(`    args: ${yamlMap(base.args)}`);
+  if (Object.keys(base.packages).length) lines.push(`    packages: ${yamlMap(base.packages)}`);
+  if (base['xacro-ns']) lines.push('    xacro-ns: true');
+  for (const [key, value] of Object.entries(options)) {
+    lines.push(`    ${key}: ${value === true ? 'true' : yamlString(String(value))}`);
+  }
+  const joints = [...page.joints].map(([name, value]) => `${yamlString(name)}: ${num(value)}`);
+  if (joints.length) lines.push(`    joints: {${joints.join(', ')}}`);
+  return lines.join('\n') + '\n';
+}
+
+async function copyText(text, note) {
+  $('copy-text').value = text;
+  let copied = false;
+  try {
+    await navigator.clipboard.writeText(text);
+    copied = true;
+  } catch (error) {
+    // no clipboard outside a secure context (http:// to another host): select it for the user
+  }
+  $('copy-note').textContent = note + (copied ? ' — copied to the clipboard.' : ' — select it and copy.');
+  $('copy-dialog').showModal();
+  $('copy-text').select();
+}
+
+// ---- start -------------------------------------------------------------------------------
+
+async function start() {
+  const response = await fetch('api/view', {cache: 'no-store'});
+  page.initial = await response.json();
+  page.view = viewFromOptions(page.initial.options);
+  page.options = optionsFromInitial(page.initial.options);
+  wireControls();
+  wireOrbit();
+  showControls();
+  await pollStatus();
+  requestFrame();
+  setTimeout(pollForever, STATUS_POLL_MS);
+}
+
+start();

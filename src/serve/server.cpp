@@ -1,0 +1,245 @@
+// Routes, limits and the watching thread of the live view's server.
+#include "serve/server.h"
+
+#include <arpa/inet.h>
+
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <stop_token>
+#include <thread>
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "serve/embedded_page.h"
+#include "serve/frame_source.h"
+#include "serve/initial_view.h"
+#include "serve/query_request.h"
+#include "serve/robot_json.h"
+
+namespace urdfsnap::serve {
+
+namespace {
+
+constexpr const char* kErrorPrefix = "urdfsnap: error: ";
+
+// The host name of a Host header ("localhost:8765" → "localhost", "[::1]:80" → "::1").
+std::string HostName(const std::string& host) {
+  if (host.starts_with("[")) return host.substr(1, host.find(']') - 1);
+  return host.substr(0, host.find(':'));
+}
+
+void SetText(httplib::Response& res, int status, const std::string& text) {
+  res.status = status;
+  res.set_content(text + "\n", "text/plain; charset=utf-8");
+}
+
+void SetJson(httplib::Response& res, int status, const nlohmann::json& json) {
+  res.status = status;
+  res.set_content(json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
+                  "application/json");
+}
+
+// The words for the statuses the library answers by itself.
+std::string Reason(int status) {
+  switch (status) {
+    case 400: return "bad request";
+    case 404: return "not found (this server has its page, /render.png and /api/{robot,view,status})";
+    case 405: return "method not allowed";
+    case 413: return "request body too large";
+    case 414: return "URI too long";
+    default: return "error";
+  }
+}
+
+}  // namespace
+
+bool IsLoopback(const std::string& address) {
+  if (address == "localhost" || address == "::1") return true;
+  in_addr ip4{};
+  return inet_pton(AF_INET, address.c_str(), &ip4) == 1 && (ntohl(ip4.s_addr) >> 24) == 127;
+}
+
+struct Server::Impl {
+  explicit Impl(ServerOptions o) : options(std::move(o)), live(options.base.model) {}
+
+  ServerOptions options;
+  LiveModel live;
+  std::string initial_view;  // /api/view
+  httplib::Server http;
+
+  // the renderer: one frame at a time, a bounded number waiting
+  std::mutex render_mutex;
+  FrameSource frames;
+  std::atomic<int> waiting{0};
+
+  // (re)loads the model and checks that its initial view renders; holds the renderer meanwhile
+  // (the initial view's warnings go to `warnings`)
+  std::shared_ptr<const ModelState> Reload(Warnings& warnings) {
+    const std::lock_guard lock(render_mutex);
+    frames.ForgetModels();
+    return live.Load([&] { frames.RenderPng(options.base, warnings); });
+  }
+
+  void Watch(std::stop_token stop) {
+    std::mutex mutex;
+    std::condition_variable_any wake;
+    for (;;) {
+      std::unique_lock lock(mutex);
+      wake.wait_for(lock, stop, options.watch_interval, [] { return false; });
+      if (stop.stop_requested()) return;
+      if (!live.NeedsLoad()) continue;
+      Warnings warnings;
+      const std::shared_ptr<const ModelState> state = Reload(warnings);
+      if (options.on_reload) options.on_reload(*state);
+    }
+  }
+
+  void Page(const std::string& name, const char* type, httplib::Response& res) {
+    res.set_content(std::string(EmbeddedPageFile(name)), type);
+  }
+
+  void RenderFrame(const httplib::Request& req, httplib::Response& res) {
+    const std::shared_ptr<const ModelState> state = live.State();
+    if (!state->robot) return SetText(res, 422, kErrorPrefix + state->error);
+    request::RenderRequest r;
+    try {
+      r = RequestFromQuery(req.params, options.base);
+      const request::ImageSize size = request::ParseImageSize(r.size, "--size");
+      if (size.width > options.max_size.width || size.height > options.max_size.height) {
+        throw Error("--size '" + r.size + "': urdfsnap serve renders at most " +
+                    std::to_string(options.max_size.width) + "x" +
+                    std::to_string(options.max_size.height) + " pixels (--max-size)");
+      }
+    } catch (const Error& e) {
+      return SetText(res, 400, kErrorPrefix + std::string(e.what()));
+    }
+    if (++waiting > options.max_waiting_renders + 1) {
+      --waiting;
+      res.set_header("Retry-After", "1");
+      return SetText(res, 503, "urdfsnap serve: busy rendering; try again");
+    }
+    const std::lock_guard lock(render_mutex);
+    --waiting;
+    const int generation = live.State()->generation;
+    const auto start = std::chrono::steady_clock::now();
+    std::string png;
+    try {
+      Warnings warnings;
+      png = frames.RenderPng(r, warnings);
+    } catch (const Error& e) {
+      return SetText(res, 400, kErrorPrefix + std::string(e.what()));
+    }
+    const auto took = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start);
+    res.set_header("X-Urdfsnap-Model", std::to_string(generation));
+    res.set_header("X-Urdfsnap-Render-Ms", std::to_string(took.count()));
+    res.set_content(std::move(png), "image/png");
+  }
+
+  void Robot(httplib::Response& res) {
+    const std::shared_ptr<const ModelState> state = live.State();
+    if (!state->robot) {
+      return SetJson(res, 422, {{"error", kErrorPrefix + state->error}, {"model", state->generation}});
+    }
+    res.set_content(RobotJson(*state->robot, state->warnings), "application/json");
+  }
+
+  void Status(httplib::Response& res) {
+    const std::shared_ptr<const ModelState> state = live.State();
+    nlohmann::json error = nullptr;
+    if (!state->robot) error = kErrorPrefix + state->error;
+    SetJson(res, 200, {{"model", state->generation}, {"error", error}});
+  }
+
+  void Route() {
+    http.new_task_queue = [n = options.threads] { return new httplib::ThreadPool(n); };
+    http.set_payload_max_length(4096);
+    http.set_keep_alive_max_count(1000);
+    http.set_keep_alive_timeout(5);
+    http.set_read_timeout(5);
+    http.set_write_timeout(5);
+    http.set_tcp_nodelay(true);
+    const bool loopback_only = IsLoopback(options.bind);
+    http.set_pre_routing_handler([loopback_only](const httplib::Request& req, httplib::Response& res) {
+      res.set_header("Cache-Control", "no-store");
+      res.set_header("X-Content-Type-Options", "nosniff");
+      if (loopback_only && !IsLoopback(HostName(req.get_header_value("Host")))) {
+        SetText(res, 403, "urdfsnap serve answers to localhost only (it was started without --bind)");
+        return httplib::Server::HandlerResponse::Handled;
+      }
+      return httplib::Server::HandlerResponse::Unhandled;
+    });
+    http.Get("/", [this](const httplib::Request&, httplib::Response& res) {
+      // the page runs only its own script and style, and talks only to this server
+      res.set_header("Content-Security-Policy",
+                     "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' blob:; "
+                     "connect-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'");
+      Page("index.html", "text/html; charset=utf-8", res);
+    });
+    http.Get("/page.js", [this](const httplib::Request&, httplib::Response& res) {
+      Page("page.js", "text/javascript; charset=utf-8", res);
+    });
+    http.Get("/page.css", [this](const httplib::Request&, httplib::Response& res) {
+      Page("page.css", "text/css; charset=utf-8", res);
+    });
+    http.Get("/favicon.svg", [this](const httplib::Request&, httplib::Response& res) {
+      Page("favicon.svg", "image/svg+xml", res);
+    });
+    http.Get("/render.png", [this](const httplib::Request& req, httplib::Response& res) { RenderFrame(req, res); });
+    http.Get("/api/robot", [this](const httplib::Request&, httplib::Response& res) { Robot(res); });
+    http.Get("/api/status", [this](const httplib::Request&, httplib::Response& res) { Status(res); });
+    http.Get("/api/view", [this](const httplib::Request&, httplib::Response& res) {
+      res.set_content(initial_view, "application/json");
+    });
+    http.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+      if (res.body.empty()) {
+        SetText(res, res.status, "urdfsnap serve: " + std::to_string(res.status) + " " + Reason(res.status));
+      }
+    });
+    http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr error) {
+      try {
+        std::rethrow_exception(error);
+      } catch (const std::exception& e) {
+        SetText(res, 500, kErrorPrefix + std::string(e.what()));
+      } catch (...) {
+        SetText(res, 500, std::string(kErrorPrefix) + "unknown failure");
+      }
+    });
+  }
+};
+
+Server::Server(ServerOptions options, Warnings& warnings)
+    : impl_(std::make_unique<Impl>(std::move(options))) {
+  Impl& s = *impl_;
+  const std::shared_ptr<const ModelState> state = s.Reload(warnings);
+  if (!state->robot) throw Error(state->error);
+  s.initial_view = InitialViewJson(s.options.base, warnings);
+  s.Route();
+}
+
+Server::~Server() = default;
+
+int Server::Bind() {
+  Impl& s = *impl_;
+  const std::string where = s.options.bind + ":" + std::to_string(s.options.port);
+  const int port = s.options.port == 0 ? s.http.bind_to_any_port(s.options.bind)
+                   : s.http.bind_to_port(s.options.bind, s.options.port) ? s.options.port
+                                                                         : -1;
+  if (port < 0) {
+    throw Error("cannot listen on " + where + " (the port in use, or not an address of this "
+                "machine; --port 0 picks a free port)");
+  }
+  return port;
+}
+
+void Server::Run() {
+  Impl& s = *impl_;
+  std::jthread watcher([&s](std::stop_token stop) { s.Watch(stop); });
+  s.http.listen_after_bind();
+}
+
+void Server::Stop() { impl_->http.stop(); }
+
+}  // namespace urdfsnap::serve

@@ -1,0 +1,62 @@
+// The live view's HTTP server (cpp-httplib): the embedded page, GET /render.png in render's
+// option words, /api/robot, /api/view and /api/status, with the model reloaded as its files change.
+//
+// It answers nothing else: no URL names a file, every response is the page, a rendered image or
+// JSON/text made here. Limits: request bodies of 4 KiB (a GET has none), request lines and
+// header lines of 8 KiB (the library's), images up to ServerOptions::max_size, one render at a
+// time with at most max_waiting_renders more waiting (the rest get 503 at once), a fixed pool of
+// connection threads. Bound to a loopback address it answers only requests that name a loopback
+// host (so a web page elsewhere cannot reach it by DNS rebinding).
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "common/warnings.h"
+#include "request/render_request.h"
+#include "request/value_parsing.h"
+#include "serve/live_model.h"
+
+namespace urdfsnap::serve {
+
+struct ServerOptions {
+  std::string bind = "127.0.0.1";  // address to listen on
+  int port = 8765;                 // 0: any free port
+  // the model and the options `urdfsnap serve` was given: every frame starts from them
+  request::RenderRequest base;
+  request::ImageSize max_size{4096, 4096};  // largest frame, per side
+  int max_waiting_renders = 8;   // requests that wait for the renderer; more get 503
+  int threads = 16;              // connections served at once (keep-alive ones included)
+  std::chrono::milliseconds watch_interval{250};  // how often the model's files are looked at
+  // called after each reload of the model (not the first load), from the watching thread
+  std::function<void(const ModelState&)> on_reload;
+};
+
+// True when `address` is a loopback address or name (127.x.x.x, ::1, localhost).
+bool IsLoopback(const std::string& address);
+
+class Server {
+ public:
+  // Loads the model and renders the initial view once (which checks the options and loads the
+  // meshes); its warnings go to `warnings`. Throws urdfsnap::Error as `urdfsnap render` would for
+  // the same options.
+  Server(ServerOptions options, Warnings& warnings);
+  ~Server();
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  // Opens the listening socket; returns the port. Throws urdfsnap::Error when it cannot.
+  int Bind();
+  // Serves until Stop(); watches the model's files meanwhile.
+  void Run();
+  // Ends Run(): no new connections; requests being answered finish. Thread-safe.
+  void Stop();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace urdfsnap::serve
