@@ -14,6 +14,7 @@
 #include "cli/render_options.h"
 #include "common/error.h"
 #include "gl/gl_context.h"
+#include "request/value_parsing.h"
 #include "serve/server.h"
 
 namespace urdfsnap::cli {

@@ -1,7 +1,6 @@
-// The live view's one seam to the render core: a RenderRequest rendered to PNG bytes, the files a
-// model was read from (to watch them), and forgetting loaded models so that the next frame reads
-// the files again. Everything the server knows about rendering goes through this file, so a
-// change of the render core changes only frame_source.cpp.
+// The live view's one seam to the render core (request::RenderSession): a RenderRequest rendered
+// to PNG bytes, the model loaded afresh with the list of files it read (to watch them), and the
+// view a request renders with. Everything the server knows about rendering goes through here.
 #pragma once
 
 #include <memory>
@@ -10,6 +9,7 @@
 
 #include "common/warnings.h"
 #include "model/robot.h"
+#include "render/render_settings.h"
 #include "request/render_request.h"
 
 namespace urdfsnap::request {
@@ -17,6 +17,13 @@ class RenderSession;
 }
 
 namespace urdfsnap::serve {
+
+// A robot loaded for the live view, with every file its loading and first render read.
+struct WatchedModel {
+  std::shared_ptr<const model::Robot> robot;
+  std::vector<std::string> warnings;  // the model's and its first render's
+  std::vector<std::string> files;     // model file, xacro includes, YAML, meshes, textures
+};
 
 // Renders frames one at a time; not thread-safe (the server lets one thread render at a time).
 class FrameSource {
@@ -30,22 +37,17 @@ class FrameSource {
   // option as render's command line does ("--yaw 'x': ..."). Throws urdfsnap::Error.
   std::string RenderPng(const request::RenderRequest& request, Warnings& warnings);
 
-  // Drops every loaded model (and what was derived from it), so the next frame reads the files.
-  void ForgetModels();
+  // Forgets every loaded model, loads `request`'s model from its files and renders `request`
+  // once (so every mesh and texture it shows is read and checked). Throws urdfsnap::Error as
+  // `urdfsnap render` would for the same request.
+  WatchedModel Reload(const request::RenderRequest& request);
+
+  // The settings `request` renders with, its view as the render frames it (--fit applied).
+  // Throws urdfsnap::Error.
+  render::RenderSettings ResolvedSettings(const request::RenderRequest& request, Warnings& warnings);
 
  private:
   std::unique_ptr<request::RenderSession> session_;
 };
-
-// A robot loaded for the live view, with every file its loading read.
-struct WatchedModel {
-  model::Robot robot;
-  Warnings warnings;
-  // The model file, xacro includes and YAML files, mesh files and textures (those that exist).
-  std::vector<std::string> files;
-};
-
-// Loads the robot `request` names, listing the files it read. Throws urdfsnap::Error.
-WatchedModel LoadWatchedModel(const request::ModelRequest& request);
 
 }  // namespace urdfsnap::serve

@@ -1,15 +1,12 @@
-// The page's starting values: RViz's defaults, then the .rviz file, then the options given.
+// The page's starting values, from the settings the server's request renders with.
 #include "serve/initial_view.h"
 
-#include <cmath>
 #include <filesystem>
-#include <numbers>
 
 #include <nlohmann/json.hpp>
 
 #include "common/number_text.h"
-#include "render/rviz_config.h"
-#include "request/value_parsing.h"
+#include "model/joint_values.h"
 
 namespace urdfsnap::serve {
 
@@ -21,11 +18,6 @@ std::string Absolute(const std::string& path) {
 
 std::string VectorText(double x, double y, double z) {
   return FormatNumber(x) + "," + FormatNumber(y) + "," + FormatNumber(z);
-}
-
-// The text an option was given as, else `fallback` (the .rviz file's or RViz's value).
-std::string Given(const std::string& given, const std::string& fallback) {
-  return given.empty() ? fallback : given;
 }
 
 // The options and model a suite case needs to render as the server does.
@@ -51,32 +43,31 @@ nlohmann::json CaseBase(const request::RenderRequest& base) {
 
 }  // namespace
 
-std::string InitialViewJson(const request::RenderRequest& base, Warnings& warnings) {
-  render::RvizConfig config;
-  if (!base.rviz.empty()) config = render::ReadRvizConfig(base.rviz, config, warnings);
-  const scene::OrbitView& view = config.view;
-  const scene::SceneOptions& scene = config.scene;
+std::string InitialViewJson(const request::RenderRequest& base, const render::RenderSettings& settings) {
+  const scene::OrbitView& view = settings.view;
+  const scene::SceneOptions& scene = settings.scene;
   const Eigen::Vector3f rgb = (scene.background * 255).array().round();
-  nlohmann::json options = {
-      {"size", base.size},
-      {"yaw", Given(base.yaw, FormatNumber(view.yaw))},
-      {"pitch", Given(base.pitch, FormatNumber(view.pitch))},
-      {"distance", Given(base.distance, FormatNumber(view.distance))},
-      {"focal", Given(base.focal, VectorText(view.focal.x(), view.focal.y(), view.focal.z()))},
-      {"alpha", Given(base.alpha, FormatNumber(scene.alpha))},
-      {"background", Given(base.background, VectorText(rgb.x(), rgb.y(), rgb.z()))},
-      {"no-grid", base.no_grid || !scene.grid.enabled},
-      {"tf", base.tf || scene.tf.enabled},
-      {"collision", base.collision || scene.show_collision},
-      {"no-visual", base.no_visual || !scene.show_visual}};
-  const double fov = base.fov.empty() ? view.fov_y : request::ParseFinite(base.fov, "--fov") * std::numbers::pi / 180;
+  // numbers in their shortest round-trip form, so that the page's first frame is the server's
+  const nlohmann::json options = {
+      {"size", std::to_string(settings.size.width) + "x" + std::to_string(settings.size.height)},
+      {"yaw", FormatNumber(view.yaw)},
+      {"pitch", FormatNumber(view.pitch)},
+      {"distance", FormatNumber(view.distance)},
+      {"focal", VectorText(view.focal.x(), view.focal.y(), view.focal.z())},
+      {"alpha", FormatNumber(scene.alpha)},
+      {"background", VectorText(rgb.x(), rgb.y(), rgb.z())},
+      {"fit", false},  // the view above is fitted already
+      {"no-grid", !scene.grid.enabled},
+      {"tf", scene.tf.enabled},
+      {"collision", scene.show_collision},
+      {"no-visual", !scene.show_visual}};
   model::NamedValues given;
   if (!base.joint_file.empty()) given = model::ReadJointFile(base.joint_file);
   given.insert(given.end(), base.joints.begin(), base.joints.end());
   nlohmann::json joints = nlohmann::json::object();
   for (const auto& [name, value] : given) joints[name] = value;
   const nlohmann::json result = {
-      {"options", options}, {"fov", fov}, {"joints", joints}, {"case", CaseBase(base)}};
+      {"options", options}, {"fov", view.fov_y}, {"joints", joints}, {"case", CaseBase(base)}};
   return result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 

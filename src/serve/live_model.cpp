@@ -4,23 +4,21 @@
 #include <set>
 #include <thread>
 
-#include "serve/frame_source.h"
 
 namespace urdfsnap::serve {
 
-LiveModel::LiveModel(request::ModelRequest request) : request_(std::move(request)) {}
+LiveModel::LiveModel(std::string model_file) : model_file_(std::move(model_file)) {}
 
-std::shared_ptr<const ModelState> LiveModel::Load(const std::function<void()>& check) {
+std::shared_ptr<const ModelState> LiveModel::Load(const std::function<WatchedModel()>& load) {
   const std::lock_guard load_lock(load_mutex_);
   const std::shared_ptr<const ModelState> before = State();
   auto next = std::make_shared<ModelState>();
-  std::set<std::string> files{request_.path};
+  std::set<std::string> files{model_file_};
   try {
-    WatchedModel loaded = LoadWatchedModel(request_);
+    WatchedModel loaded = load();
     files.insert(loaded.files.begin(), loaded.files.end());
-    check();
-    next->robot = std::make_shared<const model::Robot>(std::move(loaded.robot));
-    next->warnings = loaded.warnings.messages();
+    next->robot = std::move(loaded.robot);
+    next->warnings = std::move(loaded.warnings);
   } catch (const std::exception& e) {  // urdfsnap::Error, and bad_alloc on a runaway model
     next->error = e.what();
     // keep watching what the last good load read too: the fix may be in any of those files

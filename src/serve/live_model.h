@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "model/robot.h"
-#include "request/model_request.h"
 #include "serve/file_watcher.h"
+#include "serve/frame_source.h"
 
 namespace urdfsnap::serve {
 
@@ -27,15 +27,14 @@ struct ModelState {
 
 class LiveModel {
  public:
-  explicit LiveModel(request::ModelRequest request);
+  // `model_file` is watched whatever happens.
+  explicit LiveModel(std::string model_file);
 
-  const request::ModelRequest& request() const { return request_; }
-
-  // Loads the model from its files, then calls `check` (which throws urdfsnap::Error when the
-  // loaded model cannot be shown, e.g. a mesh is missing), and watches the files it read (with
-  // the previous ones too when it fails: the fix may be in any of them). The generation goes up
-  // unless the outcome is the same error as before. Returns the new state.
-  std::shared_ptr<const ModelState> Load(const std::function<void()>& check);
+  // Loads the model with `load` (which throws urdfsnap::Error when it cannot be loaded or shown,
+  // e.g. a mesh is missing) and watches the files it read (with the previous ones too when it
+  // fails: the fix may be in any of them). The generation goes up unless the outcome is the same
+  // error as before. Returns the new state.
+  std::shared_ptr<const ModelState> Load(const std::function<WatchedModel()>& load);
 
   // True when the model should be loaded again: a watched file changed (and then stayed
   // unchanged for `settle`, so that a save in several writes is read once, complete), or the
@@ -46,7 +45,7 @@ class LiveModel {
   std::shared_ptr<const ModelState> State() const;
 
  private:
-  const request::ModelRequest request_;
+  const std::string model_file_;
   std::mutex load_mutex_;  // one Load or NeedsLoad at a time (the watcher)
   FileWatcher watcher_;
   bool changed_during_load_ = false;

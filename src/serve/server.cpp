@@ -18,6 +18,7 @@
 #include "serve/initial_view.h"
 #include "serve/query_request.h"
 #include "serve/robot_json.h"
+#include "request/value_parsing.h"
 
 namespace urdfsnap::serve {
 
@@ -63,7 +64,7 @@ bool IsLoopback(const std::string& address) {
 }
 
 struct Server::Impl {
-  explicit Impl(ServerOptions o) : options(std::move(o)), live(options.base.model) {}
+  explicit Impl(ServerOptions o) : options(std::move(o)), live(options.base.model.path) {}
 
   ServerOptions options;
   LiveModel live;
@@ -76,11 +77,9 @@ struct Server::Impl {
   std::atomic<int> waiting{0};
 
   // (re)loads the model and checks that its initial view renders; holds the renderer meanwhile
-  // (the initial view's warnings go to `warnings`)
-  std::shared_ptr<const ModelState> Reload(Warnings& warnings) {
+  std::shared_ptr<const ModelState> Reload() {
     const std::lock_guard lock(render_mutex);
-    frames.ForgetModels();
-    return live.Load([&] { frames.RenderPng(options.base, warnings); });
+    return live.Load([&] { return frames.Reload(options.base); });
   }
 
   void Watch(std::stop_token stop) {
@@ -91,8 +90,7 @@ struct Server::Impl {
       wake.wait_for(lock, stop, options.watch_interval, [] { return false; });
       if (stop.stop_requested()) return;
       if (!live.NeedsLoad()) continue;
-      Warnings warnings;
-      const std::shared_ptr<const ModelState> state = Reload(warnings);
+      const std::shared_ptr<const ModelState> state = Reload();
       if (options.on_reload) options.on_reload(*state);
     }
   }
@@ -107,7 +105,7 @@ struct Server::Impl {
     request::RenderRequest r;
     try {
       r = RequestFromQuery(req.params, options.base);
-      const request::ImageSize size = request::ParseImageSize(r.size, "--size");
+      const render::ImageSize size = request::ParseImageSize(r.size, "--size");
       if (size.width > options.max_size.width || size.height > options.max_size.height) {
         throw Error("--size '" + r.size + "': urdfsnap serve renders at most " +
                     std::to_string(options.max_size.width) + "x" +
@@ -213,9 +211,10 @@ struct Server::Impl {
 Server::Server(ServerOptions options, Warnings& warnings)
     : impl_(std::make_unique<Impl>(std::move(options))) {
   Impl& s = *impl_;
-  const std::shared_ptr<const ModelState> state = s.Reload(warnings);
+  const std::shared_ptr<const ModelState> state = s.Reload();
+  for (const auto& warning : state->warnings) warnings.Add(warning);
   if (!state->robot) throw Error(state->error);
-  s.initial_view = InitialViewJson(s.options.base, warnings);
+  s.initial_view = InitialViewJson(s.options.base, s.frames.ResolvedSettings(s.options.base, warnings));
   s.Route();
 }
 

@@ -15,8 +15,8 @@
 #include <string>
 
 #include "common/warnings.h"
+#include "render/render_settings.h"
 #include "request/render_request.h"
-#include "request/value_parsing.h"
 #include "serve/live_model.h"
 
 namespace urdfsnap::serve {
@@ -26,7 +26,7 @@ struct ServerOptions {
   int port = 8765;                 // 0: any free port
   // the model and the options `urdfsnap serve` was given: every frame starts from them
   request::RenderRequest base;
-  request::ImageSize max_size{4096, 4096};  // largest frame, per side
+  render::ImageSize max_size{4096, 4096};  // largest frame, per side
   int max_waiting_renders = 8;   // requests that wait for the renderer; more get 503
   int threads = 16;              // connections served at once (keep-alive ones included)
   std::chrono::milliseconds watch_interval{250};  // how often the model's files are looked at

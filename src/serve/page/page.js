@@ -64,6 +64,7 @@ function pageOptions() {
     focal: v.focal.map(num).join(','),
     alpha: num(Number(o.alpha)),
     background: o.background,
+    fit: 'false',  // /api/view's view is fitted already
     'no-grid': String(o['no-grid']),
     tf: String(o.tf),
     collision: String(o.collision),
@@ -383,7 +384,8 @@ function suiteCaseYaml() {
   if (Object.keys(base.packages).length) lines.push(`    packages: ${yamlMap(base.packages)}`);
   if (base['xacro-ns']) lines.push('    xacro-ns: true');
   for (const [key, value] of Object.entries(options)) {
-    lines.push(`    ${key}: ${value === true ? 'true' : yamlString(String(value))}`);
+    const flag = value === true || value === 'true' || value === 'false';
+    lines.push(`    ${key}: ${flag ? String(value) : yamlString(String(value))}`);
   }
   const joints = [...page.joints].map(([name, value]) => `${yamlString(name)}: ${num(value)}`);
   if (joints.length) lines.push(`    joints: {${joints.join(', ')}}`);
