@@ -3,7 +3,6 @@
 
 #include <arpa/inet.h>
 
-#include <atomic>
 #include <condition_variable>
 #include <mutex>
 #include <stop_token>
@@ -15,6 +14,7 @@
 #include "common/error.h"
 #include "serve/embedded_page.h"
 #include "serve/frame_source.h"
+#include "serve/render_thread.h"
 #include "serve/initial_view.h"
 #include "serve/query_request.h"
 #include "serve/robot_json.h"
@@ -71,15 +71,14 @@ struct Server::Impl {
   std::string initial_view;  // /api/view
   httplib::Server http;
 
-  // the renderer: one frame at a time, a bounded number waiting
-  std::mutex render_mutex;
-  FrameSource frames;
-  std::atomic<int> waiting{0};
+  // one frame at a time, a bounded number waiting (last: it ends first, before what it uses)
+  RenderThread renderer{static_cast<size_t>(options.max_waiting_renders)};
 
-  // (re)loads the model and checks that its initial view renders; holds the renderer meanwhile
+  // (re)loads the model and checks that its initial view renders, between two frames
   std::shared_ptr<const ModelState> Reload() {
-    const std::lock_guard lock(render_mutex);
-    return live.Load([&] { return frames.Reload(options.base); });
+    std::shared_ptr<const ModelState> state;
+    renderer.Run([&](FrameSource& frames) { state = live.Load([&] { return frames.Reload(options.base); }); });
+    return state;
   }
 
   void Watch(std::stop_token stop) {
@@ -114,19 +113,19 @@ struct Server::Impl {
     } catch (const Error& e) {
       return SetText(res, 400, kErrorPrefix + std::string(e.what()));
     }
-    if (++waiting > options.max_waiting_renders + 1) {
-      --waiting;
-      res.set_header("Retry-After", "1");
-      return SetText(res, 503, "urdfsnap serve: busy rendering; try again");
-    }
-    const std::lock_guard lock(render_mutex);
-    --waiting;
-    const int generation = live.State()->generation;
-    const auto start = std::chrono::steady_clock::now();
+    int generation = 0;
     std::string png;
+    const auto start = std::chrono::steady_clock::now();
     try {
-      Warnings warnings;
-      png = frames.RenderPng(r, warnings);
+      const bool ran = renderer.TryRun([&](FrameSource& frames) {
+        generation = live.State()->generation;
+        Warnings warnings;
+        png = frames.RenderPng(r, warnings);
+      });
+      if (!ran) {
+        res.set_header("Retry-After", "1");
+        return SetText(res, 503, "urdfsnap serve: busy rendering; try again");
+      }
     } catch (const Error& e) {
       return SetText(res, 400, kErrorPrefix + std::string(e.what()));
     }
@@ -159,6 +158,12 @@ struct Server::Impl {
     http.set_read_timeout(5);
     http.set_write_timeout(5);
     http.set_tcp_nodelay(true);
+    // SO_REUSEADDR only: the library's default adds SO_REUSEPORT, which would let a second server
+    // share the port silently instead of failing to bind
+    http.set_socket_options([](socket_t sock) {
+      const int yes = 1;
+      setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    });
     const bool loopback_only = IsLoopback(options.bind);
     http.set_pre_routing_handler([loopback_only](const httplib::Request& req, httplib::Response& res) {
       res.set_header("Cache-Control", "no-store");
@@ -214,7 +219,9 @@ Server::Server(ServerOptions options, Warnings& warnings)
   const std::shared_ptr<const ModelState> state = s.Reload();
   for (const auto& warning : state->warnings) warnings.Add(warning);
   if (!state->robot) throw Error(state->error);
-  s.initial_view = InitialViewJson(s.options.base, s.frames.ResolvedSettings(s.options.base, warnings));
+  s.renderer.Run([&](FrameSource& frames) {
+    s.initial_view = InitialViewJson(s.options.base, frames.ResolvedSettings(s.options.base, warnings));
+  });
   s.Route();
 }
 

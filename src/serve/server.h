@@ -4,8 +4,8 @@
 // It answers nothing else: no URL names a file, every response is the page, a rendered image or
 // JSON/text made here. Limits: request bodies of 4 KiB (a GET has none), request lines and
 // header lines of 8 KiB (the library's), images up to ServerOptions::max_size, one render at a
-// time with at most max_waiting_renders more waiting (the rest get 503 at once), a fixed pool of
-// connection threads. Bound to a loopback address it answers only requests that name a loopback
+// time (on one render thread) with at most max_waiting_renders more waiting (the rest get 503 at
+// once), a fixed pool of connection threads. Bound to a loopback address it answers only requests that name a loopback
 // host (so a web page elsewhere cannot reach it by DNS rebinding).
 #pragma once
 
