@@ -23,4 +23,6 @@ trap 'rm -rf "$work"' EXIT
   --yaw 0.6 --pitch 0.35 --fit 2>/dev/null
 "$root/scripts/depth_labels_preview.py" "$work/colour.png" "$work/depth.png" "$work/labels.png" \
   "$root/docs/images/mrm_depth_labels.png"
+# the live view's page in headless Chromium, after its browser test has dragged a slider and orbited
+"$root/tests/serve/serve_page_browser.sh" "$snap" "$root/docs/images/serve_page.png" >/dev/null
 ls "$root/docs/images"

@@ -178,7 +178,7 @@ struct Server::Impl {
       // the page runs only its own script and style, and talks only to this server
       res.set_header("Content-Security-Policy",
                      "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' blob:; "
-                     "connect-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'");
+                     "connect-src 'self' blob:; base-uri 'none'; form-action 'none'; frame-ancestors 'none'");
       Page("index.html", "text/html; charset=utf-8", res);
     });
     http.Get("/page.js", [this](const httplib::Request&, httplib::Response& res) {

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The live view's page in headless Chromium (tests/node/serve_page_browser.mjs), then what the page copied
+# checked with urdfsnap itself: the suite case passes `snapshot check` against the frame the page
+# showed, and the pose file renders. Skips (exit 77) without chromium.
+# usage: tests/serve/serve_page_browser.sh URDFSNAP_BINARY [SCREENSHOT.png]
+set -euo pipefail
+urdfsnap=$1
+screenshot=${2:-}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+if [ ! -x /usr/bin/chromium ]; then echo "no /usr/bin/chromium (scripts/deps.sh installs it)"; exit 77; fi
+"$root/scripts/node-deps.sh"
+work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_serve_page.XXXXXX")
+server=
+cleanup() { [ -n "$server" ] && kill -KILL "$server" 2>/dev/null; rm -rf "$work"; }
+trap cleanup EXIT
+cp "$root/models/mrm_description/urdf/mrm.urdf" "$work/mrm.urdf"
+"$urdfsnap" serve "$work/mrm.urdf" --port 0 >"$work/out" 2>"$work/err" &
+server=$!
+for _ in $(seq 100); do grep -qs serving "$work/out" && break; sleep 0.1; done
+url=$(sed -n 's|^urdfsnap: serving \(http://.*\)$|\1|p' "$work/out")
+[ -n "$url" ] || { echo "the server did not start:"; cat "$work/err"; exit 1; }
+node "$root/tests/node/serve_page_browser.mjs" "$url" "$work/mrm.urdf" "$work"
+
+# the copied suite case renders the frame the page showed
+{ echo "cases:"; cat "$work/case.yaml"; } >"$work/suite.yaml"
+cp "$work/frame.png" "$work/mrm_view.png"
+"$urdfsnap" snapshot check "$work/suite.yaml"
+# the copied pose is a joint file render reads
+"$urdfsnap" render "$work/mrm.urdf" --joints "$work/pose.yaml" -o "$work/pose.png"
+[ -n "$screenshot" ] && cp "$work/page.png" "$screenshot"
+
+kill -INT "$server"
+status=0
+wait "$server" || status=$?
+server=
+[ "$status" -eq 0 ] || { echo "urdfsnap serve ended with status $status after SIGINT"; exit 1; }
+grep -q "urdfsnap: stopped" "$work/err"
+echo "page test passed"
