@@ -298,7 +298,10 @@ function showFrame(blob) {
   frames.url = URL.createObjectURL(blob);
   const img = $('frame');
   img.src = frames.url;
-  if (old) img.decode().finally(() => URL.revokeObjectURL(old));
+  // the old frame's URL goes once the new one is decoded (or superseded by a newer one: then
+  // decode() rejects, which is no error of ours)
+  const revoke = () => { if (old) URL.revokeObjectURL(old); };
+  img.decode().then(revoke, revoke);
   const o = page.options, v = page.view;
   $('status').textContent = `yaw ${num(v.yaw)} · pitch ${num(v.pitch)} · distance ${num(v.distance)} · focal ${v.focal.map(num).join(',')} · ${o.size}`;
 }
