@@ -70,8 +70,7 @@ std::shared_ptr<const model::Robot> RenderSession::LoadRobot(const ModelRequest&
   return model.loaded.robot;
 }
 
-image::Frame RenderSession::Render(const RenderRequest& r, const OptionLabel& label, Warnings& warnings,
-                                   const image::FrameOutputs& outputs) {
+RenderSession::Prepared RenderSession::Prepare(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
   render::RenderSettings settings = ParseRenderSettings(r, label, warnings);
   const Model& model = LoadedModelFor(r.model);
   const model::Robot& robot = *model.loaded.robot;
@@ -87,13 +86,24 @@ image::Frame RenderSession::Render(const RenderRequest& r, const OptionLabel& la
   model::NamedValues given;
   if (!r.joint_file.empty()) given = model::ReadJointFile(r.joint_file);
   given.insert(given.end(), r.joints.begin(), r.joints.end());
-  const std::vector<double> positions = model::ResolveJointPositions(robot, given, !r.no_clamp, warnings);
+  std::vector<double> positions = model::ResolveJointPositions(robot, given, !r.no_clamp, warnings);
   const Robot& prepared = RobotFor(r.model, model, settings.scene);
   AddAll(prepared.warnings, warnings);
-  const render::RobotRenderer& renderer = *prepared.renderer;
-  const scene::OrbitView view =
-      renderer.FitView(settings.fit, settings.view, settings.size, 1, [&](int) { return positions; });
-  return renderer.Render(RendererFor(settings.samples), positions, view, settings.size, outputs);
+  settings.view = prepared.renderer->FitView(settings.fit, settings.view, settings.size, 1,
+                                             [&](int) { return positions; });
+  settings.fit = render::Fit::kNone;
+  return {std::move(settings), std::move(positions), prepared.renderer.get()};
+}
+
+render::RenderSettings RenderSession::ResolveSettings(const RenderRequest& request, const OptionLabel& label,
+                                                      Warnings& warnings) {
+  return Prepare(request, label, warnings).settings;
+}
+
+image::Frame RenderSession::Render(const RenderRequest& r, const OptionLabel& label, Warnings& warnings,
+                                   const image::FrameOutputs& outputs) {
+  const Prepared p = Prepare(r, label, warnings);
+  return p.renderer->Render(RendererFor(p.settings.samples), p.positions, p.settings.view, p.settings.size, outputs);
 }
 
 std::vector<std::string> RenderSession::Files(const ModelRequest& request) const {

@@ -36,6 +36,11 @@ class RenderSession {
   image::Frame Render(const RenderRequest& request, const OptionLabel& label, Warnings& warnings,
                       const image::FrameOutputs& outputs = {});
 
+  // The settings Render uses for `request`, resolved: the view as the frame shows it (--fit applied,
+  // `fit` then kNone), an .rviz fixed frame outside the robot replaced by the root link. Loads and
+  // prepares the robot as Render does (cached). Throws urdfsnap::Error as Render does.
+  render::RenderSettings ResolveSettings(const RenderRequest& request, const OptionLabel& label, Warnings& warnings);
+
   // The robot `model` names, loaded once and cached as for Render (its warnings go to `warnings`
   // each time). Throws urdfsnap::Error as Render does for an unreadable model.
   std::shared_ptr<const model::Robot> LoadRobot(const ModelRequest& model, Warnings& warnings);
@@ -64,6 +69,13 @@ class RenderSession {
     std::unique_ptr<render::RobotRenderer> renderer;
     Warnings warnings;   // preparing it (missing meshes, plain paths), given again to every render
   };
+  // A request made ready to draw: resolved settings, joint positions, the prepared robot.
+  struct Prepared {
+    render::RenderSettings settings;
+    std::vector<double> positions;
+    const render::RobotRenderer* renderer;
+  };
+  Prepared Prepare(const RenderRequest& request, const OptionLabel& label, Warnings& warnings);
   const Model& LoadedModelFor(const ModelRequest& request);
   const Robot& RobotFor(const ModelRequest& request, const Model& model, const scene::SceneOptions& options);
   gl::Renderer& RendererFor(int samples);

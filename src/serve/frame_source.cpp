@@ -2,10 +2,7 @@
 #include "serve/frame_source.h"
 
 #include "image/png_writer.h"
-#include "model/joint_values.h"
-#include "render/robot_renderer.h"
 #include "request/render_session.h"
-#include "request/settings_parsing.h"
 
 namespace urdfsnap::serve {
 
@@ -38,24 +35,7 @@ WatchedModel FrameSource::Reload(const request::RenderRequest& request) {
 
 render::RenderSettings FrameSource::ResolvedSettings(const request::RenderRequest& request,
                                                      Warnings& warnings) {
-  render::RenderSettings settings = request::ParseRenderSettings(request, CommandLineLabel, warnings);
-  if (settings.fit == render::Fit::kNone) return settings;
-  // the fitted view as RenderSession::Render frames it (until the session reports the view it
-  // rendered with, this repeats its steps: the pose, the prepared robot, FitView)
-  const std::shared_ptr<const model::Robot> robot = session_->LoadRobot(request.model, warnings);
-  model::NamedValues given;
-  if (!request.joint_file.empty()) given = model::ReadJointFile(request.joint_file);
-  given.insert(given.end(), request.joints.begin(), request.joints.end());
-  const std::vector<double> positions =
-      model::ResolveJointPositions(*robot, given, !request.no_clamp, warnings);
-  if (request.fixed_frame.empty() && robot->FindLink(settings.scene.fixed_frame) < 0) {
-    settings.scene.fixed_frame.clear();  // an .rviz file's frame outside the robot: the root
-  }
-  const render::RobotRenderer renderer(robot, settings.scene, warnings);
-  settings.view = renderer.FitView(settings.fit, settings.view, settings.size, 1,
-                                   [&](int) { return positions; });
-  settings.fit = render::Fit::kNone;
-  return settings;
+  return session_->ResolveSettings(request, CommandLineLabel, warnings);
 }
 
 }  // namespace urdfsnap::serve
