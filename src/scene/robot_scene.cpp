@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "common/error.h"
+#include "common/number_text.h"
 #include "geometry/mesh_uri.h"
 #include "scene/link_colours.h"
 #include "scene/mesh_loading.h"
@@ -188,14 +189,36 @@ std::vector<LinkPart> PartsOf(const ShownShape& s, FileLoader& files) {
   return parts;
 }
 
+// The links' names, for messages: "base, arm".
+std::string LinkNames(const model::Robot& robot) {
+  std::string names;
+  for (const auto& link : robot.links()) names += (names.empty() ? "" : ", ") + link.name;
+  return names;
+}
+
+// RobotModel alpha times the link's own alpha (options.link_alpha), one per robot.links().
+std::vector<float> LinkAlphas(const model::Robot& robot, const SceneOptions& options) {
+  std::vector<float> alphas(robot.links().size(), static_cast<float>(options.alpha));
+  for (const auto& [name, alpha] : options.link_alpha) {
+    const int link = robot.FindLink(name);
+    if (link < 0) {
+      throw Error("link alpha for '" + name + "', which is not a link of robot '" + robot.name() +
+                  "' (links: " + LinkNames(robot) + ")");
+    }
+    if (!(alpha >= 0 && alpha <= 1)) {
+      throw Error("link alpha for '" + name + "' is " + FormatNumber(alpha) + "; expected 0 to 1");
+    }
+    alphas[link] *= static_cast<float>(alpha);
+  }
+  return alphas;
+}
+
 int FixedLink(const model::Robot& robot, const std::string& fixed_frame) {
   if (fixed_frame.empty()) return 0;
   const int fixed = robot.FindLink(fixed_frame);
   if (fixed < 0) {
-    std::string names;
-    for (const auto& link : robot.links()) names += (names.empty() ? "" : ", ") + link.name;
     throw Error("fixed frame '" + fixed_frame + "' is not a link of robot '" + robot.name() +
-                "' (links: " + names + ")");
+                "' (links: " + LinkNames(robot) + ")");
   }
   return fixed;
 }
@@ -204,12 +227,13 @@ int FixedLink(const model::Robot& robot, const std::string& fixed_frame) {
 
 RobotScene::RobotScene(const model::Robot& robot, SceneOptions options, Warnings& warnings)
     : robot_(robot), options_(std::move(options)), fixed_link_(FixedLink(robot, options_.fixed_frame)) {
+  const std::vector<float> alphas = LinkAlphas(robot_, options_);
   const std::vector<ShownShape> shapes = ShownShapes(robot_, options_);
   FileLoader files(options_, warnings);
   files.Prefetch(shapes);
   for (const ShownShape& shape : shapes) {
     for (LinkPart& part : PartsOf(shape, files)) {
-      part.rgba.w() *= static_cast<float>(options_.alpha);
+      part.rgba.w() *= alphas[part.link];
       parts_.push_back(std::move(part));
     }
   }

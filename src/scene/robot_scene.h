@@ -22,7 +22,7 @@ struct LinkPart {
   int link = -1;                          // index into robot.links()
   std::shared_ptr<const geometry::TriangleMesh> mesh;
   Eigen::Affine3d X_LG = Eigen::Affine3d::Identity();   // in the link frame, scale included
-  Eigen::Vector4f rgba{1, 0, 0, 1};       // RobotModel alpha applied
+  Eigen::Vector4f rgba{1, 0, 0, 1};       // RobotModel alpha and the link's alpha applied
   std::shared_ptr<const TextureImage> texture;
   Eigen::Vector3f emissive{0, 0, 0};
 };
@@ -32,8 +32,8 @@ class RobotScene {
   // Prepares `robot` (which must outlive this object) for `options`: every mesh and texture the
   // shown displays need is found and loaded. Throws urdfsnap::Error located at the link's element
   // for a mesh or texture that cannot be found or read (with allow_missing_meshes, a missing one
-  // is a warning and is not drawn), for an unknown fixed frame, and when TF names are asked for
-  // and the font is missing.
+  // is a warning and is not drawn), for an unknown fixed frame, a link alpha for an unknown link
+  // or outside 0 to 1, and when TF names are asked for and the font is missing.
   RobotScene(const model::Robot& robot, SceneOptions options, Warnings& warnings);
 
   const model::Robot& robot() const { return robot_; }

@@ -24,6 +24,10 @@ struct SceneOptions {
   bool show_visual = true;        // RobotModel "Visual Enabled"
   bool show_collision = false;    // RobotModel "Collision Enabled"
   double alpha = 1.0;             // RobotModel "Alpha", multiplies every material's alpha
+  // RobotModel "Links" > <link> > "Alpha" by link name, 0 to 1, 1 for links not named: multiplies
+  // the alpha of that link's materials as the robot alpha does (robot_link.cpp updateAlpha:
+  // robot alpha * material alpha * link alpha)
+  std::map<std::string, double> link_alpha;
   Eigen::Vector3f background{48 / 255.f, 48 / 255.f, 48 / 255.f};
   GridOptions grid;
   TfOptions tf;

@@ -93,6 +93,40 @@ TEST_F(RobotSceneTest, RobotAlphaMultipliesMaterialAlpha) {
   EXPECT_FLOAT_EQ(scene.items[1].rgba.w(), 0.5f);
 }
 
+TEST_F(RobotSceneTest, LinkAlphaMultipliesThatLinksAlphaOnly) {
+  // RViz: robot alpha * material alpha * link alpha (robot_link.cpp updateAlpha)
+  SceneOptions options;
+  options.alpha = 0.5;
+  options.link_alpha = {{"base", 0.25}};
+  options.show_collision = true;
+  const Scene scene = Build(options);
+  ASSERT_EQ(scene.items.size(), 3u);   // base visual, base collision, arm visual
+  EXPECT_EQ(scene.items[0].link, 0);
+  EXPECT_FLOAT_EQ(scene.items[0].rgba.w(), 0.125f);
+  EXPECT_FLOAT_EQ(scene.items[1].rgba.w(), 0.125f);   // collision shapes too
+  EXPECT_EQ(scene.items[2].link, 1);
+  EXPECT_FLOAT_EQ(scene.items[2].rgba.w(), 0.5f);
+  EXPECT_TRUE(scene.items[2].rgba.head<3>().isApprox(Eigen::Vector3f(0, 0, 1)));   // colour kept
+}
+
+TEST_F(RobotSceneTest, LinkAlphaForAnUnknownLinkOrOutOfRangeIsAnError) {
+  SceneOptions options;
+  options.link_alpha = {{"elbow", 0.5}};
+  try {
+    Build(options);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "link alpha for 'elbow', which is not a link of robot 'two' (links: base, arm)");
+  }
+  options.link_alpha = {{"arm", 1.5}};
+  try {
+    Build(options);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "link alpha for 'arm' is 1.5; expected 0 to 1");
+  }
+}
+
 TEST_F(RobotSceneTest, GridIsElevenPlusElevenLinesOverTenMetres) {
   const Scene scene = Build({});
   ASSERT_EQ(scene.lines.size(), 1u);
