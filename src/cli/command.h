@@ -39,5 +39,6 @@ void AddXacroCommand(CLI::App& app);
 void AddDiffCommand(CLI::App& app);
 void AddSnapshotCommand(CLI::App& app);
 void AddServeCommand(CLI::App& app);
+void AddDocsCommand(CLI::App& app);
 
 }  // namespace urdfsnap::cli

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   urdfsnap::cli::AddDiffCommand(app);
   urdfsnap::cli::AddSnapshotCommand(app);
   urdfsnap::cli::AddServeCommand(app);
+  urdfsnap::cli::AddDocsCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,109 @@
+// `urdfsnap docs`: a robot's documentation page (README.md, index.html and their pictures) written
+// into a folder that appears only when complete, or `--check`ed against a fresh one for CI.
+#include <memory>
+
+#include "cli/command.h"
+#include "cli/model_source.h"
+#include "cli/view_options.h"
+#include "common/error.h"
+#include "docs/animation_output.h"
+#include "docs/page_check.h"
+#include "docs/page_folder.h"
+#include "docs/page_writer.h"
+#include "gl/gl_context.h"
+#include "request/model_request.h"
+#include "request/render_request.h"
+#include "request/settings_parsing.h"
+
+namespace urdfsnap::cli {
+
+namespace {
+
+struct DocsOptions {
+  ModelSource model;
+  std::string output, check;
+  std::vector<std::string> joint_globs;
+  std::string animations;
+  request::RenderRequest request;   // the view and display options, filled by CLI11 directly
+};
+
+// Prints what --check found and ends with status 1 when the page is stale.
+void Report(const std::string& folder, const std::vector<std::string>& differences) {
+  if (differences.empty()) return WriteToStdout(folder + ": up to date\n");
+  std::string text = folder + ": stale, " + std::to_string(differences.size()) + " difference" +
+                     (differences.size() == 1 ? "" : "s") + " from a fresh page:\n";
+  for (const std::string& difference : differences) text += "  " + difference + "\n";
+  text += "regenerate it: the same command with -o " + folder + " instead of --check " + folder + "\n";
+  WriteToStdout(text);
+  throw CommandExit{1};
+}
+
+void Run(DocsOptions& o) {
+  const auto gl_loading = gl::StartLoadingGl();   // overlaps loading Mesa with reading the model
+  if (o.output.empty() == o.check.empty()) {
+    throw Error("docs: give -o DIR to write a page, or --check DIR to compare a committed page with a fresh one");
+  }
+  o.request.model = o.model.ToRequest();
+  Warnings warnings;
+  try {
+    const request::LoadedModel loaded = request::LoadModel(o.request.model, warnings);
+    docs::PageLook look;
+    look.settings = request::ParseRenderSettings(
+        o.request, [](std::string_view name) { return "--" + std::string(name); }, warnings);
+    docs::PageOptions options;
+    options.joint_globs = o.joint_globs;
+    options.view_size = {look.settings.size.width, look.settings.size.height};
+    options.joint_size = {std::max(1, options.view_size.width / 2), std::max(1, options.view_size.height / 2)};
+    options.animation_extension = o.animations == "none" ? "" : "." + o.animations;
+    const docs::RobotPage page = docs::MakeRobotPage(*loaded.robot, o.request.model.path,
+                                                     o.request.model.xacro_args, options, warnings);
+    if (!o.check.empty()) {
+      const docs::ScratchFolder fresh;
+      docs::WritePage(loaded.robot, page, look, fresh.path(), warnings, nullptr);
+      PrintWarnings(warnings);
+      if (!std::filesystem::is_directory(o.check)) {
+        Report(o.check, {"no page here (" + std::string(docs::kHtmlFile) + " and the rest are missing)"});
+      }
+      Report(o.check, docs::ComparePages(o.check, fresh.path()));
+      return;
+    }
+    docs::PageFolder folder(o.output);
+    docs::WritePage(loaded.robot, page, look, folder.path(), warnings, nullptr);
+    PrintWarnings(warnings);
+    folder.Commit();
+  } catch (const CommandExit&) {
+    throw;
+  } catch (...) {
+    PrintWarningsBeforeError(warnings);
+    throw;
+  }
+}
+
+}  // namespace
+
+void AddDocsCommand(CLI::App& app) {
+  auto o = std::make_shared<DocsOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "docs", "Write a robot's documentation page: pictures, joint by joint motion, tree and tables");
+  o->model.AddOptions(*cmd);
+  cmd->add_option("-o,--output", o->output,
+                  "folder to write README.md, index.html and the images into (replaced as a whole; "
+                  "it must be new, empty or a page of urdfsnap docs)");
+  cmd->add_option("--check", o->check,
+                  "instead of writing, compare the page in this folder with a fresh one: exit 0 when "
+                  "it is up to date, 1 when stale (images within the snapshot tolerances, text exactly)");
+  cmd->add_option("--joints", o->joint_globs,
+                  "give sections only to the movable joints matching GLOB (* ? [..], repeatable; "
+                  "default: every movable joint)");
+  std::vector<std::string> formats;
+  for (const std::string& extension : docs::AnimationExtensions()) formats.push_back(extension.substr(1));
+  formats.push_back("none");
+  o->animations = formats.front();
+  cmd->add_option("--animations", o->animations,
+                  "format of the joint sweeps and the turntable (default " + formats.front() + ")")
+      ->check(CLI::IsMember(formats));
+  AddViewOptions(*cmd, o->request);
+  cmd->callback([o] { Run(*o); });
+}
+
+}  // namespace urdfsnap::cli

@@ -1,0 +1,101 @@
+// ComparePages: both folders listed, then each file compared by its kind.
+#include "docs/page_check.h"
+
+#include <algorithm>
+#include <set>
+
+#include "common/error.h"
+#include "common/file_reading.h"
+#include "image/png_reader.h"
+
+namespace urdfsnap::docs {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The files below `folder`, as sorted relative paths with '/'.
+std::set<std::string> Listing(const fs::path& folder) {
+  std::set<std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    if (!entry.is_directory()) files.insert(fs::relative(entry.path(), folder).generic_string());
+  }
+  return files;
+}
+
+std::string Bytes(const fs::path& path) {
+  try {
+    return ReadFileBounded(path.string(), image::kMaxPngFileBytes);
+  } catch (const FileReadError& e) {
+    throw Error(path.string() + ": cannot read: " + e.what());
+  }
+}
+
+// A line for messages: at most 100 bytes, quoted.
+std::string Quoted(std::string line) {
+  if (line.size() > 100) line = line.substr(0, 97) + "...";
+  return "'" + line + "'";
+}
+
+// "" when the texts are equal, else where they first differ.
+std::string TextDifference(const std::string& committed, const std::string& fresh) {
+  if (committed == fresh) return "";
+  size_t start = 0;
+  int line = 1;
+  while (true) {
+    const size_t a = committed.find('\n', start), b = fresh.find('\n', start);
+    const std::string left = committed.substr(start, a == std::string::npos ? std::string::npos : a - start);
+    const std::string right = fresh.substr(start, b == std::string::npos ? std::string::npos : b - start);
+    if (left != right || a != b || a == std::string::npos) {
+      return "line " + std::to_string(line) + " differs: committed " + Quoted(left) + ", now " + Quoted(right);
+    }
+    start = a + 1;
+    ++line;
+  }
+}
+
+// "" when the pictures match within `tolerance`.
+std::string PictureDifference(const fs::path& committed, const fs::path& fresh, const image::DiffTolerance& tolerance) {
+  const image::Image expected = image::ReadPng(committed.string());
+  const image::Image actual = image::ReadPng(fresh.string());
+  if (expected.width != actual.width || expected.height != actual.height) {
+    return "size " + image::SizeText(expected) + ", now " + image::SizeText(actual);
+  }
+  const image::DiffStats stats = image::CompareImages(expected, actual, tolerance.max_delta);
+  return image::WithinTolerance(stats, tolerance) ? "" : image::DescribeDiff(stats, tolerance);
+}
+
+std::string Difference(const fs::path& committed, const fs::path& fresh, const image::DiffTolerance& tolerance) {
+  const std::string extension = committed.extension().string();
+  if (extension == ".png") return PictureDifference(committed, fresh, tolerance);
+  if (extension == ".md" || extension == ".html") return TextDifference(Bytes(committed), Bytes(fresh));
+  return Bytes(committed) == Bytes(fresh) ? "" : "the bytes differ";
+}
+
+}  // namespace
+
+std::vector<std::string> ComparePages(const fs::path& committed, const fs::path& fresh,
+                                      const image::DiffTolerance& tolerance) {
+  const std::set<std::string> old_files = Listing(committed), new_files = Listing(fresh);
+  std::set<std::string> all = old_files;
+  all.insert(new_files.begin(), new_files.end());
+  std::vector<std::string> differences;
+  for (const std::string& file : all) {
+    if (!old_files.count(file)) {
+      differences.push_back(file + ": missing from the committed page");
+    } else if (!new_files.count(file)) {
+      differences.push_back(file + ": not in a fresh page");
+    } else {
+      std::string difference;
+      try {
+        difference = Difference(committed / file, fresh / file, tolerance);
+      } catch (const Error& e) {
+        difference = e.what();   // a committed file that does not decode is a difference too
+      }
+      if (!difference.empty()) differences.push_back(file + ": " + difference);
+    }
+  }
+  return differences;
+}
+
+}  // namespace urdfsnap::docs

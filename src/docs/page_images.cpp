@@ -1,0 +1,166 @@
+// RenderPageImages: RobotRenderers for the views (visual, collision, TF) and one faded variant per
+// joint section, all drawn by one gl::Renderer; stills as PNG, animations through
+// animation_output.
+#include "docs/page_images.h"
+
+#include <algorithm>
+#include <numbers>
+
+#include "docs/animation_output.h"
+#include "gl/renderer.h"
+#include "image/png_writer.h"
+#include "model/joint_values.h"
+#include "render/robot_renderer.h"
+
+namespace urdfsnap::docs {
+
+namespace {
+
+render::ImageSize SizeOf(PictureSize size) { return {size.width, size.height}; }
+
+class PageRenderer {
+ public:
+  PageRenderer(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
+               const std::filesystem::path& folder, Warnings& warnings, const Progress& progress)
+      : robot_(robot), page_(page), look_(look), folder_(folder), warnings_(warnings), progress_(progress),
+        total_(PageImageCount(page, look)), gl_(look.settings.samples),
+        fit_(look.settings.fit == render::Fit::kNone ? render::Fit::kFit : look.settings.fit) {}
+
+  void Views() {
+    scene::SceneOptions options = look_.settings.scene;
+    const render::RobotRenderer visual(robot_, options, warnings_);
+    Still(visual, page_.hero_file);
+
+    if (!page_.collision_file.empty()) {
+      options.show_visual = false;
+      options.show_collision = true;
+      Still(render::RobotRenderer(robot_, options, warnings_), page_.collision_file);
+    }
+
+    options = look_.settings.scene;
+    options.tf.enabled = true;
+    options.alpha *= look_.tf_alpha;
+    Still(render::RobotRenderer(robot_, options, warnings_), page_.tf_file);
+
+    if (!page_.turntable_file.empty()) Turntable(visual);
+  }
+
+  void Section(const JointSection& section) {
+    // the links the joint does not move, faded
+    scene::SceneOptions options = look_.settings.scene;
+    std::vector<bool> moving(robot_->links().size(), false);
+    for (int link : section.moving_links) moving[link] = true;
+    for (size_t i = 0; i < moving.size(); ++i) {
+      if (!moving[i]) options.link_alpha[robot_->links()[i].name] = look_.faded_alpha;
+    }
+    const render::RobotRenderer faded(robot_, options, warnings_);
+    // one camera for the stills and every frame of the sweep
+    const int stills = static_cast<int>(section.pictures.size());
+    const auto pose = [&](int k) {
+      return Pose(section.name, k < stills ? section.pictures[k].position : section.sweep[k - stills]);
+    };
+    const int all = stills + static_cast<int>(section.sweep.size());
+    const scene::OrbitView view = faded.FitView(fit_, look_.settings.view, SizeOf(page_.joint_size), all, pose);
+    for (int k = 0; k < stills; ++k) {
+      Write(faded.Render(gl_, pose(k), view, SizeOf(page_.joint_size)).colour, section.pictures[k].file);
+    }
+    if (!section.sweep_file.empty()) {
+      Animate(faded, section.sweep_file, static_cast<int>(section.sweep.size()),
+              [&](int k) { return pose(stills + k); }, [&](int) { return view; });
+    }
+  }
+
+ private:
+  // joint_state_publisher's positions with `joint` at `value` (its mimic joints following).
+  std::vector<double> Pose(const std::string& joint, double value) {
+    return model::ResolveJointPositions(*robot_, {{joint, value}}, false, warnings_);
+  }
+
+  void Still(const render::RobotRenderer& robot, const std::string& file) {
+    const auto pose = [&](int) { return page_.default_positions; };
+    const render::ImageSize size = SizeOf(page_.view_size);
+    const scene::OrbitView view = robot.FitView(fit_, look_.settings.view, size, 1, pose);
+    Write(robot.Render(gl_, page_.default_positions, view, size).colour, file);
+  }
+
+  // The camera's yaw once around, at the distance that frames the robot from every side.
+  void Turntable(const render::RobotRenderer& robot) {
+    const int frames = look_.turntable_frames;
+    const render::ImageSize size = SizeOf(page_.joint_size);
+    const auto pose = [&](int) { return page_.default_positions; };
+    const auto yawed = [&](int k) {
+      scene::OrbitView view = look_.settings.view;
+      view.yaw += 2 * std::numbers::pi * k / frames;
+      return view;
+    };
+    // the focal point is the same from every side (the centre of the robot's box, or the given one)
+    scene::OrbitView fitted;
+    double distance = 0;
+    for (int k = 0; k < frames; ++k) {
+      fitted = robot.FitView(fit_, yawed(k), size, 1, pose);
+      distance = std::max(distance, fitted.distance);
+    }
+    Animate(robot, page_.turntable_file, frames, pose, [&](int k) {
+      scene::OrbitView view = yawed(k);
+      view.focal = fitted.focal;
+      view.distance = distance;
+      return view;
+    });
+  }
+
+  // Writes the animation of `frames` frames, frame k showing pose(k) through view(k).
+  void Animate(const render::RobotRenderer& robot, const std::string& file, int frames,
+               const std::function<std::vector<double>(int)>& pose,
+               const std::function<scene::OrbitView(int)>& view) {
+    const std::filesystem::path path = folder_ / file;
+    std::filesystem::create_directories(path.parent_path());
+    WriteAnimation(path.string(), page_.joint_size, look_.fps, frames, [&](int k, image::Image& frame) {
+      frame = robot.Render(gl_, pose(k), view(k), SizeOf(page_.joint_size)).colour;
+      Advance();
+    });
+  }
+
+  void Write(const image::Image& image, const std::string& file) {
+    const std::filesystem::path path = folder_ / file;
+    std::filesystem::create_directories(path.parent_path());
+    image::WritePng(image, path.string());
+    Advance();
+  }
+
+  void Advance() {
+    if (progress_) progress_(++done_, total_);
+  }
+
+  std::shared_ptr<const model::Robot> robot_;
+  const RobotPage& page_;
+  const PageLook& look_;
+  const std::filesystem::path folder_;
+  Warnings& warnings_;
+  const Progress& progress_;
+  const std::int64_t total_;
+  std::int64_t done_ = 0;
+  gl::Renderer gl_;
+  const render::Fit fit_;
+};
+
+}  // namespace
+
+std::int64_t PageImageCount(const RobotPage& page, const PageLook& look) {
+  std::int64_t count = page.collision_file.empty() ? 2 : 3;
+  if (!page.turntable_file.empty()) count += look.turntable_frames;
+  for (const JointSection& section : page.sections) {
+    count += static_cast<std::int64_t>(section.pictures.size());
+    if (!section.sweep_file.empty()) count += static_cast<std::int64_t>(section.sweep.size());
+  }
+  return count;
+}
+
+void RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
+                      const PageLook& look, const std::filesystem::path& folder, Warnings& warnings,
+                      const Progress& progress) {
+  PageRenderer renderer(robot, page, look, folder, warnings, progress);
+  renderer.Views();
+  for (const JointSection& section : page.sections) renderer.Section(section);
+}
+
+}  // namespace urdfsnap::docs

@@ -1,0 +1,44 @@
+// Rendering a docs page's pictures and animations through the typed render core, in one process
+// with one GL context: the robot as RViz shows it (framed with --fit), its collision geometry, its
+// TF frames with names, a turntable, and per joint section the stills and the sweep from one
+// camera fitted to the joint's whole motion, with the links it does not move faded (each faded
+// variant prepared once).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+#include "common/warnings.h"
+#include "docs/page_model.h"
+#include "model/robot.h"
+#include "render/render_settings.h"
+
+namespace urdfsnap::docs {
+
+// How the pictures look beyond the page's content.
+struct PageLook {
+  // The user's displays, camera direction, multisampling; size is page.view_size. The view is
+  // always fitted (Fit::kKeepFocal when a focal point was given, else Fit::kFit).
+  render::RenderSettings settings;
+  double faded_alpha = 0.25;   // link alpha of the links a joint does not move
+  double tf_alpha = 0.3;       // multiplies the robot's alpha in the TF view, so frames inside show
+  int turntable_frames = 48;   // one turn of the camera's yaw
+  double fps = 12;             // of every animation
+};
+
+// Called after each picture or animation frame: how many are done of how many in all.
+using Progress = std::function<void(std::int64_t done, std::int64_t total)>;
+
+// The pictures and animation frames RenderPageImages makes: its progress total.
+std::int64_t PageImageCount(const RobotPage& page, const PageLook& look);
+
+// Renders every picture of `page` (made by MakeRobotPage for `robot`) into `folder`, at the page's
+// relative file names. Throws urdfsnap::Error: files the robot needs that cannot be read (located
+// at the link), no GL context, an image that cannot be written.
+void RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
+                      const PageLook& look, const std::filesystem::path& folder, Warnings& warnings,
+                      const Progress& progress);
+
+}  // namespace urdfsnap::docs

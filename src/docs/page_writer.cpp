@@ -1,0 +1,17 @@
+// WritePage: the documents after the pictures, so that a page with both documents is complete.
+#include "docs/page_writer.h"
+
+#include "common/atomic_file.h"
+#include "docs/html_page.h"
+#include "docs/markdown_page.h"
+
+namespace urdfsnap::docs {
+
+void WritePage(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
+               const std::filesystem::path& folder, Warnings& warnings, const Progress& progress) {
+  RenderPageImages(robot, page, look, folder, warnings, progress);
+  WriteFileAtomically((folder / kMarkdownFile).string(), MarkdownPage(page));
+  WriteFileAtomically((folder / kHtmlFile).string(), HtmlPage(page));
+}
+
+}  // namespace urdfsnap::docs
