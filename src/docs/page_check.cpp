@@ -31,10 +31,19 @@ std::string Bytes(const fs::path& path) {
   }
 }
 
-// A line for messages: at most 100 bytes, quoted.
-std::string Quoted(std::string line) {
-  if (line.size() > 100) line = line.substr(0, 97) + "...";
-  return "'" + line + "'";
+// The part of a line around `column` (where it differs from the other side), quoted: at most 30
+// bytes before and 60 after, with "..." where it is cut.
+std::string Excerpt(const std::string& line, size_t column) {
+  // cuts move to the start of a UTF-8 character
+  const auto boundary = [&](size_t at) {
+    while (at > 0 && at < line.size() && (static_cast<unsigned char>(line[at]) & 0xC0) == 0x80) --at;
+    return std::min(at, line.size());
+  };
+  const size_t from = boundary(column > 30 ? column - 30 : 0), to = boundary(column + 60);
+  std::string text = from > 0 ? "'..." : "'";
+  text.append(line, from, to - from);
+  text += to < line.size() ? "...'" : "'";
+  return text;
 }
 
 // "" when the texts are equal, else where they first differ.
@@ -47,7 +56,9 @@ std::string TextDifference(const std::string& committed, const std::string& fres
     const std::string left = committed.substr(start, a == std::string::npos ? std::string::npos : a - start);
     const std::string right = fresh.substr(start, b == std::string::npos ? std::string::npos : b - start);
     if (left != right || a != b || a == std::string::npos) {
-      return "line " + std::to_string(line) + " differs: committed " + Quoted(left) + ", now " + Quoted(right);
+      const size_t column = std::mismatch(left.begin(), left.end(), right.begin(), right.end()).first - left.begin();
+      return "line " + std::to_string(line) + " differs: committed " + Excerpt(left, column) + ", now " +
+             Excerpt(right, column);
     }
     start = a + 1;
     ++line;

@@ -1,0 +1,146 @@
+// `urdfsnap docs` against the binary: the page's files, byte-identical reruns, --check passing on a
+// fresh page and failing after a joint limit changes, errors that leave nothing half-written, and
+// folders it refuses to replace.
+#include <filesystem>
+#include <map>
+#include <regex>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.h"
+#include "image/png_reader.h"
+
+namespace urdfsnap::cli_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every file below `folder` by relative path, with its bytes.
+std::map<std::string, std::string> Files(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    if (entry.is_regular_file()) files[fs::relative(entry.path(), folder).string()] = ReadBytes(entry.path());
+  }
+  return files;
+}
+
+class DocsTest : public CliTest {
+ protected:
+  void SetUp() override {
+    CliTest::SetUp();
+    model_ = Write("mrm.urdf", ReadBytes(kMrm));
+  }
+  // The names in the folder itself (no temporary folders may be left beside a page).
+  std::vector<std::string> Listing() const { return folder_->Listing(); }
+  std::string model_;
+};
+
+TEST_F(DocsTest, WritesThePageAndTwoRunsAreByteIdentical) {
+  const Result first = RunUrdfsnap("docs " + model_ + " -o " + Path("page"));
+  ASSERT_EQ(first.status, 0) << first.output;
+  const Result second = RunUrdfsnap("docs " + model_ + " -o " + Path("again"));
+  ASSERT_EQ(second.status, 0) << second.output;
+  const auto files = Files(Path("page"));
+  EXPECT_EQ(files, Files(Path("again")));
+  for (const char* name : {"README.md", "index.html", "images/robot.png", "images/tf.png",
+                           "joints/link_01__link_02/lower.png", "joints/link_01__link_02/default.png",
+                           "joints/link_01__link_02/upper.png"}) {
+    EXPECT_TRUE(files.count(name)) << name;
+  }
+  EXPECT_FALSE(files.count("images/collision.png")) << "mrm has no collision geometry";
+  for (const auto& [name, bytes] : files) {
+    if (name.ends_with(".png")) {
+      EXPECT_GT(image::DecodePng(bytes, name).width, 0) << name;
+    }
+  }
+  EXPECT_EQ(image::ReadPng(Path("page/images/robot.png")).width, 640);
+  EXPECT_EQ(image::ReadPng(Path("page/joints/link_01__link_02/upper.png")).width, 320);
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"again", "mrm.urdf", "page"}));
+}
+
+TEST_F(DocsTest, CheckPassesOnAFreshPageAndFailsAfterALimitChanges) {
+  ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);
+  const Result fresh = RunUrdfsnap("docs " + model_ + " --check " + Path("page"));
+  EXPECT_EQ(fresh.status, 0) << fresh.output;
+  EXPECT_NE(fresh.output.find(Path("page") + ": up to date"), std::string::npos) << fresh.output;
+
+  // the third joint's upper limit from π to 1 rad
+  std::string urdf = ReadBytes(model_);
+  const size_t joint = urdf.find("name=\"link_02__link_03\"");
+  const size_t upper = urdf.find("upper=\"", joint);
+  ASSERT_NE(upper, std::string::npos);
+  urdf.replace(upper, urdf.find('"', upper + 7) - upper + 1, "upper=\"1\"");
+  Write("mrm.urdf", urdf);
+  const Result stale = RunUrdfsnap("docs " + model_ + " --check " + Path("page"));
+  EXPECT_EQ(stale.status, 1) << stale.output;
+  EXPECT_NE(stale.output.find(Path("page") + ": stale, "), std::string::npos) << stale.output;
+  EXPECT_TRUE(std::regex_search(stale.output, std::regex("\n  README.md: line [0-9]+ differs: committed '.*', now "
+                                                         "'.*-3.14 to 1 rad \\(-179.9° to 57.3°\\)")))
+      << stale.output;
+  EXPECT_NE(stale.output.find("  index.html: line "), std::string::npos) << stale.output;
+  EXPECT_NE(stale.output.find("  joints/link_02__link_03/upper.png: max delta "), std::string::npos) << stale.output;
+  EXPECT_NE(stale.output.find("regenerate it: the same command with -o "), std::string::npos);
+  // pictures of the joints it does not change still match
+  EXPECT_EQ(stale.output.find("joints/base_link__link_01/"), std::string::npos) << stale.output;
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf", "page"}));
+}
+
+TEST_F(DocsTest, CheckFindsMissingExtraAndUndecodableFiles) {
+  ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);
+  fs::remove(Path("page/images/tf.png"));
+  Write("page/notes.txt", "mine");
+  Write("page/images/robot.png", "not a png");
+  const Result r = RunUrdfsnap("docs " + model_ + " --check " + Path("page"));
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("  images/tf.png: missing from the committed page\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("  notes.txt: not in a fresh page\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("  images/robot.png: " + Path("page/images/robot.png")), std::string::npos) << r.output;
+
+  const Result none = RunUrdfsnap("docs " + model_ + " --check " + Path("nothing"));
+  EXPECT_EQ(none.status, 1) << none.output;
+  EXPECT_NE(none.output.find("no page here"), std::string::npos) << none.output;
+}
+
+TEST_F(DocsTest, ReplacesAnOlderPageAsAWhole) {
+  ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);
+  Write("page/joints/gone.png", "left over from an older robot");
+  const Result r = RunUrdfsnap("docs " + model_ + " -o " + Path("page") + " --joints 'link_01*'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_FALSE(fs::exists(Path("page/joints/gone.png")));
+  EXPECT_FALSE(fs::exists(Path("page/joints/base_link__link_01")));
+  EXPECT_TRUE(fs::exists(Path("page/joints/link_01__link_02/upper.png")));
+  EXPECT_NE(ReadBytes(Path("page/README.md")).find("4 movable joints are left out of this page (--joints)."),
+            std::string::npos);
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf", "page"}));
+}
+
+TEST_F(DocsTest, ErrorsAreOneLineWithStatus2AndWriteNothing) {
+  struct Case {
+    std::string arguments, message;
+  };
+  Write("broken.urdf", "<robot name=\"b\"><link name=\"a\"/><joint name=\"j\" type=\"hinge\"/></robot>");
+  fs::create_directory(Path("mine"));
+  Write("mine/thesis.tex", "precious");
+  const std::vector<Case> cases = {
+      {Path("broken.urdf") + " -o " + Path("page"), "broken.urdf:1: joint 'j'"},
+      {model_ + " -o " + Path("page") + " --joints 'elbow*'", "--joints 'elbow*' matches none of the movable joints"},
+      {model_ + " -o " + Path("page") + " --yaw sideways", "--yaw"},
+      {model_, "give -o DIR to write a page, or --check DIR"},
+      {model_ + " -o " + Path("page") + " --check " + Path("page"), "give -o DIR to write a page, or --check DIR"},
+      {model_ + " -o " + Path("mine"), "mine: is a folder with other files than a page of urdfsnap docs"},
+      {model_ + " -o " + Path("mrm.urdf"), "mrm.urdf: exists and is not a folder"},
+      {model_ + " -o " + Path("no/such/folder/page"), "page: cannot write: No such file or directory"},
+  };
+  for (const Case& c : cases) {
+    const Result r = RunUrdfsnap("docs " + c.arguments);
+    EXPECT_EQ(r.status, 2) << c.arguments << "\n" << r.output;
+    EXPECT_EQ(r.output.rfind("urdfsnap: error: ", 0), 0u) << r.output;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << c.arguments << "\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"broken.urdf", "mine", "mrm.urdf"}));
+  EXPECT_EQ(ReadBytes(Path("mine/thesis.tex")), "precious");
+}
+
+}  // namespace
+}  // namespace urdfsnap::cli_test
