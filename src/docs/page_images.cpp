@@ -11,6 +11,7 @@
 #include "image/png_writer.h"
 #include "model/joint_values.h"
 #include "render/robot_renderer.h"
+#include "scene/view_fitting.h"
 
 namespace urdfsnap::docs {
 
@@ -54,13 +55,12 @@ class PageRenderer {
       if (!moving[i]) options.link_alpha[robot_->links()[i].name] = look_.faded_alpha;
     }
     const render::RobotRenderer faded(robot_, options, warnings_);
-    // one camera for the stills and every frame of the sweep
+    // one camera for the stills and every frame of the sweep, fitted to what moves
     const int stills = static_cast<int>(section.pictures.size());
     const auto pose = [&](int k) {
       return Pose(section.name, k < stills ? section.pictures[k].position : section.sweep[k - stills]);
     };
-    const int all = stills + static_cast<int>(section.sweep.size());
-    const scene::OrbitView view = faded.FitView(fit_, look_.settings.view, SizeOf(page_.joint_size), all, pose);
+    const scene::OrbitView view = MotionView(faded, moving, stills + static_cast<int>(section.sweep.size()), pose);
     for (int k = 0; k < stills; ++k) {
       Write(faded.Render(gl_, pose(k), view, SizeOf(page_.joint_size)).colour, section.pictures[k].file);
     }
@@ -71,6 +71,20 @@ class PageRenderer {
   }
 
  private:
+  // The view that fits the moving links in every pose(k), k < count (the whole robot when they have
+  // no geometry), so that a small part fills the picture.
+  scene::OrbitView MotionView(const render::RobotRenderer& robot, const std::vector<bool>& moving, int count,
+                              const std::function<std::vector<double>(int)>& pose) {
+    const auto moving_parts = [&](int k) {
+      scene::Scene scene = robot.Pose(pose(k));
+      std::erase_if(scene.items, [&](const scene::DrawItem& item) { return item.link < 0 || !moving[item.link]; });
+      return scene;
+    };
+    if (moving_parts(0).items.empty()) return robot.FitView(fit_, look_.settings.view, SizeOf(page_.joint_size), count, pose);
+    const double aspect = static_cast<double>(page_.joint_size.width) / page_.joint_size.height;
+    return scene::FitView(count, moving_parts, look_.settings.view, aspect, fit_ == render::Fit::kKeepFocal);
+  }
+
   // joint_state_publisher's positions with `joint` at `value` (its mimic joints following).
   std::vector<double> Pose(const std::string& joint, double value) {
     return model::ResolveJointPositions(*robot_, {{joint, value}}, false, warnings_);

@@ -1,8 +1,8 @@
 // Rendering a docs page's pictures and animations through the typed render core, in one process
 // with one GL context: the robot as RViz shows it (framed with --fit), its collision geometry, its
 // TF frames with names, a turntable, and per joint section the stills and the sweep from one
-// camera fitted to the joint's whole motion, with the links it does not move faded (each faded
-// variant prepared once).
+// camera fitted to the links the joint moves through its whole motion, with the links it does not
+// move faded (each faded variant prepared once).
 #pragma once
 
 #include <cstdint>
