@@ -3,26 +3,15 @@
 // logged to the console and no request fails, every movable joint named has its section; and every
 // link of the page's README.md resolves to a file in the page that the browser decodes.
 // usage: node docs_page_browser.mjs PAGE_DIR JOINT,JOINT,... [SCREENSHOT.png]
-import { chromium } from 'playwright-core';
+import { makeChecker, openBrowserPage } from './browser_check.mjs';
 import { existsSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 const [dir, jointList, screenshot] = process.argv.slice(2);
 const joints = jointList ? jointList.split(',') : [];
-const failures = [];
-const check = (ok, what) => { if (!ok) failures.push(what); console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); };
-
-const browser = await chromium.launch({
-  executablePath: '/usr/bin/chromium',
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-         '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  // (playwright starts every launch with a fresh --user-data-dir of its own)
-});
-const page = await browser.newPage({viewport: {width: 1200, height: 900}});
-const errors = [];
-page.on('console', (message) => { if (message.type() === 'error') errors.push(message.text()); });
-page.on('pageerror', (error) => errors.push(error.message));
+const {check, failures} = makeChecker();
+const {browser, page, errors} = await openBrowserPage({width: 1200, height: 900});
 page.on('requestfailed', (request) => errors.push(`request failed: ${request.url()}`));
 
 await page.goto(pathToFileURL(resolve(dir, 'index.html')).href, {waitUntil: 'load'});
@@ -69,4 +58,4 @@ check(bad.length === 0, `every README link decodes as an image${bad.length ? ': 
 
 check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
 await browser.close();
-process.exit(failures.length ? 1 : 0);
+process.exit(failures().length ? 1 : 0);

@@ -4,24 +4,13 @@
 // the shell test checks next with urdfsnap itself: the suite case and pose the page copies, the
 // frame it shows, and a screenshot.
 // usage: node serve_page_browser.mjs URL MODEL_FILE OUT_DIR
-import { chromium } from 'playwright-core';
+import { makeChecker, openBrowserPage } from './browser_check.mjs';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 
 const [url, modelFile, out] = process.argv.slice(2);
-const failures = [];
-const check = (ok, what) => { if (!ok) failures.push(what); console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); };
-
-const browser = await chromium.launch({
-  executablePath: '/usr/bin/chromium',
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-         '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  // (playwright starts every launch with a fresh --user-data-dir of its own)
-});
-const page = await browser.newPage({viewport: {width: 1180, height: 640}});
-const errors = [];
-page.on('console', (message) => { if (message.type() === 'error') errors.push(message.text()); });
-page.on('pageerror', (error) => errors.push(error.message));
+const {check, failures} = makeChecker();
+const {browser, page, errors} = await openBrowserPage({width: 1180, height: 640});
 
 // the frame the page shows, as bytes (base64), once it has settled (no change for 400 ms)
 async function settledFrame() {
@@ -99,4 +88,4 @@ check(await page.$eval('#error', (e) => e.hidden), 'the fixed model clears the e
 
 check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
 await browser.close();
-process.exit(failures.length ? 1 : 0);
+process.exit(failures().length ? 1 : 0);
