@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds urdfsnap and runs its benchmarks, printing their tables. Timings only; nothing asserts.
+# Builds urdfsnap and runs its benchmarks, printing their tables (the C++ ones, then the time and
+# memory of whole commands). Timings only; nothing asserts.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"
@@ -8,3 +9,5 @@ for b in "$root"/build/*_bench; do
   echo "== $(basename "$b")"
   "$b"
 done
+echo "== docs_bench"
+"$root/bench/docs/docs_bench.sh" "$root/build/urdfsnap"

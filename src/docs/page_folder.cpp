@@ -59,6 +59,8 @@ void CheckReplaceable(const fs::path& destination) {
 PageFolder::PageFolder(fs::path destination) : destination_(std::move(destination)) {
   if (!destination_.has_filename()) destination_ = destination_.parent_path();   // "docs/page/"
   CheckReplaceable(destination_);
+  std::error_code error;
+  if (destination_.has_parent_path()) fs::create_directories(destination_.parent_path(), error);
   for (int attempt = 0;; ++attempt) {
     path_ = destination_.string() + ".tmp-" + RandomSuffix();
     if (::mkdir(path_.c_str(), 0777) == 0) break;

@@ -14,7 +14,7 @@ inline constexpr const char* kPageMarker = "<meta name=\"generator\" content=\"u
 class PageFolder {
  public:
   // A new, empty folder "<destination>.tmp-XXXXXX" beside `destination` (mode 0777 less the
-  // umask). Throws urdfsnap::Error naming `destination` when it is a file, a folder that is not
+  // umask; missing parent folders are made). Throws urdfsnap::Error naming `destination` when it is a file, a folder that is not
   // empty and holds no page of `urdfsnap docs`, or when the folder cannot be made.
   explicit PageFolder(std::filesystem::path destination);
   // Removes the folder and everything in it unless Commit moved it into place.

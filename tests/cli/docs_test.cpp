@@ -55,7 +55,10 @@ TEST_F(DocsTest, WritesThePageAndTwoRunsAreByteIdentical) {
   }
   EXPECT_EQ(image::ReadPng(Path("page/images/robot.png")).width, 640);
   EXPECT_EQ(image::ReadPng(Path("page/joints/link_01__link_02/upper.png")).width, 320);
-  EXPECT_EQ(Listing(), (std::vector<std::string>{"again", "mrm.urdf", "page"}));
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"again", "mrm.urdf", "page"}));  // no temporary folders
+  // missing parent folders are made
+  ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("docs/robots/mrm")).status, 0);
+  EXPECT_EQ(Files(Path("docs/robots/mrm")), files);
 }
 
 TEST_F(DocsTest, CheckPassesOnAFreshPageAndFailsAfterALimitChanges) {
@@ -129,7 +132,7 @@ TEST_F(DocsTest, ErrorsAreOneLineWithStatus2AndWriteNothing) {
       {model_ + " -o " + Path("page") + " --check " + Path("page"), "give -o DIR to write a page, or --check DIR"},
       {model_ + " -o " + Path("mine"), "mine: is a folder with other files than a page of urdfsnap docs"},
       {model_ + " -o " + Path("mrm.urdf"), "mrm.urdf: exists and is not a folder"},
-      {model_ + " -o " + Path("no/such/folder/page"), "page: cannot write: No such file or directory"},
+      {model_ + " -o " + Path("mrm.urdf/page"), "page: cannot write: Not a directory"},
   };
   for (const Case& c : cases) {
     const Result r = RunUrdfsnap("docs " + c.arguments);
