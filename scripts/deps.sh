@@ -10,6 +10,7 @@ packages=(
   libtinyxml2-dev libexpat1-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libbenchmark-dev fonts-liberation libfreetype-dev python3
   libcpp-httplib-dev chromium nodejs npm
+  libzstd-dev liblz4-dev
 )
 if [ "${1:-}" = "--sanitizers" ]; then packages+=(clang libclang-rt-14-dev llvm-14); fi
 missing=()

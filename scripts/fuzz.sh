@@ -12,7 +12,8 @@ seconds=${1:-60}
 shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] &&
-  targets=(xacro_processor xacro_expression urdf_loader joint_file rviz_config png_reader)
+  targets=(xacro_processor xacro_expression urdf_loader joint_file rviz_config png_reader
+    mcap_reader)
 build=${URDFSNAP_FUZZ_BUILD:-$root/build-fuzz}
 
 "$root/scripts/deps.sh" --sanitizers

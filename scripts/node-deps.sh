@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the npm packages of urdfsnap's test tooling (tests/node/package.json) into
+# Installs the npm packages of urdfsnap's test tooling (tests/node/package.json: the MCAP writer and
+# ROS 2 serialiser that make the test bags, playwright-core for the live view's browser test) into
 # tests/node/node_modules (git-ignored), exactly as package-lock.json pins them, when they are
 # missing or the lock file has changed since. Quiet when they are up to date. Test-only: nothing
 # urdfsnap runs needs node.

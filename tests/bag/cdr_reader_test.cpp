@@ -1,0 +1,122 @@
+// CDR decoding of JointState from bytes made by hand: alignment counted from after the
+// encapsulation header, both byte orders, and malformed data.
+#include "bag/cdr_reader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstring>
+#include <vector>
+
+#include "bag/joint_state_message.h"
+
+namespace urdfsnap::bag {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+// Builds CDR bytes field by field the way the specification lays them out.
+class CdrBytes {
+ public:
+  explicit CdrBytes(bool big_endian = false) : big_endian_(big_endian) {
+    bytes_ = {0x00, std::uint8_t(big_endian ? 0x00 : 0x01), 0x00, 0x00};
+  }
+  CdrBytes& U32(std::uint32_t value) { return Put(value); }
+  CdrBytes& F64(double value) { return Put(value); }
+  CdrBytes& Str(const std::string& text) {
+    U32(static_cast<std::uint32_t>(text.size() + 1));
+    bytes_.insert(bytes_.end(), text.begin(), text.end());
+    bytes_.push_back(0);
+    return *this;
+  }
+  CdrBytes& Raw(std::vector<std::uint8_t> raw) {
+    bytes_.insert(bytes_.end(), raw.begin(), raw.end());
+    return *this;
+  }
+  const std::vector<std::uint8_t>& bytes() const { return bytes_; }
+
+ private:
+  template <typename T>
+  CdrBytes& Put(T value) {
+    while ((bytes_.size() - 4) % sizeof(T) != 0) bytes_.push_back(0xEE);  // padding
+    std::uint8_t raw[sizeof(T)];
+    std::memcpy(raw, &value, sizeof(T));
+    if (big_endian_) std::reverse(raw, raw + sizeof(T));
+    bytes_.insert(bytes_.end(), raw, raw + sizeof(T));
+    return *this;
+  }
+  bool big_endian_;
+  std::vector<std::uint8_t> bytes_;
+};
+
+CdrBytes JointStateBytes(bool big_endian) {
+  CdrBytes cdr(big_endian);
+  // stamp, frame_id "base" (4 + 5 bytes: the name list's length then needs 3 bytes of padding)
+  cdr.U32(12).U32(345).Str("base");
+  cdr.U32(2).Str("shoulder").Str("elbow");
+  // the position count ends at a 4-aligned offset; the doubles are padded to 8 from the origin
+  cdr.U32(2).F64(0.25).F64(-1.5);
+  cdr.U32(0).U32(0);  // velocity, effort
+  return cdr;
+}
+
+TEST(CdrReaderTest, DecodesAJointStateInEitherByteOrder) {
+  for (const bool big_endian : {false, true}) {
+    SCOPED_TRACE(big_endian ? "big-endian" : "little-endian");
+    JointStateMessage message;
+    DecodeJointState(JointStateBytes(big_endian).bytes(), message);
+    EXPECT_EQ(message.stamp_sec, 12);
+    EXPECT_EQ(message.stamp_nanosec, 345u);
+    EXPECT_EQ(message.StampNanoseconds(), 12'000'000'345);
+    EXPECT_THAT(message.names, ElementsAre("shoulder", "elbow"));
+    EXPECT_THAT(message.positions, ElementsAre(0.25, -1.5));
+  }
+}
+
+TEST(CdrReaderTest, AlignsFromThePayloadNotTheBuffer) {
+  // a uint32 then a float64: 4 bytes of padding between them, counted from after the header
+  const std::vector<std::uint8_t> bytes = CdrBytes().U32(7).F64(2.0).bytes();
+  ASSERT_EQ(bytes.size(), 4u + 4 + 4 + 8);
+  CdrReader reader(bytes);
+  EXPECT_EQ(reader.Uint32(), 7u);
+  EXPECT_EQ(reader.Float64(), 2.0);
+}
+
+struct BadCdr {
+  const char* name;
+  std::vector<std::uint8_t> bytes;
+  const char* error;
+};
+
+class BadCdrTest : public ::testing::TestWithParam<BadCdr> {};
+
+TEST_P(BadCdrTest, IsACdrErrorSayingWhat) {
+  JointStateMessage message;
+  try {
+    DecodeJointState(GetParam().bytes, message);
+    FAIL() << "decoded";
+  } catch (const CdrError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(GetParam().error));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Malformed, BadCdrTest,
+    ::testing::Values(
+        BadCdr{"empty", {}, "too short for CDR's encapsulation header"},
+        BadCdr{"xcdr2", {0x00, 0x07, 0x00, 0x00, 1, 0, 0, 0}, "0x0007 (XCDR2)"},
+        BadCdr{"parameter_list", {0x00, 0x03, 0x00, 0x00}, "PL_CDR"},
+        BadCdr{"cut_in_stamp", CdrBytes().U32(1).Raw({1, 2}).bytes(), "runs past the message's end"},
+        BadCdr{"string_without_nul", CdrBytes().U32(1).U32(2).U32(3).Raw({'a', 'b', 'c'}).bytes(),
+               "no terminating NUL"},
+        BadCdr{"huge_name_count", CdrBytes().U32(1).U32(2).Str("").U32(0x7fffffff).bytes(),
+               "a sequence of 2147483647 elements"},
+        BadCdr{"huge_position_count",
+               CdrBytes().U32(1).U32(2).Str("").U32(1).Str("a").U32(100).F64(1).bytes(),
+               "a sequence of 100 elements"}),
+    [](const ::testing::TestParamInfo<BadCdr>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace urdfsnap::bag

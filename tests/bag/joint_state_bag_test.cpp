@@ -1,0 +1,110 @@
+// ReadJointStates: the values the TypeScript writer stored, split rosbag2 folders, and the errors
+// for a bag without the topic, with another type on it, without messages or with a bad message.
+#include "bag/joint_state_bag.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "test_bags.h"
+
+namespace urdfsnap::bag {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using test::TestBag;
+
+class JointStateValuesTest : public ::testing::TestWithParam<std::pair<const char*, int>> {};
+
+TEST_P(JointStateValuesTest, AreTheOnesWritten) {
+  const auto [file, count] = GetParam();
+  std::uint64_t expected_index = 1;
+  ReadJointStates(TestBag(file), kDefaultJointStateTopic, [&](const BagJointState& state) {
+    const int i = static_cast<int>(state.index) - 1;
+    ASSERT_EQ(state.index, expected_index++);
+    EXPECT_EQ(state.message.StampNanoseconds(), test::BagStamp(i));
+    EXPECT_EQ(state.log_time, static_cast<std::uint64_t>(test::BagStamp(i)) + 1'000'000u);
+    EXPECT_THAT(state.message.names, ElementsAre("shoulder", "elbow", "wrist"));
+    EXPECT_THAT(state.message.positions,
+                ElementsAre(test::BagShoulder(i), test::BagElbow(i), test::kBagWrist));
+  });
+  EXPECT_EQ(expected_index, static_cast<std::uint64_t>(count) + 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bags, JointStateValuesTest,
+                         ::testing::Values(std::pair("joint_states_none.mcap", 200),
+                                           std::pair("joint_states_zstd.mcap", 200),
+                                           std::pair("joint_states_lz4.mcap", 200),
+                                           std::pair("joint_states_unchunked.mcap", 200),
+                                           std::pair("joint_states_big_endian.mcap", 50)),
+                         [](const auto& info) {
+                           std::string name = info.param.first;
+                           return name.substr(0, name.find('.'));
+                         });
+
+TEST(JointStateBagTest, ReadsBothPublishersOfATopic) {
+  int arm = 0, gripper = 0;
+  ReadJointStates(TestBag("two_publishers.mcap"), "/joint_states", [&](const BagJointState& state) {
+    (state.message.names.size() == 1 ? gripper : arm) += 1;
+  });
+  EXPECT_EQ(arm, 100);
+  EXPECT_EQ(gripper, 50);
+}
+
+TEST(JointStateBagTest, ReadsTheFilesOfASplitBagFolderInTheirNumberedOrder) {
+  EXPECT_EQ(BagFiles(TestBag("split_bag")).back(), TestBag("split_bag/split_bag_10.mcap"));
+  std::vector<std::int64_t> stamps;
+  ReadJointStates(TestBag("split_bag"), "/joint_states", [&](const BagJointState& state) {
+    stamps.push_back(state.message.StampNanoseconds());
+  });
+  ASSERT_EQ(stamps.size(), 55u);
+  for (int i = 0; i < 55; ++i) EXPECT_EQ(stamps[i], test::BagStamp(i));
+}
+
+struct BadTopic {
+  const char* file;
+  const char* topic;
+  const char* error;
+};
+
+class BadTopicTest : public ::testing::TestWithParam<BadTopic> {};
+
+TEST_P(BadTopicTest, IsOneErrorSayingWhy) {
+  try {
+    ReadJointStates(TestBag(GetParam().file), GetParam().topic, [](const BagJointState&) {});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr(GetParam().error));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Topics, BadTopicTest,
+    ::testing::Values(
+        BadTopic{"no_joint_states.mcap", "/joint_states",
+                 "no topic '/joint_states' in the bag; its topics are: /camera/image_raw "
+                 "(sensor_msgs/msg/Image), /tf (tf2_msgs/msg/TFMessage)"},
+        BadTopic{"joint_states_zstd.mcap", "/arm/joint_states", "no topic '/arm/joint_states'"},
+        BadTopic{"wrong_type.mcap", "/joint_states",
+                 "topic '/joint_states' carries 'std_msgs/msg/String' messages"},
+        BadTopic{"no_messages.mcap", "/joint_states", "no messages on '/joint_states'"},
+        BadTopic{"garbage_message.mcap", "/joint_states",
+                 "garbage_message.mcap: message 1 on '/joint_states' (log time 0.000000005 s): "
+                 "not a JointState in CDR: "}),
+    [](const auto& info) {
+      std::string name = info.param.file;
+      return name.substr(0, name.find('.')) + (info.index == 1 ? "_other_topic" : "");
+    });
+
+TEST(JointStateBagTest, AFolderWithoutMcapFilesIsAnError) {
+  try {
+    BagFiles(URDFSNAP_SOURCE_DIR "/tests/bag");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("a folder without .mcap files"));
+  }
+}
+
+}  // namespace
+}  // namespace urdfsnap::bag

@@ -1,0 +1,321 @@
+// Writes the MCAP bags urdfsnap's tests read, with the MCAP project's own TypeScript writer
+// (@mcap/core) and Foxglove's ROS 2 CDR serialiser, so that urdfsnap's reader is checked against
+// implementations it shares no code with. Also writes corrupt and truncated variants.
+// usage: node make_test_bags.mjs OUT_DIR [--large] [--seeds SEED_DIR]
+//   --large: also a ~200 MB bag for benchmarks; --seeds: also tiny bags (a few messages, one with
+//   its chunk CRC zeroed so that mutations inside the chunk get past the check) as fuzz seeds, e.g.
+//   into tests/fuzz/mcap_reader/
+//
+// Every JointState bag carries message i (i = 0, 1, ...) with header.stamp = 1700000000 s + i * 10 ms,
+// log time = stamp + 1 ms, and positions shoulder = 0.01 i, elbow = -0.02 i, wrist = 0.5 (the C++
+// tests recompute these).
+import { mkdirSync, writeFileSync, readFileSync } from "node:fs";
+import { join } from "node:path";
+import { McapWriter } from "@mcap/core";
+import { CdrWriter, EncapsulationKind } from "@foxglove/cdr";
+import { ros2humble } from "@foxglove/rosmsg-msgs-common";
+import { MessageWriter } from "@foxglove/rosmsg2-serialization";
+import zstd from "@foxglove/wasm-zstd";
+import lz4 from "lz4js";
+
+const out = process.argv[2];
+if (!out) throw new Error("usage: node make_test_bags.mjs OUT_DIR [--large]");
+const large = process.argv.includes("--large");
+const seeds = process.argv.includes("--seeds") ? process.argv[process.argv.indexOf("--seeds") + 1] : null;
+mkdirSync(out, { recursive: true });
+await zstd.isLoaded;
+
+const kStartSec = 1700000000;
+const kJoints = ["shoulder", "elbow", "wrist"];
+
+// the schema text rosbag2 stores for sensor_msgs/msg/JointState (ros2msg, dependencies appended)
+const kJointStateSchema = `std_msgs/Header header
+string[] name
+float64[] position
+float64[] velocity
+float64[] effort
+================================================================================
+MSG: std_msgs/Header
+builtin_interfaces/Time stamp
+string frame_id
+================================================================================
+MSG: builtin_interfaces/Time
+int32 sec
+uint32 nanosec
+`;
+
+const jointStateWriter = new MessageWriter([
+  ros2humble["sensor_msgs/JointState"],
+  ros2humble["std_msgs/Header"],
+  ros2humble["builtin_interfaces/Time"],
+]);
+
+function stampOf(i) {
+  const nanos = i * 10_000_000;
+  return { sec: kStartSec + Math.floor(nanos / 1e9), nanosec: nanos % 1e9 };
+}
+
+function jointState(i, { names = kJoints, positions, stamp = stampOf(i) } = {}) {
+  return {
+    header: { stamp, frame_id: "" },
+    name: names,
+    position: positions ?? [0.01 * i, -0.02 * i, 0.5].slice(0, names.length),
+    velocity: [],
+    effort: [],
+  };
+}
+
+// A JointState in big-endian CDR, written field by field with @foxglove/cdr.
+function bigEndianJointState(message) {
+  const writer = new CdrWriter({ kind: EncapsulationKind.CDR_BE });
+  writer.int32(message.header.stamp.sec).uint32(message.header.stamp.nanosec);
+  writer.string(message.header.frame_id);
+  writer.sequenceLength(message.name.length);
+  for (const name of message.name) writer.string(name);
+  writer.float64Array(message.position, true);
+  writer.float64Array([], true).float64Array([], true);
+  return writer.data;
+}
+
+function nanos({ sec, nanosec }) {
+  return BigInt(sec) * 1_000_000_000n + BigInt(nanosec);
+}
+
+class BufferWritable {
+  chunks = [];
+  size = 0n;
+  async write(buffer) {
+    this.chunks.push(Buffer.from(buffer));
+    this.size += BigInt(buffer.byteLength);
+  }
+  position() {
+    return this.size;
+  }
+  bytes() {
+    return Buffer.concat(this.chunks);
+  }
+}
+
+const compressors = {
+  none: undefined,
+  zstd: (data) => ({ compression: "zstd", compressedData: zstd.compress(data, 3) }),
+  lz4: (data) => ({ compression: "lz4", compressedData: lz4.compress(data) }),
+};
+
+// Writes a bag from `channels` ({topic, schema: {name, encoding, data}|null, encoding}) and
+// `messages` ([channelIndex, logTime (bigint), data]) and returns its bytes.
+async function writeBag({ channels, messages, compression = "zstd", chunkSize = 4096, useChunks = true }) {
+  const writable = new BufferWritable();
+  const writer = new McapWriter({
+    writable,
+    useChunks,
+    chunkSize,
+    compressChunk: compressors[compression],
+  });
+  await writer.start({ profile: "ros2", library: "urdfsnap test bags (@mcap/core)" });
+  const ids = [];
+  for (const channel of channels) {
+    const schemaId = channel.schema ? await writer.registerSchema(channel.schema) : 0;
+    ids.push(
+      await writer.registerChannel({
+        schemaId,
+        topic: channel.topic,
+        messageEncoding: channel.encoding ?? "cdr",
+        metadata: new Map([["offered_qos_profiles", ""]]),
+      }),
+    );
+  }
+  let sequence = 0;
+  for (const [channel, logTime, data] of messages) {
+    await writer.addMessage({ channelId: ids[channel], sequence: sequence++, logTime, publishTime: logTime, data });
+  }
+  await writer.end();
+  return writable.bytes();
+}
+
+const jointStateChannel = {
+  topic: "/joint_states",
+  schema: { name: "sensor_msgs/msg/JointState", encoding: "ros2msg", data: new TextEncoder().encode(kJointStateSchema) },
+};
+const tfChannel = {
+  topic: "/tf",
+  schema: { name: "tf2_msgs/msg/TFMessage", encoding: "ros2msg", data: new Uint8Array() },
+};
+const cameraChannel = {
+  topic: "/camera/image_raw",
+  schema: { name: "sensor_msgs/msg/Image", encoding: "ros2msg", data: new Uint8Array() },
+};
+
+// `count` joint states interleaved with /tf and camera messages (opaque bytes: they are skipped)
+function robotMessages(count, { encode = (m) => jointStateWriter.writeMessage(m), cameraBytes = 3000 } = {}) {
+  const messages = [];
+  for (let i = 0; i < count; ++i) {
+    const message = jointState(i);
+    const logTime = nanos(message.header.stamp) + 1_000_000n;
+    messages.push([1, logTime - 500_000n, new Uint8Array(64).fill(i & 255)]);
+    messages.push([0, logTime, encode(message)]);
+    if (i % 10 === 0) messages.push([2, logTime + 100n, new Uint8Array(cameraBytes).fill(i & 255)]);
+  }
+  return messages;
+}
+
+const robotChannels = [jointStateChannel, tfChannel, cameraChannel];
+const bags = {};
+for (const compression of ["none", "zstd", "lz4"]) {
+  bags[`joint_states_${compression}.mcap`] = await writeBag({
+    channels: robotChannels,
+    messages: robotMessages(200),
+    compression,
+  });
+}
+bags["joint_states_unchunked.mcap"] = await writeBag({
+  channels: robotChannels,
+  messages: robotMessages(200),
+  useChunks: false,
+});
+bags["joint_states_big_endian.mcap"] = await writeBag({
+  channels: robotChannels,
+  messages: robotMessages(50, { encode: bigEndianJointState }),
+});
+// two publishers on /joint_states: the arm (three joints) and a gripper (one), as on real robots
+{
+  const messages = [];
+  for (let i = 0; i < 100; ++i) {
+    const arm = jointState(i);
+    messages.push([0, nanos(arm.header.stamp), jointStateWriter.writeMessage(arm)]);
+    if (i % 2 === 0) {
+      const gripper = jointState(i, { names: ["finger"], positions: [0.001 * i] });
+      messages.push([1, nanos(gripper.header.stamp) + 1n, jointStateWriter.writeMessage(gripper)]);
+    }
+  }
+  bags["two_publishers.mcap"] = await writeBag({ channels: [jointStateChannel, jointStateChannel], messages });
+}
+bags["no_joint_states.mcap"] = await writeBag({
+  channels: [tfChannel, cameraChannel],
+  messages: [[0, 1n, new Uint8Array(8)], [1, 2n, new Uint8Array(8)]],
+});
+bags["wrong_type.mcap"] = await writeBag({
+  channels: [{ topic: "/joint_states", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new Uint8Array() } }],
+  messages: [[0, 1n, new Uint8Array(8)]],
+});
+bags["no_messages.mcap"] = await writeBag({ channels: robotChannels, messages: [[1, 1n, new Uint8Array(8)]] });
+// header.stamp left at zero by the publisher: times come from the log times
+{
+  const messages = [];
+  for (let i = 0; i < 20; ++i) {
+    const message = jointState(i, { stamp: { sec: 0, nanosec: 0 } });
+    messages.push([0, nanos(stampOf(i)) + 1_000_000n, jointStateWriter.writeMessage(message)]);
+  }
+  bags["zero_stamps.mcap"] = await writeBag({ channels: robotChannels, messages });
+}
+// bad content: a NaN position in message 7, a stamp going back in message 5, lists of different
+// lengths in message 3
+function badBag(index, change) {
+  const messages = [];
+  for (let i = 0; i < 10; ++i) {
+    const message = jointState(i);
+    if (i === index) change(message);
+    messages.push([0, nanos(stampOf(i)) + 1_000_000n, jointStateWriter.writeMessage(message)]);
+  }
+  return writeBag({ channels: robotChannels, messages });
+}
+bags["nan_position.mcap"] = await badBag(7, (m) => (m.position[1] = NaN));
+bags["time_goes_back.mcap"] = await badBag(5, (m) => (m.header.stamp = stampOf(2)));
+bags["length_mismatch.mcap"] = await badBag(3, (m) => (m.position = [1, 2]));
+bags["garbage_message.mcap"] = await writeBag({
+  channels: robotChannels,
+  messages: [[0, 5n, new Uint8Array([0, 1, 0, 0, 1, 2, 3])]],
+});
+
+// corrupt and truncated variants of the zstd, lz4 and uncompressed bags
+const kMagicBytes = 8;
+function firstChunkOffset(bytes) {
+  let at = kMagicBytes;
+  while (bytes[at] !== 0x06) at += 1 + 8 + Number(bytes.readBigUInt64LE(at + 1));
+  return at;
+}
+function patched(bytes, change) {
+  const copy = Buffer.from(bytes);
+  change(copy);
+  return copy;
+}
+// chunk fields after the 9-byte record prefix: start time 8, end time 8, uncompressed_size 8,
+// uncompressed_crc 4, compression (4 + n), records (8 + n)
+function chunkRecordsOffset(bytes, chunk) {
+  const compressionLength = bytes.readUInt32LE(chunk + 9 + 28);
+  return chunk + 9 + 32 + compressionLength + 8;
+}
+const zstdBag = bags["joint_states_zstd.mcap"];
+const lz4Bag = bags["joint_states_lz4.mcap"];
+const plainBag = bags["joint_states_none.mcap"];
+const zstdChunk = firstChunkOffset(zstdBag);
+bags["corrupt_truncated_half.mcap"] = zstdBag.subarray(0, Math.floor(zstdBag.length / 2));
+bags["corrupt_truncated_header.mcap"] = zstdBag.subarray(0, 20);
+bags["corrupt_cut_without_end.mcap"] = zstdBag.subarray(0, zstdChunk);
+bags["corrupt_zstd_data.mcap"] = patched(zstdBag, (b) => {
+  const records = chunkRecordsOffset(b, zstdChunk);
+  for (let k = 20; k < 60; ++k) b[records + k] ^= 0x5a;
+});
+bags["corrupt_lz4_data.mcap"] = patched(lz4Bag, (b) => {
+  const records = chunkRecordsOffset(b, firstChunkOffset(b));
+  for (let k = 10; k < 40; ++k) b[records + k] ^= 0xff;
+});
+bags["corrupt_crc.mcap"] = patched(plainBag, (b) => {
+  const records = chunkRecordsOffset(b, firstChunkOffset(b));
+  b[records + 200] ^= 0x01;
+});
+bags["corrupt_huge_chunk.mcap"] = patched(zstdBag, (b) => b.writeBigUInt64LE(1n << 40n, zstdChunk + 9 + 16));
+bags["corrupt_huge_record.mcap"] = patched(zstdBag, (b) => b.writeBigUInt64LE(1n << 62n, zstdChunk + 1));
+bags["corrupt_unknown_compression.mcap"] = patched(zstdBag, (b) => b.write("zztd", zstdChunk + 9 + 32));
+bags["corrupt_no_header.mcap"] = patched(zstdBag, (b) => (b[kMagicBytes] = 0x03));
+bags["corrupt_not_mcap.mcap"] = Buffer.from("time,shoulder\n0,1\n");
+bags["corrupt_empty.mcap"] = Buffer.alloc(0);
+
+for (const [name, bytes] of Object.entries(bags)) writeFileSync(join(out, name), bytes);
+
+// a rosbag2 folder split into eleven files (NAME_0.mcap ... NAME_10.mcap), 5 messages each
+const split = join(out, "split_bag");
+mkdirSync(split, { recursive: true });
+for (let part = 0; part <= 10; ++part) {
+  const messages = [];
+  for (let i = part * 5; i < part * 5 + 5; ++i) {
+    const message = jointState(i);
+    messages.push([0, nanos(message.header.stamp), jointStateWriter.writeMessage(message)]);
+  }
+  writeFileSync(join(split, `split_bag_${part}.mcap`), await writeBag({ channels: [jointStateChannel], messages }));
+}
+writeFileSync(join(split, "metadata.yaml"), "rosbag2_bagfile_information:\n  storage_identifier: mcap\n");
+
+// for benchmarks: 1 kHz joint states for 60 s beside 30 Hz camera images of 640x480 RGB
+if (large) {
+  const messages = [];
+  const image = new Uint8Array(640 * 480 * 3);
+  for (let k = 0; k < image.length; ++k) image[k] = (k * 7 + (k >> 10)) & 255;
+  for (let i = 0; i < 60000; ++i) {
+    const message = jointState(i / 10);
+    message.header.stamp = { sec: kStartSec + Math.floor(i / 1000), nanosec: (i % 1000) * 1e6 };
+    const logTime = nanos(message.header.stamp);
+    messages.push([0, logTime, jointStateWriter.writeMessage(message)]);
+    if (i % 33 === 0) messages.push([2, logTime + 1n, image]);
+  }
+  writeFileSync(
+    join(out, "large_zstd.mcap"),
+    await writeBag({ channels: robotChannels, messages, chunkSize: 4 << 20 }),
+  );
+}
+if (seeds) {
+  mkdirSync(seeds, { recursive: true });
+  const tiny = {};
+  for (const compression of ["none", "zstd", "lz4"]) {
+    tiny[`seed_${compression}.mcap`] = await writeBag({ channels: robotChannels, messages: robotMessages(4, { cameraBytes: 16 }), compression });
+  }
+  tiny["seed_unchunked.mcap"] = await writeBag({ channels: robotChannels, messages: robotMessages(4, { cameraBytes: 16 }), useChunks: false });
+  tiny["seed_big_endian.mcap"] = await writeBag({ channels: robotChannels, messages: robotMessages(3, { encode: bigEndianJointState, cameraBytes: 16 }) });
+  tiny["seed_none_no_crc.mcap"] = patched(tiny["seed_none.mcap"], (b) => b.writeUInt32LE(0, firstChunkOffset(b) + 9 + 24));
+  // bare CDR JointStates behind a byte that is not MCAP's first (the fuzz target decodes those alone)
+  const state = jointState(3, { names: ["shoulder", "elbow"], positions: [0.25, -1.5] });
+  tiny["seed_cdr_le.bin"] = Buffer.concat([Buffer.from("C"), jointStateWriter.writeMessage(state)]);
+  tiny["seed_cdr_be.bin"] = Buffer.concat([Buffer.from("C"), bigEndianJointState(state)]);
+  for (const [name, bytes] of Object.entries(tiny)) writeFileSync(join(seeds, name), bytes);
+}
+console.log(`make_test_bags: wrote ${Object.keys(bags).length} bags and a split bag to ${out}`);
