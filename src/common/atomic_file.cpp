@@ -1,5 +1,5 @@
 // Temporary-file-and-rename writing of whole files (PNG, and the HTML/XML/URDF other commands
-// write).
+// write) and of streams (AtomicFile: videos, written by urdfsnap or by libavformat).
 #include "common/atomic_file.h"
 
 #include <fcntl.h>
@@ -58,19 +58,37 @@ int WriteAll(int fd, std::string_view bytes) {
 }  // namespace
 
 void WriteFileAtomically(const std::string& path, std::string_view bytes) {
-  std::string temp_path;
-  const int fd = CreateTemporary(path, temp_path);
+  AtomicFile file(path);
+  file.Write(bytes);
+  file.Commit();
+}
+
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  fd_ = CreateTemporary(path_, temp_path_);
+}
+
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  if (fd_ >= 0) ::close(fd_);
+  ::unlink(temp_path_.c_str());
+}
+
+void AtomicFile::Write(std::string_view bytes) {
+  if (const int error_number = WriteAll(fd_, bytes); error_number != 0) {
+    ThrowWriteError(path_, error_number);
+  }
+}
+
+void AtomicFile::Commit() {
   // no fsync: the promise is "never a partial file after a failed run", not durability across a
-  // power cut, and fsync would cost more than encoding the image
-  int error_number = WriteAll(fd, bytes);
-  if (::close(fd) != 0 && error_number == 0) error_number = errno;
-  if (error_number == 0 && std::rename(temp_path.c_str(), path.c_str()) != 0) {
+  // power cut, and fsync would cost more than encoding an image
+  int error_number = ::close(fd_) != 0 ? errno : 0;
+  fd_ = -1;
+  if (error_number == 0 && std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
     error_number = errno;
   }
-  if (error_number != 0) {
-    ::unlink(temp_path.c_str());
-    ThrowWriteError(path, error_number);
-  }
+  if (error_number != 0) ThrowWriteError(path_, error_number);  // the destructor unlinks
+  committed_ = true;
 }
 
 }  // namespace urdfsnap

@@ -97,5 +97,43 @@ TEST_F(AtomicFileTest, FailedWriteLeavesExistingFile) {
   EXPECT_EQ(Listing(), std::vector<std::string>{"out.png"});
 }
 
+TEST_F(AtomicFileTest, StreamAppearsOnlyWhenCommitted) {
+  WriteFileAtomically(Path("out.mp4"), "old");
+  {
+    AtomicFile file(Path("out.mp4"));
+    file.Write("first ");
+    file.Write("second");
+    EXPECT_EQ(Contents(Path("out.mp4")), "old");
+    EXPECT_EQ(Listing().size(), 2u);  // the old file and the temporary one beside it
+    file.Commit();
+  }
+  EXPECT_EQ(Contents(Path("out.mp4")), "first second");
+  EXPECT_EQ(Listing(), std::vector<std::string>{"out.mp4"});
+}
+
+TEST_F(AtomicFileTest, StreamAbandonedWithoutCommitLeavesNothing) {
+  {
+    AtomicFile file(Path("out.gif"));
+    file.Write("half a gif");
+  }
+  EXPECT_TRUE(Listing().empty());
+}
+
+TEST_F(AtomicFileTest, StreamWrittenByAnotherOpenerOfTheTemporaryFile) {
+  AtomicFile file(Path("out.webm"));
+  std::ofstream(file.temp_path(), std::ios::binary) << "written by a library";
+  file.Commit();
+  EXPECT_EQ(Contents(Path("out.webm")), "written by a library");
+}
+
+TEST_F(AtomicFileTest, StreamIntoAMissingFolderFailsAtOnce) {
+  try {
+    AtomicFile file(Path("no/such/out.mp4"));
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), Path("no/such/out.mp4") + ": cannot write: No such file or directory");
+  }
+}
+
 }  // namespace
 }  // namespace urdfsnap
