@@ -9,9 +9,12 @@ packages=(
   liburdfdom-dev libeigen3-dev libosmesa6-dev libstb-dev zlib1g-dev
   libtinyxml2-dev libexpat1-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libbenchmark-dev fonts-liberation libfreetype-dev python3
-  libcpp-httplib-dev chromium nodejs npm
+  libcpp-httplib-dev chromium nodejs
   libzstd-dev liblz4-dev
 )
+# npm only for the test tooling, and only when no npm is on the PATH (NodeSource's nodejs package
+# brings its own, which Debian's npm package would conflict with)
+command -v npm >/dev/null || packages+=(npm)
 if [ "${1:-}" = "--sanitizers" ]; then packages+=(clang libclang-rt-14-dev llvm-14); fi
 missing=()
 for p in "${packages[@]}"; do

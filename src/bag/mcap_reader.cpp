@@ -324,14 +324,23 @@ void McapReader::ReadMessages(const std::function<bool(const McapChannel&)>& wan
                               const std::function<void(const McapMessage&)>& on_message) {
   State& state = *state_;
   const State::Callbacks callbacks{wanted, on_message};
+  // after the data section, the summary's copies of the Schema and Channel records: they also name
+  // channels that have no messages (writers put those in the data section only with a message)
+  bool in_summary = false;
   while (true) {
     const std::uint64_t at = state.file.offset();
     const auto [opcode, length] = state.NextRecord();
     const auto where = [at] { return "at byte " + std::to_string(at); };
+    if (opcode == kFooter) return;
+    if (in_summary && opcode != kSchema && opcode != kChannel) {
+      state.file.Skip(length);
+      continue;
+    }
     switch (opcode) {
       case kDataEnd:
-      case kFooter:  // a file without a Data End record but complete otherwise
-        return;
+        in_summary = true;
+        state.file.Skip(length);
+        break;
       case kChunk:
         state.ReadChunk(at, length, callbacks);
         break;

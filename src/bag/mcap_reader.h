@@ -2,8 +2,9 @@
 // format's specification (mcap.dev/spec): magic, Header, then the data section's records in file
 // order, with chunks of Schema/Channel/Message records uncompressed or compressed with zstd or lz4.
 // It streams: one chunk is in memory at a time (its declared size checked against a limit before
-// anything is allocated), records the caller does not want are skipped unread, the summary section
-// is not needed. Truncated and corrupt files end in an Error naming the byte where it went wrong.
+// anything is allocated), records the caller does not want are skipped unread; of the summary
+// section only the channel list is read. Truncated and corrupt files end in an Error naming the
+// byte where it went wrong.
 #pragma once
 
 #include <cstdint>
@@ -50,9 +51,10 @@ class McapReader {
   McapReader(const McapReader&) = delete;
   McapReader& operator=(const McapReader&) = delete;
 
-  // Reads the data section from its start to the Data End record. Each channel is passed to
-  // `wanted` once, when its Channel record is first met; each message on a wanted channel then goes
-  // to `on_message`. Exceptions from the callbacks pass through. Throws urdfsnap::Error for a
+  // Reads the data section from its start to the Data End record, then the summary's Schema and
+  // Channel records. Each channel is passed to `wanted` once, when its Channel record is first met
+  // (a channel without messages may appear only in the summary); each message on a wanted channel
+  // then goes to `on_message`. Exceptions from the callbacks pass through. Throws urdfsnap::Error for a
   // truncated or corrupt file ("path: corrupt MCAP: chunk at byte 4096: ...").
   void ReadMessages(const std::function<bool(const McapChannel&)>& wanted,
                     const std::function<void(const McapMessage&)>& on_message);

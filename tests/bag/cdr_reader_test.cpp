@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bag/joint_state_message.h"
+#include "support/error_text.h"
 
 namespace urdfsnap::bag {
 namespace {
@@ -94,12 +95,8 @@ class BadCdrTest : public ::testing::TestWithParam<BadCdr> {};
 
 TEST_P(BadCdrTest, IsACdrErrorSayingWhat) {
   JointStateMessage message;
-  try {
-    DecodeJointState(GetParam().bytes, message);
-    FAIL() << "decoded";
-  } catch (const CdrError& e) {
-    EXPECT_THAT(e.what(), HasSubstr(GetParam().error));
-  }
+  EXPECT_THAT(test::ErrorText<CdrError>([&] { DecodeJointState(GetParam().bytes, message); }),
+              HasSubstr(GetParam().error));
 }
 
 INSTANTIATE_TEST_SUITE_P(

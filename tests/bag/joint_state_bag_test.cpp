@@ -5,7 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "common/error.h"
+#include "support/error_text.h"
 #include "test_bags.h"
 
 namespace urdfsnap::bag {
@@ -71,12 +71,11 @@ struct BadTopic {
 class BadTopicTest : public ::testing::TestWithParam<BadTopic> {};
 
 TEST_P(BadTopicTest, IsOneErrorSayingWhy) {
-  try {
-    ReadJointStates(TestBag(GetParam().file), GetParam().topic, [](const BagJointState&) {});
-    FAIL() << "no error";
-  } catch (const Error& e) {
-    EXPECT_THAT(e.what(), HasSubstr(GetParam().error));
-  }
+  EXPECT_THAT(test::ErrorText([] {
+                ReadJointStates(TestBag(GetParam().file), GetParam().topic,
+                                [](const BagJointState&) {});
+              }),
+              HasSubstr(GetParam().error));
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -98,12 +97,8 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(JointStateBagTest, AFolderWithoutMcapFilesIsAnError) {
-  try {
-    BagFiles(URDFSNAP_SOURCE_DIR "/tests/bag");
-    FAIL();
-  } catch (const Error& e) {
-    EXPECT_THAT(e.what(), HasSubstr("a folder without .mcap files"));
-  }
+  EXPECT_THAT(test::ErrorText([] { BagFiles(URDFSNAP_SOURCE_DIR "/tests/bag"); }),
+              HasSubstr("a folder without .mcap files"));
 }
 
 }  // namespace

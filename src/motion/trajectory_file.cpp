@@ -1,0 +1,75 @@
+// ReadTrajectory: format detection, bounded reading of text files, dispatch to the readers.
+#include "motion/trajectory_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+
+#include "common/error.h"
+#include "common/file_reading.h"
+#include "motion/bag_trajectory.h"
+#include "motion/csv_trajectory.h"
+#include "motion/ros_message_trajectory.h"
+
+namespace urdfsnap::motion {
+namespace {
+
+constexpr char kMcapMagic[] = "\x89MCAP0\r\n";
+
+std::string Extension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
+}  // namespace
+
+TrajectoryFormat DetectTrajectoryFormat(const std::string& path, std::string_view head) {
+  const std::string extension = Extension(path);
+  if (extension == ".csv") return TrajectoryFormat::kCsv;
+  if (extension == ".yaml" || extension == ".yml" || extension == ".json") {
+    return TrajectoryFormat::kRosMessages;
+  }
+  if (extension == ".mcap" || head.starts_with(std::string_view(kMcapMagic, 8))) {
+    return TrajectoryFormat::kBag;
+  }
+  const std::string_view first_line = head.substr(0, head.find('\n'));
+  if (first_line.find(',') != std::string_view::npos &&
+      first_line.find(':') == std::string_view::npos) {
+    return TrajectoryFormat::kCsv;
+  }
+  return TrajectoryFormat::kRosMessages;
+}
+
+Trajectory ParseTrajectoryText(std::string_view text, const std::string& path) {
+  if (DetectTrajectoryFormat(path, text) == TrajectoryFormat::kCsv) {
+    return ParseCsvTrajectory(text, path);
+  }
+  return ParseRosMessageTrajectory(text, path);
+}
+
+Trajectory ReadTrajectory(const std::string& path, const TrajectoryOptions& options,
+                          Warnings& warnings) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    return ReadBagTrajectory(path, options.topic, warnings);  // a rosbag2 folder
+  }
+  char head[256];
+  std::ifstream file(path, std::ios::binary);
+  file.read(head, sizeof head);
+  const std::string_view head_text(head, static_cast<std::size_t>(file.gcount()));
+  if (DetectTrajectoryFormat(path, head_text) == TrajectoryFormat::kBag) {
+    return ReadBagTrajectory(path, options.topic, warnings);
+  }
+  std::string text;
+  try {
+    text = ReadFileBounded(path);
+  } catch (const FileReadError& e) {
+    throw Error(SourceLocation{path, 0}, std::string("cannot read the trajectory: ") + e.what());
+  }
+  return ParseTrajectoryText(text, path);
+}
+
+}  // namespace urdfsnap::motion
