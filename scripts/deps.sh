@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages urdfsnap needs to build and test, only those that are missing.
+# Installs the Debian packages urdfsnap needs to build and test, only those that are missing
+# (chromium, ffmpeg's command-line tools and nodejs/npm are for the tests only).
 # Idempotent and quiet when everything is already there. Needs root (apt-get).
 # usage: scripts/deps.sh [--sanitizers]   (--sanitizers: also clang and libFuzzer, for the
 # sanitizer build and scripts/fuzz.sh; the normal build does not need them)
@@ -11,6 +12,7 @@ packages=(
   googletest libgtest-dev libbenchmark-dev fonts-liberation libfreetype-dev python3
   libcpp-httplib-dev chromium nodejs
   libzstd-dev liblz4-dev
+  libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev libavutil-dev libwebp-dev ffmpeg
 )
 # npm only for the test tooling, and only when no npm is on the PATH (NodeSource's nodejs package
 # brings its own, which Debian's npm package would conflict with)

@@ -42,15 +42,18 @@ int CreateTemporary(const std::string& path, std::string& temp_path) {
   ThrowWriteError(path, EEXIST);
 }
 
-// Writes all of `bytes`; returns 0 or the errno of the failure.
-int WriteAll(int fd, std::string_view bytes) {
+// Writes all of `bytes` at the file position, or at `offset` when it is given; returns 0 or the
+// errno of the failure.
+int WriteAll(int fd, std::string_view bytes, std::int64_t offset = -1) {
   while (!bytes.empty()) {
-    const ssize_t written = ::write(fd, bytes.data(), bytes.size());
+    const ssize_t written = offset < 0 ? ::write(fd, bytes.data(), bytes.size())
+                                       : ::pwrite(fd, bytes.data(), bytes.size(), offset);
     if (written < 0) {
       if (errno == EINTR) continue;
       return errno;
     }
     bytes.remove_prefix(static_cast<std::size_t>(written));
+    if (offset >= 0) offset += written;
   }
   return 0;
 }
@@ -75,6 +78,13 @@ AtomicFile::~AtomicFile() {
 
 void AtomicFile::Write(std::string_view bytes) {
   if (const int error_number = WriteAll(fd_, bytes); error_number != 0) {
+    ThrowWriteError(path_, error_number);
+  }
+}
+
+void AtomicFile::WriteAt(std::uint64_t offset, std::string_view bytes) {
+  if (const int error_number = WriteAll(fd_, bytes, static_cast<std::int64_t>(offset));
+      error_number != 0) {
     ThrowWriteError(path_, error_number);
   }
 }

@@ -4,6 +4,7 @@
 // that opens the temporary file by its name (AtomicFile: videos of any length).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -29,6 +30,8 @@ class AtomicFile {
 
   // Appends `bytes` to the temporary file.
   void Write(std::string_view bytes);
+  // Overwrites bytes already written at `offset` (a header whose sizes are known only at the end).
+  void WriteAt(std::uint64_t offset, std::string_view bytes);
   // Closes the temporary file and renames it to path(); on failure removes it and throws.
   void Commit();
 

@@ -1,12 +1,11 @@
 // ReadTrajectory: format detection, bounded reading of text files, dispatch to the readers.
 #include "motion/trajectory_file.h"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 
 #include "common/error.h"
+#include "common/file_extension.h"
 #include "common/file_reading.h"
 #include "motion/bag_trajectory.h"
 #include "motion/csv_trajectory.h"
@@ -17,17 +16,10 @@ namespace {
 
 constexpr char kMcapMagic[] = "\x89MCAP0\r\n";
 
-std::string Extension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return extension;
-}
-
 }  // namespace
 
 TrajectoryFormat DetectTrajectoryFormat(const std::string& path, std::string_view head) {
-  const std::string extension = Extension(path);
+  const std::string extension = LowerCaseExtension(path);
   if (extension == ".csv") return TrajectoryFormat::kCsv;
   if (extension == ".yaml" || extension == ".yml" || extension == ".json") {
     return TrajectoryFormat::kRosMessages;

@@ -102,7 +102,8 @@ TEST_F(AtomicFileTest, StreamAppearsOnlyWhenCommitted) {
   {
     AtomicFile file(Path("out.mp4"));
     file.Write("first ");
-    file.Write("second");
+    file.Write("xecond");
+    file.WriteAt(6, "s");
     EXPECT_EQ(Contents(Path("out.mp4")), "old");
     EXPECT_EQ(Listing().size(), 2u);  // the old file and the temporary one beside it
     file.Commit();

@@ -1,0 +1,60 @@
+// Writing an animation's frames to a file, the kind chosen by the output's extension: .mp4 (H.264),
+// .webm (VP9), .gif, .webp (animated), or a numbered PNG sequence such as frames/%05d.png. One
+// interface for all: open with the size and frame rate, write the frames in order, finish. Every
+// encoder streams (memory does not grow with the number of frames), writes to temporary files and
+// moves the result into place only when finished, so an error never leaves a partial output.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "common/warnings.h"
+#include "image/image.h"
+
+namespace urdfsnap::video {
+
+enum class OutputFormat {
+  kMp4,          // H.264 (libx264), yuv420p, BT.709, moov atom first ("faststart") for browsers
+  kWebm,         // VP9 (libvpx), yuv420p, constant quality
+  kGif,          // one 256-colour palette for the whole animation, dithered
+  kWebp,         // animated WebP (libwebp's animation encoder), lossy
+  kPngSequence,  // one PNG per frame, named by a printf pattern ("%05d"), numbered from 0
+};
+
+// The format for `path`: a pattern with one %d conversion and a .png extension is a PNG sequence,
+// else the extension decides (case-insensitive). Throws Error naming the path and the formats
+// urdfsnap writes for anything else.
+OutputFormat OutputFormatOf(const std::string& path);
+
+// "MP4 (H.264)", "PNG sequence", ...: for messages.
+const char* OutputFormatName(OutputFormat format);
+
+struct EncoderSettings {
+  int width = 0;     // pixels, as the frames will be
+  int height = 0;
+  double fps = 30;   // frames per second, > 0
+};
+
+class FrameEncoder {
+ public:
+  // Destroyed without Finish (after an error), an encoder removes what it had written.
+  virtual ~FrameEncoder() = default;
+
+  // Encodes the next frame, which must have the size the encoder was opened with. Throws Error
+  // (a wrong size, a failing write such as a full disk).
+  virtual void Write(const image::Image& frame) = 0;
+
+  // Completes the output and moves it into place. Throws Error; then nothing is left behind.
+  virtual void Finish() = 0;
+};
+
+// Opens the encoder for `path` (see OutputFormatOf), creating its temporary output at once so that
+// an unwritable place is reported before any frame is made. Throws Error for an unknown format, a
+// size the format cannot hold (odd sides for MP4's 4:2:0 chroma, WebP's 16383 pixels), a bad
+// frame rate, or an output that cannot be written. Advice that is no error (GIF frame delays
+// browsers do not honour) goes to `warnings`.
+std::unique_ptr<FrameEncoder> OpenFrameEncoder(const std::string& path,
+                                               const EncoderSettings& settings,
+                                               Warnings& warnings);
+
+}  // namespace urdfsnap::video

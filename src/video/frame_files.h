@@ -1,0 +1,39 @@
+// A sequence of numbered files, one per frame (PNG frames, and depth or label images beside them):
+// each file written atomically, and every file of the sequence removed again when it is abandoned
+// before Finish, so that a failed run leaves no partial sequence.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "video/frame_pattern.h"
+
+namespace urdfsnap::video {
+
+class FrameFiles {
+ public:
+  // Parses `pattern` (see FramePattern) and checks that its first file can be written (making and
+  // removing a temporary file beside it). Throws Error "NAME: cannot write: ..." otherwise.
+  explicit FrameFiles(const std::string& pattern);
+  // Removes the files written so far unless Finish was called.
+  ~FrameFiles();
+
+  FrameFiles(const FrameFiles&) = delete;
+  FrameFiles& operator=(const FrameFiles&) = delete;
+
+  // Writes the next frame's file (number count()). Throws Error naming the file.
+  void Write(std::string_view bytes);
+  // Keeps the files.
+  void Finish() { finished_ = true; }
+
+  std::int64_t count() const { return count_; }
+  const FramePattern& pattern() const { return pattern_; }
+
+ private:
+  FramePattern pattern_;
+  std::int64_t count_ = 0;
+  bool finished_ = false;
+};
+
+}  // namespace urdfsnap::video
