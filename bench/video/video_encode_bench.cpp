@@ -16,6 +16,7 @@
 
 #include "common/error.h"
 #include "synthetic_frames.h"
+#include "video/encode_frames.h"
 #include "video/frame_encoder.h"
 
 namespace {
@@ -41,14 +42,17 @@ std::string OutputPath(const std::string& format) {
   return (folder / (format == "png" ? "frames/%05d.png" : "robot." + format)).string();
 }
 
-// Encodes `count` frames to `format`; returns the output's size in bytes (the sequence's total for
-// PNG frames).
+// Encodes `count` frames to `format` as `animate` will: frames made on this thread (here copied,
+// standing in for the renderer), encoded on a worker (video::EncodeFrames). Returns the output's
+// size in bytes (the sequence's total for PNG frames).
 std::uintmax_t Encode(const std::string& format, int count) {
   urdfsnap::Warnings warnings;
   const std::string path = OutputPath(format);
   const auto encoder = urdfsnap::video::OpenFrameEncoder(path, {kWidth, kHeight, 30}, warnings);
-  for (int i = 0; i < count; ++i) encoder->Write(Frames()[i % kDistinctFrames]);
-  encoder->Finish();
+  urdfsnap::video::EncodeFrames(
+      count,
+      [](std::int64_t k, urdfsnap::image::Image& frame) { frame = Frames()[k % kDistinctFrames]; },
+      *encoder);
   if (format != "png") return fs::file_size(path);
   std::uintmax_t total = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(path).parent_path())) {

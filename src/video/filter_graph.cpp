@@ -58,7 +58,12 @@ FilterGraph::FilterGraph(const std::vector<Source>& sources, const std::string& 
 FilterGraph::~FilterGraph() { avfilter_graph_free(&graph_); }
 
 void FilterGraph::Push(int index, const AVFrame* frame) {
-  CheckAv(av_buffersrc_write_frame(sources_[index], frame), output_, "cannot filter a frame");
+  // PUSH runs the filters now: without it the source queues every frame until the sink is asked,
+  // and the palette pass, which asks only at the end, held the whole animation in memory (9 GB
+  // for 10,000 frames of 640x480); KEEP_REF leaves the caller's frame as it was
+  CheckAv(av_buffersrc_add_frame_flags(sources_[index], const_cast<AVFrame*>(frame),
+                                       AV_BUFFERSRC_FLAG_PUSH | AV_BUFFERSRC_FLAG_KEEP_REF),
+          output_, "cannot filter a frame");
 }
 
 bool FilterGraph::Pull(AVFrame* frame) {

@@ -30,7 +30,8 @@ class FilterGraph {
   FilterGraph(const FilterGraph&) = delete;
   FilterGraph& operator=(const FilterGraph&) = delete;
 
-  // Gives `frame` to source `index` (the graph copies what it keeps); nullptr ends its stream.
+  // Gives `frame` to source `index` and runs the filters on it at once (the graph copies what it
+  // keeps, so memory does not grow when nothing is pulled); nullptr ends the source's stream.
   void Push(int index, const AVFrame* frame);
   // Takes the next frame out into `frame` (unreferenced first); false when none is ready.
   bool Pull(AVFrame* frame);

@@ -2,7 +2,7 @@
 // (@mcap/core) and Foxglove's ROS 2 CDR serialiser, so that urdfsnap's reader is checked against
 // implementations it shares no code with. Also writes corrupt and truncated variants.
 // usage: node make_test_bags.mjs OUT_DIR [--large] [--seeds SEED_DIR]
-//   --large: also a ~200 MB bag for benchmarks; --seeds: also tiny bags (a few messages, one with
+//   --large: also a ~350 MB bag for benchmarks; --seeds: also tiny bags (a few messages, one with
 //   its chunk CRC zeroed so that mutations inside the chunk get past the check) as fuzz seeds, e.g.
 //   into tests/fuzz/mcap_reader/
 //
@@ -286,17 +286,26 @@ for (let part = 0; part <= 10; ++part) {
 }
 writeFileSync(join(split, "metadata.yaml"), "rosbag2_bagfile_information:\n  storage_identifier: mcap\n");
 
-// for benchmarks: 1 kHz joint states for 60 s beside 30 Hz camera images of 640x480 RGB
+// for benchmarks: 1 kHz joint states for 20 s beside 30 Hz 640x480 RGB camera images whose noise
+// lets zstd shrink them only by about a third, as real images (553 MB of messages, ~350 MB file)
 if (large) {
   const messages = [];
-  const image = new Uint8Array(640 * 480 * 3);
-  for (let k = 0; k < image.length; ++k) image[k] = (k * 7 + (k >> 10)) & 255;
-  for (let i = 0; i < 60000; ++i) {
+  const images = [];
+  let seed = 12345;
+  for (let n = 0; n < 4; ++n) {
+    const image = new Uint8Array(640 * 480 * 3);
+    for (let k = 0; k < image.length; ++k) {
+      seed = (seed * 1103515245 + 12345) >>> 0;
+      image[k] = ((k % 1920) >> 3) + ((seed >>> 16) & 31);
+    }
+    images.push(image);
+  }
+  for (let i = 0; i < 20000; ++i) {
     const message = jointState(i / 10);
     message.header.stamp = { sec: kStartSec + Math.floor(i / 1000), nanosec: (i % 1000) * 1e6 };
     const logTime = nanos(message.header.stamp);
     messages.push([0, logTime, jointStateWriter.writeMessage(message)]);
-    if (i % 33 === 0) messages.push([2, logTime + 1n, image]);
+    if (i % 33 === 0) messages.push([2, logTime + 1n, images[(i / 33) % 4]]);
   }
   writeFileSync(
     join(out, "large_zstd.mcap"),
