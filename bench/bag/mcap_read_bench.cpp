@@ -1,9 +1,10 @@
 // Reading speed of a large bag: 20 s of JointStates at 1 kHz beside 30 Hz 640x480 camera images in
 // zstd chunks of 4 MiB (553 MB of messages in a file of about 350 MB), written by the MCAP
-// project's writer (scripts/make-test-bags.sh DIR --large). Reports MB/s of file and messages/s for the JointState
-// topic alone (bag::ReadJointStates: decompress, skip the images, decode CDR) and for the whole
-// trajectory (motion::ReadTrajectory), and the peak memory, which stays that of one chunk.
-// usage: urdfsnap_mcap_bench [BAG]   (default: build/bench-bags/large_zstd.mcap, made if missing)
+// project's writer (scripts/make-test-bags.sh DIR --large). Reports MB/s of file and messages/s for
+// the JointState topic alone (bag::ReadJointStates: decompress, skip the images, decode CDR) and
+// for the whole trajectory (motion::ReadTrajectory), and the peak memory, which stays that of one
+// chunk. usage: urdfsnap_mcap_bench [BAG]   (default: build/bench-bags/large_zstd.mcap, made if
+// missing)
 #include <sys/resource.h>
 
 #include <chrono>
@@ -34,8 +35,8 @@ int main(int argc, char** argv) {
   using namespace urdfsnap;
   std::string bag = argc > 1 ? argv[1] : URDFSNAP_BINARY_DIR "/bench-bags/large_zstd.mcap";
   if (argc == 1 && !std::filesystem::exists(bag)) {
-    const std::string make = URDFSNAP_SOURCE_DIR "/scripts/make-test-bags.sh " URDFSNAP_BINARY_DIR
-                                                 "/bench-bags --large";
+    const std::string make =
+        URDFSNAP_SOURCE_DIR "/scripts/make-test-bags.sh " URDFSNAP_BINARY_DIR "/bench-bags --large";
     std::fprintf(stderr, "urdfsnap_mcap_bench: making %s (%s)\n", bag.c_str(), make.c_str());
     if (std::system(make.c_str()) != 0) return 2;
   }

@@ -1,8 +1,8 @@
 // Encoding speed of each animation format at 640x480 (frames/s, as Google Benchmark's items per
 // second) on synthetic robot-like frames (tests/video/synthetic_frames.h), the frames made before
 // timing, with the processor time of all the encoder's threads per frame (cpu_ms_per_frame: the
-// cost on a shared machine, where wall time depends on the load); and, with --memory, the peak memory of a whole encode of N frames, to show that it does
-// not grow with the animation's length.
+// cost on a shared machine, where wall time depends on the load); and, with --memory, the peak
+// memory of a whole encode of N frames, to show that it does not grow with the animation's length.
 // usage: urdfsnap_video_bench [Google Benchmark flags]
 //        urdfsnap_video_bench --memory FORMAT FRAMES   (FORMAT: mp4 webm gif webp png)
 #include <benchmark/benchmark.h>
@@ -83,9 +83,13 @@ void BM_Encode(benchmark::State& state, const std::string& format) {
 
 BENCHMARK_CAPTURE(BM_Encode, png, std::string("png"))->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Encode, mp4, std::string("mp4"))->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_Encode, webm, std::string("webm"))->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Encode, webm, std::string("webm"))
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_Encode, gif, std::string("gif"))->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_Encode, webp, std::string("webp"))->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Encode, webp, std::string("webp"))
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 

@@ -11,11 +11,20 @@ constexpr std::size_t kHeaderBytes = 4;
 
 std::string RepresentationName(std::uint16_t id) {
   switch (id) {
-    case 0x0002: case 0x0003: return "PL_CDR (a parameter list)";
-    case 0x0006: case 0x0007: return "XCDR2";
-    case 0x0008: case 0x0009: return "delimited XCDR2";
-    case 0x000a: case 0x000b: return "PL_CDR2 (a parameter list)";
-    default: return "unknown";
+    case 0x0002:
+    case 0x0003:
+      return "PL_CDR (a parameter list)";
+    case 0x0006:
+    case 0x0007:
+      return "XCDR2";
+    case 0x0008:
+    case 0x0009:
+      return "delimited XCDR2";
+    case 0x000a:
+    case 0x000b:
+      return "PL_CDR2 (a parameter list)";
+    default:
+      return "unknown";
   }
 }
 
@@ -47,9 +56,9 @@ CdrReader::CdrReader(std::span<const std::uint8_t> data) : data_(data) {
   if (representation > 0x0001) {
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%04x", representation);
-    throw CdrError("CDR representation " + std::string(hex) + " (" +
-                   RepresentationName(representation) +
-                   "), which urdfsnap does not read; ROS 2 messages are plain CDR (0x0000, 0x0001)");
+    throw CdrError(
+        "CDR representation " + std::string(hex) + " (" + RepresentationName(representation) +
+        "), which urdfsnap does not read; ROS 2 messages are plain CDR (0x0000, 0x0001)");
   }
   big_endian_ = representation == 0x0000;
   offset_ = kHeaderBytes;

@@ -22,9 +22,7 @@ struct ChunkDecompressor::Contexts {
 
 namespace {
 
-std::string Declared(std::size_t size) {
-  return "the declared " + std::to_string(size) + " bytes";
-}
+std::string Declared(std::size_t size) { return "the declared " + std::to_string(size) + " bytes"; }
 
 void DecompressZstd(ZSTD_DCtx* context, std::span<const std::uint8_t> in,
                     std::span<std::uint8_t> out) {
@@ -53,7 +51,8 @@ void DecompressLz4(LZ4F_dctx* context, std::span<const std::uint8_t> in,
     std::size_t out_size = out.size() - out_at;
     hint = LZ4F_decompress(context, out.data() + out_at, &out_size, in.data() + in_at, &in_size,
                            nullptr);
-    if (LZ4F_isError(hint)) throw std::runtime_error(std::string("lz4: ") + LZ4F_getErrorName(hint));
+    if (LZ4F_isError(hint))
+      throw std::runtime_error(std::string("lz4: ") + LZ4F_getErrorName(hint));
     in_at += in_size;
     out_at += out_size;
     // no progress with input left: the output is full

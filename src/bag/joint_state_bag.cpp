@@ -36,8 +36,8 @@ std::string TopicList(const std::map<std::string, std::string>& topics) {
 
 }  // namespace
 
-std::string DescribeMessage(const std::string& file, const std::string& topic,
-                            std::uint64_t index, std::uint64_t log_time) {
+std::string DescribeMessage(const std::string& file, const std::string& topic, std::uint64_t index,
+                            std::uint64_t log_time) {
   char time[48];
   std::snprintf(time, sizeof time, "%" PRIu64 ".%09" PRIu64, log_time / 1'000'000'000,
                 log_time % 1'000'000'000);

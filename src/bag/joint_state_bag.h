@@ -26,8 +26,8 @@ struct BagJointState {
 
 // "bag.mcap: message 12 on '/joint_states' (log time 1712345678.123456789 s)": where a message
 // is, for errors about its content.
-std::string DescribeMessage(const std::string& file, const std::string& topic,
-                            std::uint64_t index, std::uint64_t log_time);
+std::string DescribeMessage(const std::string& file, const std::string& topic, std::uint64_t index,
+                            std::uint64_t log_time);
 
 // The MCAP files of `path`: itself for a file; for a folder (what `ros2 bag record` makes) its
 // .mcap files ordered by the number at the end of their names. Throws Error for a folder without

@@ -18,10 +18,21 @@ namespace {
 
 // record opcodes (mcap.dev/spec "Records")
 enum Opcode : std::uint8_t {
-  kHeader = 0x01, kFooter = 0x02, kSchema = 0x03, kChannel = 0x04, kMessage = 0x05,
-  kChunk = 0x06, kMessageIndex = 0x07, kChunkIndex = 0x08, kAttachment = 0x09,
-  kAttachmentIndex = 0x0A, kStatistics = 0x0B, kMetadata = 0x0C, kMetadataIndex = 0x0D,
-  kSummaryOffset = 0x0E, kDataEnd = 0x0F,
+  kHeader = 0x01,
+  kFooter = 0x02,
+  kSchema = 0x03,
+  kChannel = 0x04,
+  kMessage = 0x05,
+  kChunk = 0x06,
+  kMessageIndex = 0x07,
+  kChunkIndex = 0x08,
+  kAttachment = 0x09,
+  kAttachmentIndex = 0x0A,
+  kStatistics = 0x0B,
+  kMetadata = 0x0C,
+  kMetadataIndex = 0x0D,
+  kSummaryOffset = 0x0E,
+  kDataEnd = 0x0F,
 };
 
 constexpr std::uint8_t kMagic[8] = {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'};
@@ -33,10 +44,12 @@ constexpr const char* kRecoverHint =
     " (was the recording cut short? `mcap recover` can often repair such a file)";
 
 std::string OpcodeName(std::uint8_t opcode) {
-  static constexpr const char* kNames[] = {
-      "", "Header", "Footer", "Schema", "Channel", "Message", "Chunk", "Message Index",
-      "Chunk Index", "Attachment", "Attachment Index", "Statistics", "Metadata",
-      "Metadata Index", "Summary Offset", "Data End"};
+  static constexpr const char* kNames[] = {"",           "Header",           "Footer",
+                                           "Schema",     "Channel",          "Message",
+                                           "Chunk",      "Message Index",    "Chunk Index",
+                                           "Attachment", "Attachment Index", "Statistics",
+                                           "Metadata",   "Metadata Index",   "Summary Offset",
+                                           "Data End"};
   if (opcode >= 1 && opcode <= kDataEnd) return kNames[opcode];
   return "unknown (opcode " + std::to_string(opcode) + ")";
 }
@@ -96,8 +109,8 @@ struct McapReader::State {
     const std::uint8_t opcode = reader.U8("opcode");
     const std::uint64_t length = reader.U64("record length");
     if (length > file.remaining()) {
-      Truncated("the " + OpcodeName(opcode) + " record at byte " + std::to_string(at) +
-                " claims " + std::to_string(length) + " bytes but the file ends " +
+      Truncated("the " + OpcodeName(opcode) + " record at byte " + std::to_string(at) + " claims " +
+                std::to_string(length) + " bytes but the file ends " +
                 std::to_string(file.remaining()) + " bytes later");
     }
     return {opcode, length};
@@ -232,8 +245,9 @@ struct McapReader::State {
     }
     for (const std::uint64_t size : {uncompressed_size, records_length}) {
       if (size > kMaxChunkBytes) {
-        Corrupt(chunk + " declares " + std::to_string(size) + " bytes, more than urdfsnap's limit of " +
-                std::to_string(kMaxChunkBytes >> 20) + " MiB for a chunk");
+        Corrupt(chunk + " declares " + std::to_string(size) +
+                " bytes, more than urdfsnap's limit of " + std::to_string(kMaxChunkBytes >> 20) +
+                " MiB for a chunk");
       }
     }
     if (compression.empty() && records_length != uncompressed_size) {
@@ -262,9 +276,7 @@ struct McapReader::State {
     ByteReader reader(records);
     while (reader.remaining() > 0) {
       const std::size_t offset = reader.offset();
-      const auto where = [&] {
-        return "at offset " + std::to_string(offset) + " of " + chunk;
-      };
+      const auto where = [&] { return "at offset " + std::to_string(offset) + " of " + chunk; };
       if (reader.remaining() < kRecordPrefixBytes) Corrupt("a record " + where() + " is cut off");
       const std::uint8_t opcode = reader.U8("opcode");
       const std::uint64_t record_length = reader.U64("length");
@@ -292,8 +304,9 @@ McapReader::McapReader(const std::string& path) : state_(std::make_unique<State>
   file.ReadAt(0, magic, std::min<std::uint64_t>(sizeof magic, file.size()));
   if (std::memcmp(magic, kMagic, sizeof kMagic) != 0) {
     if (std::memcmp(magic, "SQLite f", 8) == 0) {
-      throw Error(path + ": a SQLite rosbag2 file (.db3); urdfsnap reads MCAP bags (convert it "
-                         "with `ros2 bag convert`, or record with `--storage mcap`)");
+      throw Error(path +
+                  ": a SQLite rosbag2 file (.db3); urdfsnap reads MCAP bags (convert it "
+                  "with `ros2 bag convert`, or record with `--storage mcap`)");
     }
     throw Error(path + ": not an MCAP file (it does not start with MCAP's magic bytes)");
   }

@@ -1,10 +1,10 @@
-// Reading messages from an MCAP file (the container of ROS 2 bags since Iron), written here from the
-// format's specification (mcap.dev/spec): magic, Header, then the data section's records in file
-// order, with chunks of Schema/Channel/Message records uncompressed or compressed with zstd or lz4.
-// It streams: one chunk is in memory at a time (its declared size checked against a limit before
-// anything is allocated), records the caller does not want are skipped unread; of the summary
-// section only the channel list is read. Truncated and corrupt files end in an Error naming the
-// byte where it went wrong.
+// Reading messages from an MCAP file (the container of ROS 2 bags since Iron), written here from
+// the format's specification (mcap.dev/spec): magic, Header, then the data section's records in
+// file order, with chunks of Schema/Channel/Message records uncompressed or compressed with zstd or
+// lz4. It streams: one chunk is in memory at a time (its declared size checked against a limit
+// before anything is allocated), records the caller does not want are skipped unread; of the
+// summary section only the channel list is read. Truncated and corrupt files end in an Error naming
+// the byte where it went wrong.
 #pragma once
 
 #include <cstdint>
@@ -54,8 +54,9 @@ class McapReader {
   // Reads the data section from its start to the Data End record, then the summary's Schema and
   // Channel records. Each channel is passed to `wanted` once, when its Channel record is first met
   // (a channel without messages may appear only in the summary); each message on a wanted channel
-  // then goes to `on_message`. Exceptions from the callbacks pass through. Throws urdfsnap::Error for a
-  // truncated or corrupt file ("path: corrupt MCAP: chunk at byte 4096: ...").
+  // then goes to `on_message`. Exceptions from the callbacks pass through. Throws urdfsnap::Error
+  // for a truncated or corrupt file ("path: corrupt MCAP: the chunk at byte 4096: ..."). Call it
+  // once.
   void ReadMessages(const std::function<bool(const McapChannel&)>& wanted,
                     const std::function<void(const McapMessage&)>& on_message);
 

@@ -28,9 +28,9 @@ Trajectory ReadBagTrajectory(const std::string& path, const std::string& topic,
     if (*by_log_time && state.log_time > std::uint64_t{std::numeric_limits<std::int64_t>::max()}) {
       throw Error(where() + ": a log time beyond the year 2262");
     }
-    tracks.Add(*by_log_time ? static_cast<std::int64_t>(state.log_time)
-                            : state.message.StampNanoseconds(),
-               state.message.names, state.message.positions, where);
+    tracks.Add(
+        *by_log_time ? static_cast<std::int64_t>(state.log_time) : state.message.StampNanoseconds(),
+        state.message.names, state.message.positions, where);
   });
   return std::move(tracks).Finish();
 }

@@ -14,7 +14,6 @@ namespace urdfsnap::motion {
 // its messages) every message is timed by its log time instead, with a warning. Throws Error for
 // every problem of the bag and for messages JointStateTracks refuses, naming the message's number
 // on the topic and its log time.
-Trajectory ReadBagTrajectory(const std::string& path, const std::string& topic,
-                             Warnings& warnings);
+Trajectory ReadBagTrajectory(const std::string& path, const std::string& topic, Warnings& warnings);
 
 }  // namespace urdfsnap::motion

@@ -85,8 +85,9 @@ Trajectory ParseCsvTrajectory(std::string_view text, const std::string& path) {
     std::vector<double> values(fields.size());
     for (std::size_t c = 0; c < fields.size(); ++c) {
       if (!ParseNumber(fields[c], values[c])) {
-        const std::string column =
-            static_cast<int>(c) == time_column ? "time" : trajectory.tracks[track_of_column[c]].joint;
+        const std::string column = static_cast<int>(c) == time_column
+                                       ? "time"
+                                       : trajectory.tracks[track_of_column[c]].joint;
         throw Error(where, "column '" + column + "': expected a finite number, got '" +
                                std::string(fields[c]) + "'");
       }
@@ -110,8 +111,10 @@ Trajectory ParseCsvTrajectory(std::string_view text, const std::string& path) {
     }
     ++rows;
   }
-  if (track_of_column.empty()) throw Error(SourceLocation{path, 0}, "no header row (expected time,<joint>,<joint>...)");
-  if (rows == 0) throw Error(SourceLocation{path, 0}, "no rows after the header: an empty trajectory");
+  if (track_of_column.empty())
+    throw Error(SourceLocation{path, 0}, "no header row (expected time,<joint>,<joint>...)");
+  if (rows == 0)
+    throw Error(SourceLocation{path, 0}, "no rows after the header: an empty trajectory");
   return trajectory;
 }
 

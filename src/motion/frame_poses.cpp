@@ -43,7 +43,8 @@ FramePoses::FramePoses(const model::Robot& robot, const Trajectory& trajectory,
     double worst_excess = 0;
     std::size_t worst = 0;
     for (std::size_t i = 0; i < track.positions.size(); ++i) {
-      const double excess = std::max(joint.lower - track.positions[i], track.positions[i] - joint.upper);
+      const double excess =
+          std::max(joint.lower - track.positions[i], track.positions[i] - joint.upper);
       if (excess > worst_excess) {
         worst_excess = excess;
         worst = i;

@@ -26,9 +26,9 @@ class FramePoses {
              bool clamp, Warnings& warnings);
 
   // One position per robot.joints() index (radians or metres) at trajectory time `t` (seconds, or
-  // rows for a table without times; see FramePlan::TrajectoryTime). Warnings that ResolveJointPositions
-  // gives for the pose (a fixed joint named, a mimic joint overridden) go to `warnings`, which keeps
-  // each message once.
+  // rows for a table without times; see FramePlan::TrajectoryTime). Warnings that
+  // ResolveJointPositions gives for the pose (a fixed joint named, a mimic joint overridden) go to
+  // `warnings`, which keeps each message once.
   std::vector<double> At(double t, Warnings& warnings) const;
 
  private:

@@ -61,8 +61,7 @@ void JointStateTracks::Add(std::int64_t time_ns, std::span<const std::string> na
     if (!track.times.empty() && time_ns <= last_time_ns_[t]) {
       if (time_ns == last_time_ns_[t] && positions[i] == track.positions.back()) continue;
       throw Error(where() + ": joint '" + joint + "' at " + Seconds(from_origin_ns) +
-                  " is not after its previous sample at " +
-                  Seconds(last_time_ns_[t] - origin_ns) +
+                  " is not after its previous sample at " + Seconds(last_time_ns_[t] - origin_ns) +
                   " (times must increase)");
     }
     last_time_ns_[t] = time_ns;

@@ -40,7 +40,7 @@ class JointStateTracks {
  private:
   Trajectory trajectory_;
   std::unordered_map<std::string, std::size_t> track_of_joint_;
-  std::vector<std::int64_t> last_time_ns_;  // per track, for the increasing-time check
+  std::vector<std::int64_t> last_time_ns_;    // per track, for the increasing-time check
   std::vector<std::size_t> seen_in_message_;  // per track: the message that last named it
   std::size_t messages_ = 0;
   std::optional<std::int64_t> origin_ns_;

@@ -136,8 +136,8 @@ std::int64_t AddJointTrajectory(const Reader& reader, const YAML::Node& trajecto
     const std::vector<double> positions =
         reader.Numbers(reader.Field(point, "positions", "the point"), "positions");
     if (positions.empty()) reader.Fail(point, "a point without positions");
-    end_ns = offset_ns + reader.Time(reader.Field(point, "time_from_start", "the point"),
-                                     "time_from_start");
+    end_ns = offset_ns +
+             reader.Time(reader.Field(point, "time_from_start", "the point"), "time_from_start");
     tracks.Add(end_ns, names, positions, [&] { return reader.Where(point).ToString(); });
   }
   return end_ns;
@@ -168,8 +168,8 @@ Trajectory ParseRosMessageTrajectory(std::string_view text, const std::string& p
       reader.Fail(node, "a trajectory after JointState messages");
     }
     if (kind == Kind::kNone) {
-      tracks.emplace(path, wanted == Kind::kTrajectory ? std::optional<std::int64_t>(0)
-                                                       : std::nullopt);
+      tracks.emplace(path,
+                     wanted == Kind::kTrajectory ? std::optional<std::int64_t>(0) : std::nullopt);
     }
     kind = wanted;
   };

@@ -5,8 +5,7 @@
 
 namespace urdfsnap::video {
 
-void EncodeFrames(std::int64_t count,
-                  const std::function<void(std::int64_t, image::Image&)>& make,
+void EncodeFrames(std::int64_t count, const std::function<void(std::int64_t, image::Image&)>& make,
                   FrameEncoder& encoder, stream::ProgressBar* progress, std::size_t depth) {
   stream::RunPipeline<image::Image>(count, depth, make,
                                     [&](std::int64_t k, const image::Image& frame) {

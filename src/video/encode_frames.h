@@ -18,8 +18,7 @@ namespace urdfsnap::video {
 // are encoded and finished at the end. At most `depth` made frames wait for the encoder. The first
 // error from either side stops both and is rethrown; the encoder is then left unfinished, so its
 // destruction removes what it wrote.
-void EncodeFrames(std::int64_t count,
-                  const std::function<void(std::int64_t, image::Image&)>& make,
+void EncodeFrames(std::int64_t count, const std::function<void(std::int64_t, image::Image&)>& make,
                   FrameEncoder& encoder, stream::ProgressBar* progress = nullptr,
                   std::size_t depth = 4);
 

@@ -31,7 +31,8 @@ void LogCallback(void* avcl, int level, const char* format, va_list arguments) {
 
 // FFmpeg leaves the options it did not know in the dictionary: a misspelt one is a bug here.
 void CheckAllUsed(AvOptions& options, const std::string& output, const char* user) {
-  if (const AVDictionaryEntry* unknown = av_dict_get(*options.get(), "", nullptr, AV_DICT_IGNORE_SUFFIX)) {
+  if (const AVDictionaryEntry* unknown =
+          av_dict_get(*options.get(), "", nullptr, AV_DICT_IGNORE_SUFFIX)) {
     throw Error(output + ": " + user + " has no option '" + unknown->key + "'");
   }
 }

@@ -55,7 +55,8 @@ class AvOptions {
 };
 
 // A frame of `format` and size with its own buffers (throws Error for `output` on failure).
-AvPointer<AVFrame> MakeFrame(AVPixelFormat format, int width, int height, const std::string& output);
+AvPointer<AVFrame> MakeFrame(AVPixelFormat format, int width, int height,
+                             const std::string& output);
 
 // An encoder and the muxer that writes what it makes to `file`'s temporary file.
 class EncodedOutput {

@@ -18,16 +18,16 @@ FilterGraph::FilterGraph(const std::vector<Source>& sources, const std::string& 
     : output_(std::move(output)), graph_(avfilter_graph_alloc()) {
   TakeOverFfmpegLog();
   if (!graph_) throw std::bad_alloc();
-  graph_->nb_threads = 1;  // the encoders' threads and the renderer have the cores
+  graph_->nb_threads = 1;            // the encoders' threads and the renderer have the cores
   AVFilterInOut* outputs = nullptr;  // the sources' open pads, as the description sees them
   for (std::size_t i = 0; i < sources.size(); ++i) {
     const Source& source = sources[i];
     const std::string name = "in" + std::to_string(i);
-    const std::string arguments =
-        "video_size=" + std::to_string(source.width) + "x" + std::to_string(source.height) +
-        ":pix_fmt=" + av_get_pix_fmt_name(source.format) + ":time_base=" +
-        std::to_string(source.time_base.num) + "/" + std::to_string(source.time_base.den) +
-        ":pixel_aspect=1/1";
+    const std::string arguments = "video_size=" + std::to_string(source.width) + "x" +
+                                  std::to_string(source.height) +
+                                  ":pix_fmt=" + av_get_pix_fmt_name(source.format) +
+                                  ":time_base=" + std::to_string(source.time_base.num) + "/" +
+                                  std::to_string(source.time_base.den) + ":pixel_aspect=1/1";
     AVFilterContext* context = nullptr;
     CheckAv(avfilter_graph_create_filter(&context, avfilter_get_by_name("buffer"), name.c_str(),
                                          arguments.c_str(), nullptr, graph_),
@@ -48,7 +48,8 @@ FilterGraph::FilterGraph(const std::vector<Source>& sources, const std::string& 
   inputs->filter_ctx = sink_;
   inputs->pad_idx = 0;
   inputs->next = nullptr;
-  const int parsed = avfilter_graph_parse_ptr(graph_, description.c_str(), &inputs, &outputs, nullptr);
+  const int parsed =
+      avfilter_graph_parse_ptr(graph_, description.c_str(), &inputs, &outputs, nullptr);
   avfilter_inout_free(&inputs);
   avfilter_inout_free(&outputs);
   CheckAv(parsed, output_, "cannot build the filters '" + description + "'");

@@ -30,11 +30,16 @@ OutputFormat OutputFormatOf(const std::string& path) {
 
 const char* OutputFormatName(OutputFormat format) {
   switch (format) {
-    case OutputFormat::kMp4: return "MP4 (H.264)";
-    case OutputFormat::kWebm: return "WebM (VP9)";
-    case OutputFormat::kGif: return "GIF";
-    case OutputFormat::kWebp: return "animated WebP";
-    case OutputFormat::kPngSequence: return "PNG sequence";
+    case OutputFormat::kMp4:
+      return "MP4 (H.264)";
+    case OutputFormat::kWebm:
+      return "WebM (VP9)";
+    case OutputFormat::kGif:
+      return "GIF";
+    case OutputFormat::kWebp:
+      return "animated WebP";
+    case OutputFormat::kPngSequence:
+      return "PNG sequence";
   }
   return "";
 }
@@ -54,10 +59,14 @@ std::unique_ptr<FrameEncoder> OpenFrameEncoder(const std::string& path,
   }
   switch (format) {
     case OutputFormat::kMp4:
-    case OutputFormat::kWebm: return OpenVideoEncoder(path, format, settings);
-    case OutputFormat::kGif: return OpenGifEncoder(path, settings, warnings);
-    case OutputFormat::kWebp: return OpenWebpEncoder(path, settings);
-    case OutputFormat::kPngSequence: return OpenPngSequenceEncoder(path, settings);
+    case OutputFormat::kWebm:
+      return OpenVideoEncoder(path, format, settings);
+    case OutputFormat::kGif:
+      return OpenGifEncoder(path, settings, warnings);
+    case OutputFormat::kWebp:
+      return OpenWebpEncoder(path, settings);
+    case OutputFormat::kPngSequence:
+      return OpenPngSequenceEncoder(path, settings);
   }
   return nullptr;
 }

@@ -30,9 +30,9 @@ OutputFormat OutputFormatOf(const std::string& path);
 const char* OutputFormatName(OutputFormat format);
 
 struct EncoderSettings {
-  int width = 0;     // pixels, as the frames will be
+  int width = 0;  // pixels, as the frames will be
   int height = 0;
-  double fps = 30;   // frames per second, > 0
+  double fps = 30;  // frames per second, > 0
 };
 
 class FrameEncoder {
@@ -54,7 +54,6 @@ class FrameEncoder {
 // frame rate, or an output that cannot be written. Advice that is no error (GIF frame delays
 // browsers do not honour) goes to `warnings`.
 std::unique_ptr<FrameEncoder> OpenFrameEncoder(const std::string& path,
-                                               const EncoderSettings& settings,
-                                               Warnings& warnings);
+                                               const EncoderSettings& settings, Warnings& warnings);
 
 }  // namespace urdfsnap::video

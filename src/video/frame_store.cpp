@@ -63,9 +63,9 @@ FrameStore::~FrameStore() {
 void FrameStore::Append(const image::Image& frame) {
   const std::size_t size = frame.rgb.size();
   compressed_.resize(4 + ZSTD_compressBound(size));
-  const std::size_t written = ZSTD_compress2(static_cast<ZSTD_CCtx*>(compressor_),
-                                             compressed_.data() + 4, compressed_.size() - 4,
-                                             frame.rgb.data(), size);
+  const std::size_t written =
+      ZSTD_compress2(static_cast<ZSTD_CCtx*>(compressor_), compressed_.data() + 4,
+                     compressed_.size() - 4, frame.rgb.data(), size);
   if (ZSTD_isError(written)) {
     throw Error(output_ + ": cannot compress a frame: " + ZSTD_getErrorName(written));
   }
@@ -104,9 +104,9 @@ bool FrameStore::Next(image::Image& frame) {
   frame.width = width_;
   frame.height = height_;
   frame.rgb.resize(std::size_t(width_) * height_ * 3);
-  const std::size_t size = ZSTD_decompressDCtx(static_cast<ZSTD_DCtx*>(decompressor_),
-                                               frame.rgb.data(), frame.rgb.size(),
-                                               compressed_.data(), length);
+  const std::size_t size =
+      ZSTD_decompressDCtx(static_cast<ZSTD_DCtx*>(decompressor_), frame.rgb.data(),
+                          frame.rgb.size(), compressed_.data(), length);
   if (ZSTD_isError(size) || size != frame.rgb.size()) {
     throw Error(output_ + ": a frame in the temporary file does not decompress");
   }

@@ -48,7 +48,10 @@ class VideoEncoder final : public FrameEncoder {
       // row multithreading: the only VP9 setting fast enough to keep up with rendering
       codec = avcodec_find_encoder_by_name("libvpx-vp9");
       muxer = "webm";
-      codec_options.Set("crf", "32").Set("deadline", "realtime").Set("cpu-used", "8").Set("row-mt", "1");
+      codec_options.Set("crf", "32")
+          .Set("deadline", "realtime")
+          .Set("cpu-used", "8")
+          .Set("row-mt", "1");
     }
     const int width = settings.width, height = settings.height;
     output_ = std::make_unique<EncodedOutput>(
@@ -63,8 +66,7 @@ class VideoEncoder final : public FrameEncoder {
         codec_options, muxer_options);
 
     yuv_ = MakeFrame(AV_PIX_FMT_YUV420P, width, height, path);
-    scaler_.reset(sws_getContext(width, height, AV_PIX_FMT_RGB24, width, height,
-                                 AV_PIX_FMT_YUV420P,
+    scaler_.reset(sws_getContext(width, height, AV_PIX_FMT_RGB24, width, height, AV_PIX_FMT_YUV420P,
                                  SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr,
                                  nullptr, nullptr));
     if (!scaler_) throw Error(path + ": cannot convert RGB to yuv420p");
@@ -103,8 +105,7 @@ std::unique_ptr<FrameEncoder> OpenVideoEncoder(const std::string& path, OutputFo
                                                const EncoderSettings& settings) {
   if (format == OutputFormat::kMp4 && (settings.width % 2 != 0 || settings.height % 2 != 0)) {
     throw Error(path + ": H.264 in 4:2:0 needs an even width and height; " +
-                std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                " is odd");
+                std::to_string(settings.width) + "x" + std::to_string(settings.height) + " is odd");
   }
   return std::make_unique<VideoEncoder>(path, format, settings);
 }

@@ -76,8 +76,8 @@ class WebpEncoder final : public FrameEncoder {
       throw Error(file_.path() + ": libwebp cannot take a frame (out of memory)");
     }
     if (!WebPAnimEncoderAdd(segment_.get(), &picture_, SegmentTime(frames_), &config_)) {
-      throw Error(file_.path() + ": libwebp cannot encode a frame: " +
-                  WebPAnimEncoderGetError(segment_.get()));
+      throw Error(file_.path() +
+                  ": libwebp cannot encode a frame: " + WebPAnimEncoderGetError(segment_.get()));
     }
     ++frames_;
     if (frames_ - segment_start_ == kFramesPerSegment) EndSegment();
@@ -120,8 +120,8 @@ class WebpEncoder final : public FrameEncoder {
     WebPDataInit(&data);
     if (!WebPAnimEncoderAdd(encoder, nullptr, SegmentTime(frames_), nullptr) ||
         !WebPAnimEncoderAssemble(encoder, &data)) {
-      throw Error(file_.path() + ": libwebp cannot finish a segment: " +
-                  WebPAnimEncoderGetError(encoder));
+      throw Error(file_.path() +
+                  ": libwebp cannot finish a segment: " + WebPAnimEncoderGetError(encoder));
     }
     WebPDemuxer* demuxer = WebPDemux(&data);
     if (!demuxer) {

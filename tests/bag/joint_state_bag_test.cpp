@@ -11,9 +11,9 @@
 namespace urdfsnap::bag {
 namespace {
 
+using test::TestBag;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
-using test::TestBag;
 
 class JointStateValuesTest : public ::testing::TestWithParam<std::pair<const char*, int>> {};
 

@@ -13,8 +13,8 @@
 namespace urdfsnap::bag {
 namespace {
 
-using ::testing::HasSubstr;
 using test::TestBag;
+using ::testing::HasSubstr;
 
 struct Counts {
   std::map<std::string, int> messages;  // by topic
@@ -109,8 +109,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadBag{"corrupt_lz4_data.mcap", {"corrupt MCAP: the chunk at byte", "lz4"}},
         BadBag{"corrupt_crc.mcap", {"do not match their CRC32"}},
         BadBag{"corrupt_huge_chunk.mcap", {"declares 1099511627776 bytes", "limit of 512 MiB"}},
-        BadBag{"corrupt_huge_record.mcap", {"truncated MCAP: the Chunk record at byte",
-                                            "claims 4611686018427387904 bytes"}},
+        BadBag{"corrupt_huge_record.mcap",
+               {"truncated MCAP: the Chunk record at byte", "claims 4611686018427387904 bytes"}},
         BadBag{"corrupt_unknown_compression.mcap", {"compressed with 'zztd'", "reads zstd, lz4"}},
         BadBag{"corrupt_no_header.mcap", {"the first record is Schema, not Header"}}),
     [](const auto& info) {

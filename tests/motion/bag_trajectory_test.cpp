@@ -5,15 +5,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "support/error_text.h"
 #include "motion/trajectory_file.h"
+#include "support/error_text.h"
 #include "test_bags.h"
 
 namespace urdfsnap::motion {
 namespace {
 
-using ::testing::HasSubstr;
 using test::TestBag;
+using ::testing::HasSubstr;
 
 TEST(BagTrajectoryTest, ReadsTheJointsOfEveryMessage) {
   Warnings warnings;
@@ -33,15 +33,18 @@ TEST(BagTrajectoryTest, ReadsTheJointsOfEveryMessage) {
 
 TEST(BagTrajectoryTest, UnstampedMessagesAreTimedByLogTimeWithAWarning) {
   Warnings warnings;
-  const Trajectory trajectory = ReadBagTrajectory(TestBag("zero_stamps.mcap"), "/joint_states", warnings);
+  const Trajectory trajectory =
+      ReadBagTrajectory(TestBag("zero_stamps.mcap"), "/joint_states", warnings);
   ASSERT_EQ(warnings.messages().size(), 1u);
-  EXPECT_THAT(warnings.messages()[0], HasSubstr("is zero; the messages are timed by their log times"));
+  EXPECT_THAT(warnings.messages()[0],
+              HasSubstr("is zero; the messages are timed by their log times"));
   EXPECT_NEAR(trajectory.EndTime(), 0.19, 1e-9);
 }
 
 TEST(BagTrajectoryTest, TwoPublishersMakeTracksWithTheirOwnTimes) {
   Warnings warnings;
-  const Trajectory trajectory = ReadBagTrajectory(TestBag("two_publishers.mcap"), "/joint_states", warnings);
+  const Trajectory trajectory =
+      ReadBagTrajectory(TestBag("two_publishers.mcap"), "/joint_states", warnings);
   ASSERT_EQ(trajectory.tracks.size(), 4u);
   EXPECT_EQ(trajectory.tracks[3].joint, "finger");
   EXPECT_EQ(trajectory.tracks[3].times.size(), 50u);
@@ -73,10 +76,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadBag{"nan_position.mcap",
                "nan_position.mcap: message 8 on '/joint_states' (log time 1700000000.071000000 s): "
                "joint 'elbow' has position nan; positions must be finite numbers"},
-        BadBag{"time_goes_back.mcap",
-               "message 6 on '/joint_states' (log time 1700000000.051000000 s): joint 'shoulder' at "
-               "0.02 s is not after its previous sample at 0.04 s"},
-        BadBag{"length_mismatch.mcap", "message 4 on '/joint_states' (log time 1700000000.031000000 s): 3 names but 2 positions"},
+        BadBag{
+            "time_goes_back.mcap",
+            "message 6 on '/joint_states' (log time 1700000000.051000000 s): joint 'shoulder' at "
+            "0.02 s is not after its previous sample at 0.04 s"},
+        BadBag{"length_mismatch.mcap",
+               "message 4 on '/joint_states' (log time 1700000000.031000000 s): 3 names but 2 "
+               "positions"},
         BadBag{"corrupt_zstd_data.mcap", "corrupt MCAP"},
         BadBag{"no_joint_states.mcap", "no topic '/joint_states' in the bag"}),
     [](const auto& info) {
@@ -89,10 +95,13 @@ TEST(TrajectoryFileTest, DetectsTheFormatByExtensionThenContent) {
   EXPECT_EQ(DetectTrajectoryFormat("a.yml", ""), TrajectoryFormat::kRosMessages);
   EXPECT_EQ(DetectTrajectoryFormat("a.json", ""), TrajectoryFormat::kRosMessages);
   EXPECT_EQ(DetectTrajectoryFormat("a.mcap", ""), TrajectoryFormat::kBag);
-  EXPECT_EQ(DetectTrajectoryFormat("recording", std::string("\x89MCAP0\r\n", 8)), TrajectoryFormat::kBag);
+  EXPECT_EQ(DetectTrajectoryFormat("recording", std::string("\x89MCAP0\r\n", 8)),
+            TrajectoryFormat::kBag);
   EXPECT_EQ(DetectTrajectoryFormat("plan.txt", "time,a,b\n0,1,2\n"), TrajectoryFormat::kCsv);
-  EXPECT_EQ(DetectTrajectoryFormat("plan.txt", "joint_names: [a, b]\n"), TrajectoryFormat::kRosMessages);
-  EXPECT_EQ(DetectTrajectoryFormat("-", "{\"joint_names\": [\"a\", \"b\"]}"), TrajectoryFormat::kRosMessages);
+  EXPECT_EQ(DetectTrajectoryFormat("plan.txt", "joint_names: [a, b]\n"),
+            TrajectoryFormat::kRosMessages);
+  EXPECT_EQ(DetectTrajectoryFormat("-", "{\"joint_names\": [\"a\", \"b\"]}"),
+            TrajectoryFormat::kRosMessages);
 }
 
 TEST(TrajectoryFileTest, AMissingFileIsAnErrorNamingIt) {

@@ -43,7 +43,8 @@ TEST(CsvTrajectoryTest, TheTimeColumnMayBeAnywhere) {
 }
 
 TEST(CsvTrajectoryTest, WithoutATimeColumnEachRowIsAFrame) {
-  const Trajectory trajectory = ParseCsvTrajectory("shoulder,elbow\n0,0\n0.1,0.2\n0.2,0.4", "f.csv");
+  const Trajectory trajectory =
+      ParseCsvTrajectory("shoulder,elbow\n0,0\n0.1,0.2\n0.2,0.4", "f.csv");
   EXPECT_EQ(trajectory.time_base, TimeBase::kRows);
   EXPECT_THAT(trajectory.tracks[1].times, ElementsAre(0.0, 1.0, 2.0));
   EXPECT_THAT(trajectory.tracks[1].positions, ElementsAre(0.0, 0.2, 0.4));
@@ -66,17 +67,23 @@ INSTANTIATE_TEST_SUITE_P(
     Tables, BadCsvTest,
     ::testing::Values(
         BadCsv{"empty", "", "bad.csv: no header row (expected time,<joint>,<joint>...)"},
-        BadCsv{"header_only", "time,elbow\n", "bad.csv: no rows after the header: an empty trajectory"},
+        BadCsv{"header_only", "time,elbow\n",
+               "bad.csv: no rows after the header: an empty trajectory"},
         BadCsv{"only_time", "time\n0\n",
                "bad.csv:1: the header names no joint columns (expected time,<joint>,<joint>...)"},
         BadCsv{"unnamed_column", "time,,elbow\n", "bad.csv:1: column 2 of the header has no name"},
         BadCsv{"duplicate_joint", "time,elbow,elbow\n",
                "bad.csv:1: column 'elbow' appears twice in the header"},
-        BadCsv{"duplicate_time", "time,elbow,time\n", "bad.csv:1: column 'time' appears twice in the header"},
-        BadCsv{"short_row", "time,a,b\n0,1,2\n1,2\n", "bad.csv:3: 2 fields, but the header has 3 columns"},
-        BadCsv{"nan", "time,a\n0,1\n1,nan\n", "bad.csv:3: column 'a': expected a finite number, got 'nan'"},
-        BadCsv{"inf", "time,a\n0,inf\n", "bad.csv:2: column 'a': expected a finite number, got 'inf'"},
-        BadCsv{"text_time", "time,a\nsoon,1\n", "bad.csv:2: column 'time': expected a finite number, got 'soon'"},
+        BadCsv{"duplicate_time", "time,elbow,time\n",
+               "bad.csv:1: column 'time' appears twice in the header"},
+        BadCsv{"short_row", "time,a,b\n0,1,2\n1,2\n",
+               "bad.csv:3: 2 fields, but the header has 3 columns"},
+        BadCsv{"nan", "time,a\n0,1\n1,nan\n",
+               "bad.csv:3: column 'a': expected a finite number, got 'nan'"},
+        BadCsv{"inf", "time,a\n0,inf\n",
+               "bad.csv:2: column 'a': expected a finite number, got 'inf'"},
+        BadCsv{"text_time", "time,a\nsoon,1\n",
+               "bad.csv:2: column 'time': expected a finite number, got 'soon'"},
         BadCsv{"repeated_time", "time,a\n0,1\n# same time\n0,2\n",
                "bad.csv:4: time 0 is not after the previous row's 0 (times must increase)"},
         BadCsv{"backwards", "time,a\n1,1\n0.5,2\n",

@@ -64,8 +64,9 @@ TEST(FramePlanTest, TurntableTurnsOnceWithoutRepeatingTheFirstFrame) {
 
 TEST(FramePlanTest, RefusesBadArgumentsAndEndlessAnimations) {
   using test::ErrorText;
-  EXPECT_THAT(ErrorText([] { PlanFrames(EndingAt(1), 0, 1); }),
-              HasSubstr("the frame rate (frames per second) must be a positive number up to 1000, got 0"));
+  EXPECT_THAT(
+      ErrorText([] { PlanFrames(EndingAt(1), 0, 1); }),
+      HasSubstr("the frame rate (frames per second) must be a positive number up to 1000, got 0"));
   EXPECT_THAT(ErrorText([] { PlanFrames(EndingAt(1), 5000, 1); }), HasSubstr("got 5000"));
   EXPECT_THAT(ErrorText([] { PlanFrames(EndingAt(1), 30, -1); }),
               HasSubstr("the playback speed must be a positive number, got -1"));

@@ -65,10 +65,11 @@ TEST(ProgressBarTest, WritesNothingToAFileThatIsNotATerminal) {
 }
 
 TEST(ProgressBarTest, QuietWritesNothing) {
-  EXPECT_EQ(Written(10, ProgressBar::Display::kNever, [](ProgressBar& bar) {
-              bar.Update(10);
-              bar.Finish();
-            }),
+  EXPECT_EQ(Written(10, ProgressBar::Display::kNever,
+                    [](ProgressBar& bar) {
+                      bar.Update(10);
+                      bar.Finish();
+                    }),
             "");
 }
 

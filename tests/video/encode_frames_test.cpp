@@ -26,7 +26,8 @@ TEST(EncodeFramesTest, WritesEveryFrameInOrderWithProgress) {
   ASSERT_NE(log, nullptr);
   stream::ProgressBar progress(30, "frames", stream::ProgressBar::Display::kAlways, log);
   EncodeFrames(
-      30, [](std::int64_t k, image::Image& frame) { frame = test::SyntheticFrame(160, 120, int(k)); },
+      30,
+      [](std::int64_t k, image::Image& frame) { frame = test::SyntheticFrame(160, 120, int(k)); },
       *encoder, &progress);
   const std::vector<image::Image> frames = test::DecodeFrames(path, 160, 120);
   ASSERT_EQ(frames.size(), 30u);
@@ -48,10 +49,13 @@ TEST(EncodeFramesTest, AnErrorMakingAFrameLeavesNoOutput) {
   {
     const auto encoder = OpenFrameEncoder(folder.Path("robot.gif"), {64, 48, 10}, warnings);
     EXPECT_EQ(test::ErrorText([&] {
-                EncodeFrames(100, [](std::int64_t k, image::Image& frame) {
-                  if (k == 40) throw Error("robot.urdf: the renderer failed");
-                  frame = test::SyntheticFrame(64, 48, int(k));
-                }, *encoder);
+                EncodeFrames(
+                    100,
+                    [](std::int64_t k, image::Image& frame) {
+                      if (k == 40) throw Error("robot.urdf: the renderer failed");
+                      frame = test::SyntheticFrame(64, 48, int(k));
+                    },
+                    *encoder);
               }),
               "robot.urdf: the renderer failed");
   }

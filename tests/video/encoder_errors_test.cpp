@@ -36,7 +36,8 @@ TEST_F(EncoderErrorsTest, SizesAFormatCannotHold) {
   EXPECT_THAT(Open("big.webp", {16384, 16, 30}),
               HasSubstr("WebP images are at most 16383 pixels on a side"));
   EXPECT_THAT(Open("none.gif", {0, 10, 30}), HasSubstr("cannot make an animation of 0x10 pixels"));
-  EXPECT_THAT(Open("rate.webm", {64, 48, 0}), HasSubstr("the frame rate must be a positive number"));
+  EXPECT_THAT(Open("rate.webm", {64, 48, 0}),
+              HasSubstr("the frame rate must be a positive number"));
   EXPECT_TRUE(folder_.Listing().empty());
 }
 
@@ -56,7 +57,8 @@ TEST_F(EncoderErrorsTest, AFrameOfAnotherSizeIsAnError) {
 
 TEST_F(EncoderErrorsTest, AnAbandonedEncoderLeavesNothing) {
   std::filesystem::create_directory(folder_.path() / "frames");
-  for (const char* name : {"robot.mp4", "robot.webm", "robot.gif", "robot.webp", "frames/%03d.png"}) {
+  for (const char* name :
+       {"robot.mp4", "robot.webm", "robot.gif", "robot.webp", "frames/%03d.png"}) {
     {
       const auto encoder = OpenFrameEncoder(folder_.Path(name), {64, 48, 10}, warnings_);
       for (int i = 0; i < 5; ++i) encoder->Write(test::SyntheticFrame(64, 48, i));

@@ -27,9 +27,10 @@ constexpr int kNeighbourPercentile99 = 100;
 
 TEST(SyntheticFramesTest, NeighboursDifferMoreThanAnyToleranceAllows) {
   for (int i = 0; i + 1 < 150; ++i) {
-    EXPECT_GE(test::Compare(SyntheticFrame(kWidth, kHeight, i), SyntheticFrame(kWidth, kHeight, i + 1))
-                  .percentile_99,
-              kNeighbourPercentile99)
+    EXPECT_GE(
+        test::Compare(SyntheticFrame(kWidth, kHeight, i), SyntheticFrame(kWidth, kHeight, i + 1))
+            .percentile_99,
+        kNeighbourPercentile99)
         << "frames " << i << " and " << i + 1;
   }
 }

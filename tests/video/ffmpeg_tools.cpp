@@ -22,8 +22,9 @@ std::string Output(const std::string& command) {
     text.append(buffer.data(), n);
   }
   const int status = ::pclose(pipe);
-  EXPECT_EQ(status, 0) << command << " failed (Debian's ffmpeg package, installed by "
-                                     "scripts/deps.sh, is needed by these tests)";
+  EXPECT_EQ(status, 0) << command
+                       << " failed (Debian's ffmpeg package, installed by "
+                          "scripts/deps.sh, is needed by these tests)";
   return text;
 }
 
@@ -33,7 +34,8 @@ ProbedVideo Probe(const std::string& path) {
   const std::string json = Output(
       "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
       "stream=codec_name,pix_fmt,width,height,r_frame_rate,avg_frame_rate,nb_read_frames,"
-      "color_space:format=duration -of json " + Quoted(path));
+      "color_space:format=duration -of json " +
+      Quoted(path));
   ProbedVideo video;
   const nlohmann::json root = nlohmann::json::parse(json, nullptr, false);
   if (root.is_discarded() || root["streams"].empty()) {
@@ -60,7 +62,8 @@ std::vector<image::Image> DecodeFrames(const std::string& path, int width, int h
   const std::size_t frame_bytes = std::size_t(width) * height * 3;
   std::vector<image::Image> frames;
   for (std::size_t at = 0; at + frame_bytes <= raw.size(); at += frame_bytes) {
-    frames.push_back(image::Image{width, height, {raw.begin() + at, raw.begin() + at + frame_bytes}});
+    frames.push_back(
+        image::Image{width, height, {raw.begin() + at, raw.begin() + at + frame_bytes}});
   }
   EXPECT_EQ(raw.size() % frame_bytes, 0u) << "a partial frame from " << path;
   return frames;

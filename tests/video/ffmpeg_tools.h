@@ -13,7 +13,7 @@ namespace urdfsnap::test {
 
 // What ffprobe says about a file's first video stream (frames counted by decoding them all).
 struct ProbedVideo {
-  std::string codec;    // "h264", "vp9", "gif"
+  std::string codec;  // "h264", "vp9", "gif"
   std::string pixel_format;
   int width = 0, height = 0;
   std::string frame_rate;          // r_frame_rate, "30/1"

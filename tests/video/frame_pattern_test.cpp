@@ -26,12 +26,14 @@ TEST(FramePatternTest, TellsPatternsFromFileNames) {
 }
 
 TEST(FramePatternTest, RefusesPatternsWithoutExactlyOneFrameNumber) {
-  EXPECT_THAT(test::ErrorText([] { FramePattern("a%d_%d.png"); }),
-              HasSubstr("a%d_%d.png: a frame sequence needs exactly one frame number such as %05d, not 2"));
+  EXPECT_THAT(
+      test::ErrorText([] { FramePattern("a%d_%d.png"); }),
+      HasSubstr("a%d_%d.png: a frame sequence needs exactly one frame number such as %05d, not 2"));
   EXPECT_THAT(test::ErrorText([] { FramePattern("a%%.png"); }), HasSubstr("not 0"));
   EXPECT_THAT(test::ErrorText([] { FramePattern("a%s.png"); }),
               HasSubstr("'%s' is not a frame number; use %d or %05d"));
-  EXPECT_THAT(test::ErrorText([] { FramePattern("a%5.2d.png"); }), HasSubstr("'%5.' is not a frame number"));
+  EXPECT_THAT(test::ErrorText([] { FramePattern("a%5.2d.png"); }),
+              HasSubstr("'%5.' is not a frame number"));
   EXPECT_THAT(test::ErrorText([] { FramePattern("a%099d.png"); }),
               HasSubstr("a frame number wider than 12 digits"));
   EXPECT_THAT(test::ErrorText([] { FramePattern("a%"); }), HasSubstr("'%' is not a frame number"));
