@@ -36,8 +36,10 @@ const std::vector<urdfsnap::image::Image>& Frames() {
   return frames;
 }
 
+// The output for `format` in a folder of its own, emptied first (PNG sizes add up its files).
 std::string OutputPath(const std::string& format) {
   const fs::path folder = fs::temp_directory_path() / "urdfsnap-video-bench";
+  fs::remove_all(folder / "frames");
   fs::create_directories(folder / "frames");
   return (folder / (format == "png" ? "frames/%05d.png" : "robot." + format)).string();
 }
