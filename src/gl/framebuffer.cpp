@@ -21,6 +21,25 @@ void Check(GLuint fbo, int width, int height, int samples) {
   }
 }
 
+// Lays the bound framebuffer's rows out top row first, as Mesa lays out a window's: RViz draws
+// into its window, and Mesa's state tracker rasterises window-system framebuffers with y = 0 at
+// the top ("Y_0_TOP", st_fb_orientation in src/mesa/state_tracker/st_context.h) but framebuffer
+// objects with y = 0 at the bottom. llvmpipe's four sample positions (lp_sample_pos_4x in
+// lp_rast.c) are fixed in the buffer's own rows, so in an ordinary framebuffer object they lie
+// mirrored top to bottom against RViz's window, and every anti-aliased edge covers different
+// samples: on the Kinova arm 1-2% of the robot's edge pixels crossed the reference images'
+// robot-mask threshold the other way (iou 0.981-0.988), and grid lines differed on ~2,100
+// pixels. GL_MESA_framebuffer_flip_y gives an object the window's orientation; everything GL
+// reports (viewport, read-back, blits) stays bottom-up, so nothing else changes. Drivers without
+// the extension keep their own layout: the same image but for edge pixels.
+void UseWindowRowOrder() {
+  constexpr GLenum kFramebufferFlipYMesa = 0x8BBB;   // GL_FRAMEBUFFER_FLIP_Y_MESA
+  glFramebufferParameteri(GL_FRAMEBUFFER, kFramebufferFlipYMesa, GL_TRUE);
+  while (glGetError() != GL_NO_ERROR) {
+    // GL_INVALID_ENUM without the extension: the layout stays the driver's
+  }
+}
+
 // Reads `components` values of `type` per pixel from the bound read framebuffer's current buffer
 // and returns them with the top row first.
 template <typename T>
@@ -54,6 +73,7 @@ Framebuffer::Framebuffer(int width, int height, int samples)
   glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[1]);
+  UseWindowRowOrder();
   Check(draw_fbo_, width, height, samples);
 
   glGenFramebuffers(1, &resolve_fbo_);
@@ -95,6 +115,7 @@ LabelFramebuffer::LabelFramebuffer(int width, int height) : width_(width), heigh
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[2]);
   const GLenum outputs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, outputs);
+  UseWindowRowOrder();   // so labels and depths cover the colour image's pixels
   Check(fbo_, width, height, 0);
 }
 

@@ -1,6 +1,7 @@
 // The off-screen render targets: a multisampled colour+depth framebuffer resolved into a
 // single-sample one and read back as a top-row-first RGB image; and a single-sample one for the
-// link-label and depth images. Internal; needs a current context.
+// link-label and depth images. Both are rasterised in a window's row order, as RViz's window is.
+// Internal; needs a current context.
 #pragma once
 
 #include "image/image.h"

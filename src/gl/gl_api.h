@@ -49,6 +49,7 @@
   X(PFNGLENABLEPROC, glEnable)                                        \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)      \
   X(PFNGLFINISHPROC, glFinish)                                        \
+  X(PFNGLFRAMEBUFFERPARAMETERIPROC, glFramebufferParameteri)          \
   X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)      \
   X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)            \
   X(PFNGLFRONTFACEPROC, glFrontFace)                                  \

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "common/error.h"
 #include "gl/shader_program.h"
 #include "scene/glyph_atlas.h"
@@ -212,6 +215,44 @@ TEST_F(RendererTest, LabelIsHiddenBehindOpaqueGeometryButWinsAgainstASurfaceThro
     for (int x = 0; x < coplanar.width; ++x) white += Pixel(coplanar, x, y) == Rgb{255, 255, 255};
   }
   EXPECT_GT(white, 10);
+}
+
+// A white rectangle facing the camera that covers, in image pixels (x right, y down from the top
+// left corner), [x0, x1) x [y0, y1) of the FrontView() at 64x48.
+DrawItem ImageRectangle(double x0, double x1, double y0, double y1) {
+  // FrontView: the image plane is x = 0 at 2 m, 48 rows span 2 · 2 · tan(22.5°)
+  const double metres_per_pixel = 4 * std::tan(std::numbers::pi / 8) / 48;
+  const auto corner = [&](double x, double y) {
+    return Eigen::Vector3f(0, static_cast<float>((x - 32) * metres_per_pixel),
+                           static_cast<float>((24 - y) * metres_per_pixel));
+  };
+  geometry::TriangleMesh mesh;
+  mesh.positions = {corner(x0, y1), corner(x1, y1), corner(x1, y0), corner(x0, y0)};
+  mesh.normals.assign(4, Eigen::Vector3f::UnitX());
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  DrawItem item;
+  item.mesh = std::make_shared<const geometry::TriangleMesh>(mesh);
+  item.X_FG = Eigen::Affine3d::Identity();
+  item.rgba = {1, 1, 1, 1};
+  return item;
+}
+
+TEST_F(RendererTest, MultisamplesLieWhereTheyLieInRvizsWindow) {
+  // llvmpipe's four samples sit at (0.375, 0.125), (0.875, 0.375), (0.125, 0.625) and
+  // (0.625, 0.875) of a pixel in the buffer's row order. In a window (RViz's) the first row is
+  // the top one, so the upper left eighth of pixel (32, 24) holds one sample and the lower left
+  // eighth none; in a bottom-up framebuffer object it would be the other way round.
+  const int one_sample = 48 + (255 - 48) / 4;
+  Scene upper;
+  upper.items.push_back(ImageRectangle(32, 32.5, 24, 24.25));
+  EXPECT_NEAR(Pixel(renderer_->Render(upper, FrontView(), 64, 48).colour, 32, 24)[0], one_sample, 1);
+  Scene lower;
+  lower.items.push_back(ImageRectangle(32, 32.5, 24.75, 25));
+  EXPECT_EQ(Pixel(renderer_->Render(lower, FrontView(), 64, 48).colour, 32, 24), (Rgb{48, 48, 48}));
+  // and the image is upright: the sample in the lower right eighth is pixel (32, 24)'s
+  Scene lower_right;
+  lower_right.items.push_back(ImageRectangle(32.5, 33, 24.75, 25));
+  EXPECT_NEAR(Pixel(renderer_->Render(lower_right, FrontView(), 64, 48).colour, 32, 24)[0], one_sample, 1);
 }
 
 TEST_F(RendererTest, MisspeltShaderUniformIsAnError) {
