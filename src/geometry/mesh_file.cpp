@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string_view>
 #include <system_error>
 #include <tuple>
 
@@ -83,15 +84,26 @@ Eigen::Vector3f Emissive(const aiMaterial& material) {
   return {c.r, c.g, c.b};
 }
 
-// loadMaterials() in mesh_loader.cpp: a material with a texture gets a texture unit holding its
-// diffuse map, looked up beside the mesh file; the diffuse colour stays and tints it.
-std::string DiffuseTexture(const aiMaterial& material, const fs::path& mesh_path) {
+// loadMaterials() in mesh_loader.cpp: every "$tex.file" property of a material (one per texture
+// map of any type and index) creates a texture unit, and each unit is given the material's
+// first diffuse map (GetTexture(aiTextureType_DIFFUSE, 0)) whatever map it was made for.
+int TextureUnits(const aiMaterial& material) {
+  const std::string_view texture_file = _AI_MATKEY_TEXTURE_BASE;   // "$tex.file"
+  int units = 0;
+  for (unsigned i = 0; i < material.mNumProperties; ++i) units += material.mProperties[i]->mKey.C_Str() == texture_file;
+  return units;
+}
+
+// The image RViz's texture units show: the first diffuse map, its name appended to the mesh
+// file's folder and a "/" as RViz appends it; "" without a diffuse map, or for an embedded image
+// ("*N", which RViz looks for as a file and never finds).
+std::string UnitTexture(const aiMaterial& material, const fs::path& mesh_path) {
   aiString name;
-  if (material.GetTextureCount(aiTextureType_DIFFUSE) == 0 ||
-      material.GetTexture(aiTextureType_DIFFUSE, 0, &name) != aiReturn_SUCCESS || name.length == 0) {
+  if (material.GetTexture(aiTextureType_DIFFUSE, 0, &name) != aiReturn_SUCCESS || name.length == 0 ||
+      name.C_Str()[0] == '*') {
     return "";
   }
-  return (mesh_path.parent_path() / name.C_Str()).string();
+  return mesh_path.parent_path().string() + "/" + name.C_Str();
 }
 
 struct Builder {
@@ -144,9 +156,11 @@ struct Builder {
       Fail("mesh '" + std::string(in.mName.C_Str()) + "' refers to a material that does not exist");
     }
     if (!is_stl) {
-      part.diffuse = Diffuse(*scene.mMaterials[in.mMaterialIndex]);
-      part.emissive = Emissive(*scene.mMaterials[in.mMaterialIndex]);
-      part.texture = DiffuseTexture(*scene.mMaterials[in.mMaterialIndex], path);
+      const aiMaterial& material = *scene.mMaterials[in.mMaterialIndex];
+      part.diffuse = Diffuse(material);
+      part.emissive = Emissive(material);
+      part.texture_units = TextureUnits(material);
+      if (part.texture_units > 0) part.texture = UnitTexture(material, path);
     }
     TriangleMesh& mesh = part.mesh;
     mesh.positions.reserve(in.mNumVertices);

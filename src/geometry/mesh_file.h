@@ -1,7 +1,8 @@
 // Mesh files (STL, COLLADA, OBJ and whatever else assimp reads) loaded the way RViz 1.14 loads them
 // in src/rviz/mesh_loader.cpp: the same assimp post-processing, the same node transforms and unit
 // scale, and the material rules of src/rviz/robot/robot_link.cpp reduced to "takes the URDF
-// material" or "keeps the file's diffuse colour". Pure geometry: no GL, no URDF.
+// material" or "keeps the file's diffuse colour, emission and texture units". Pure geometry: no
+// GL, no URDF.
 #pragma once
 
 #include <Eigen/Core>
@@ -30,9 +31,17 @@ struct MeshPart {
   // The file's emissive colour, which RViz adds as the material's self-illumination (usually 0).
   // Meaningless when takes_urdf_material.
   Eigen::Vector3f emissive{0, 0, 0};
-  // The material's diffuse texture map: its name joined to the mesh file's folder, where RViz
-  // looks for it ("Assume textures are in paths relative to the mesh"); "" for none. The file is
-  // not opened here. Meaningless when takes_urdf_material.
+  // RViz's texture units: one per texture map the material names, of whatever kind (diffuse,
+  // normal or bump, height, specular, emissive, base colour...), and each of them shows the
+  // material's *diffuse* map, so the lit colour is multiplied by that map once per map (a diffuse
+  // and a bump map give colour x t^2). 0 for a material without maps. Meaningless when
+  // takes_urdf_material.
+  int texture_units = 0;
+  // The image the texture units show: the diffuse map's name joined to the mesh file's folder, as
+  // RViz joins them ("Assume textures are in paths relative to the mesh"). Empty when the material
+  // has maps but none of them a diffuse map in a file (no diffuse map, or an embedded "*N" one):
+  // RViz's units then name an image that cannot be loaded, and Ogre draws its warning texture.
+  // The file is not opened here.
   std::string texture;
 };
 

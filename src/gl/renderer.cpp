@@ -23,6 +23,11 @@ namespace {
 // (robot_link.cpp L383-430, grid.cpp L115-130).
 constexpr float kOpaqueAlpha = 0.9998f;
 
+// Most texture units applied to one mesh. Mesa's fixed-function pipeline has 8; Ogre splits a
+// pass with more into several multiplying passes, which comes to the same product, but a hostile
+// mesh file could ask for millions.
+constexpr int kMaxTextureUnits = 32;
+
 struct Transparent {
   double depth;            // squared distance from the eye, for back-to-front order
   std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*> what;
@@ -100,7 +105,7 @@ struct Renderer::Impl {
     lit.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
     lit.Set("diffuse", item.rgba);
     lit.Set("emissive", item.emissive);
-    lit.Set("textured", item.texture ? 1 : 0);
+    lit.Set("texture_units", item.texture ? std::clamp(item.texture_units, 0, kMaxTextureUnits) : 0);
     if (item.texture) {
       lit.Set("image", 0);
       textures.Get(item.texture).Bind(0);

@@ -54,7 +54,8 @@ const std::array kFlagOptions{
     FlagOption{"no-aa", "no multisampling (RViz default 4x)", &R::no_aa},
     FlagOption{"allow-missing-meshes",
                "draw the rest of the robot when a mesh or texture file cannot be found, one "
-               "warning each (RViz draws the rest and logs an error; default: an error)",
+               "warning each (RViz draws the rest, a texture as Ogre's yellow and black warning "
+               "texture, and logs an error; default: an error)",
                &R::allow_missing_meshes},
 };
 

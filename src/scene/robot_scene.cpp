@@ -96,14 +96,33 @@ class FileLoader {
   }
 
   // The texture at `uri` (a URDF material's, resolved as mesh URIs are) or at `path` (a mesh
-  // material's, already a path); null when missing files are allowed and it is missing.
+  // material's, already a path). When it is missing and missing files are allowed: Ogre's warning
+  // texture, which RViz shows for a texture it cannot load (robot_link.cpp and mesh_loader.cpp
+  // name the image to Ogre even when loading it failed).
   std::shared_ptr<const TextureImage> Texture(const model::Link& link, const std::string& uri, bool is_uri) {
-    return ForLink(link, "drawn without it", [&] {
-      const std::string path = is_uri ? geometry::ResolveMeshUri(uri, options_.model_file, options_.packages) : uri;
-      std::shared_ptr<const TextureImage> texture = LoadTextureFile(path);
-      Use(path);
-      return texture;
-    });
+    return ForLink(
+        link, "drawn with Ogre's warning texture, as RViz draws it",
+        [&] {
+          const std::string path = is_uri ? geometry::ResolveMeshUri(uri, options_.model_file, options_.packages) : uri;
+          std::shared_ptr<const TextureImage> texture = LoadTextureFile(path);
+          Use(path);
+          return texture;
+        },
+        WarningTexture());
+  }
+
+  // The image the texture units of a mesh part's own material show (geometry::MeshPart): the
+  // diffuse map's file, or, for a material whose maps include no diffuse map in a file, Ogre's
+  // warning texture with a warning (RViz names an image that cannot exist to its units).
+  std::shared_ptr<const TextureImage> UnitTexture(const model::Link& link, const std::string& mesh_uri,
+                                                  const geometry::MeshPart& part) {
+    if (!part.texture.empty()) return Texture(link, part.texture, false);
+    warnings_.Add(Error(SourceLocation{options_.model_file, link.line},
+                        "link '" + link.name + "': mesh '" + mesh_uri +
+                            "': a material has texture maps but no diffuse map in a file; RViz draws "
+                            "it with Ogre's yellow and black warning texture, and so does urdfsnap")
+                      .what());
+    return WarningTexture();
   }
 
   std::vector<std::string> TakeFiles() { return std::move(files_); }
@@ -123,9 +142,10 @@ class FileLoader {
   }
 
   // Runs `load`; its error is reported at the link's element, or, with allow_missing_meshes,
-  // becomes a warning saying what `instead` happens, and the result is empty.
+  // becomes a warning saying what `instead` happens, and the result is `fallback`.
   template <typename Load>
-  auto ForLink(const model::Link& link, const char* instead, Load load) -> decltype(load()) {
+  auto ForLink(const model::Link& link, const char* instead, Load load, decltype(load()) fallback = {})
+      -> decltype(load()) {
     const SourceLocation where{options_.model_file, link.line};
     const std::string culprit = "link '" + link.name + "': ";
     try {
@@ -133,7 +153,7 @@ class FileLoader {
     } catch (const Error& e) {
       if (!options_.allow_missing_meshes) throw Error(where, culprit + e.what());
       warnings_.Add(Error(where, culprit + e.what() + " (" + instead + ": --allow-missing-meshes)").what());
-      return {};
+      return fallback;
     }
   }
 
@@ -182,7 +202,8 @@ std::vector<LinkPart> PartsOf(const ShownShape& s, FileLoader& files) {
     if (!part.takes_urdf_material) {
       p.rgba = part.diffuse;
       p.emissive = part.emissive;
-      p.texture = part.texture.empty() ? nullptr : files.Texture(*s.link, part.texture, false);
+      p.texture_units = part.texture_units;
+      p.texture = part.texture_units > 0 ? files.UnitTexture(*s.link, shape.mesh_uri, part) : nullptr;
     }
     parts.push_back(std::move(p));
   }
@@ -254,7 +275,7 @@ Scene RobotScene::Pose(const std::vector<Eigen::Isometry3d>& X_RL) const {
   scene.items.reserve(parts_.size());
   for (const LinkPart& part : parts_) {
     scene.items.push_back({part.mesh, X_FL[part.link] * part.X_LG, part.rgba, part.link, part.texture,
-                           part.emissive});
+                           part.texture_units, part.emissive});
   }
   if (options_.tf.enabled) AddTfMarkers(robot_, X_FL, options_.tf, tf_names_, scene);
   if (options_.grid.enabled) scene.lines.push_back(MakeGrid(options_.grid));

@@ -22,6 +22,10 @@ struct DrawItem {
   int link = -1;                        // index into the robot's links(); -1 for markers
   // modulates the lit colour (Ogre's default texture unit), sampled at the mesh's uvs; none if null
   std::shared_ptr<const TextureImage> texture;
+  // how many of the material's texture units show `texture`: the lit colour is multiplied by it
+  // this many times (RViz gives a mesh material one unit per texture map, all showing its diffuse
+  // map; see geometry::MeshPart)
+  int texture_units = 1;
   Eigen::Vector3f emissive{0, 0, 0};    // self-illumination, added to the lit colour
 };
 

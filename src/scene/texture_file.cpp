@@ -46,4 +46,21 @@ std::shared_ptr<const TextureImage> LoadTextureFile(const std::string& path) {
   return cache.Get({canonical, static_cast<long long>(modified)}, [&] { return Decode(canonical); });
 }
 
+std::shared_ptr<const TextureImage> WarningTexture() {
+  static const std::shared_ptr<const TextureImage> warning = [] {
+    auto texture = std::make_shared<TextureImage>();
+    texture->width = texture->height = 8;
+    texture->channels = 4;
+    // texel (x, y) is black where (x + y) mod 8 < 4, else yellow (R5G6B5: exactly 255, 255, 0)
+    for (int y = 0; y < 8; ++y) {
+      for (int x = 0; x < 8; ++x) {
+        const std::uint8_t level = (x + y) % 8 < 4 ? 0 : 255;
+        texture->texels.insert(texture->texels.end(), {level, level, 0, 255});
+      }
+    }
+    return texture;
+  }();
+  return warning;
+}
+
 }  // namespace urdfsnap::scene

@@ -16,4 +16,10 @@ namespace urdfsnap::scene {
 // image::kMaxImageSide on a side.
 std::shared_ptr<const TextureImage> LoadTextureFile(const std::string& path);
 
+// Ogre's warning texture (TextureManager::_getWarningTexture, Ogre 1.12): 8x8 texels of diagonal
+// yellow and black stripes, which Ogre binds to a texture unit whose image cannot be loaded. RViz
+// shows it for a missing texture file, and for a mesh material with texture maps but no diffuse
+// map. The same object on every call.
+std::shared_ptr<const TextureImage> WarningTexture();
+
 }  // namespace urdfsnap::scene

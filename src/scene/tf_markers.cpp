@@ -26,7 +26,7 @@ constexpr float kNameHeight = 0.1f;
 
 void Add(const std::shared_ptr<const geometry::TriangleMesh>& mesh, const Eigen::Affine3d& X_FG,
          const Eigen::Vector4f& rgba, Scene& scene) {
-  scene.items.push_back({mesh, X_FG, rgba, -1, nullptr, Eigen::Vector3f::Zero()});
+  scene.items.push_back({mesh, X_FG, rgba, -1, nullptr, 1, Eigen::Vector3f::Zero()});
 }
 
 // A unit mesh along +Z stretched to `length` with `diameter`, its centre at `centre`, its +Z

@@ -302,6 +302,62 @@ TEST_F(MeshFileTest, ObjTextureMapIsFoundBesideTheMeshAndItsCoordinatesKept) {
   }
 }
 
+// tests/data/texture_maps_description: one material per file with the maps its name lists
+TEST_F(MeshFileTest, EveryTextureMapIsATextureUnitShowingTheDiffuseMap) {
+  const fs::path meshes = fs::path(URDFSNAP_SOURCE_DIR) / "tests/data/texture_maps_description/meshes";
+  struct Case {
+    const char* file;
+    int units;
+    const char* texture;   // file name of the image the units show, "" for none
+  };
+  const Case cases[] = {
+      {"plain.dae", 0, ""},
+      {"diffuse.dae", 1, "diffuse.png"},
+      {"diffuse_bump.dae", 2, "diffuse.png"},                 // COLLADA bump: assimp's normals map
+      {"diffuse_specular_bump.dae", 3, "diffuse.png"},
+      {"diffuse_emission.dae", 2, "diffuse.png"},
+      {"diffuse_reflective_transparent.dae", 3, "diffuse.png"},
+      {"diffuse_bump.obj", 2, "diffuse.png"},                 // OBJ bump: assimp's height map
+      {"bump_only.dae", 1, ""},                               // a unit, but no diffuse map for it
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.file);
+    const auto file = LoadMeshFile((meshes / c.file).string());
+    const MeshPart& part = file->parts.back();   // the OBJ's first material is assimp's default
+    EXPECT_FALSE(part.takes_urdf_material);
+    EXPECT_EQ(part.texture_units, c.units);
+    // joined as mesh_loader.cpp joins them: the mesh's folder, "/", the name in the file
+    EXPECT_EQ(part.texture, *c.texture ? meshes.string() + "/" + c.texture : "");
+  }
+  // a map of any kind without a diffuse one: the colour stays, the unit has no image
+  const auto bump_only = LoadMeshFile((meshes / "bump_only.dae").string());
+  EXPECT_TRUE(bump_only->parts[0].diffuse.isApprox(Eigen::Vector4f(0.8f, 0.6f, 0.4f, 1)));
+}
+
+TEST_F(MeshFileTest, AnEmbeddedDiffuseMapIsNoImageForTheTextureUnits) {
+  // glTF: one triangle whose base colour texture is a PNG inside the file (assimp names it "*0"
+  // and reports it as a diffuse and a base colour map); RViz looks for a file named "*0"
+  const std::string png_1x1 =
+      "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAIAAACQd1PeAAAADElEQVR4nGP4z8AAAAMBAQDJ/pLvAAAAAElFTkSuQmCC";
+  const std::string triangle =   // 3 float positions, then indices 0 1 2 as uint16 (+ padding)
+      "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA=";
+  const std::string gltf = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+    "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+    "textures": [{"source": 0}], "images": [{"uri": "data:image/png;base64,)" + png_1x1 + R"("}],
+    "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,)" + triangle + R"("}],
+    "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                    {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                   "min": [0, 0, 0], "max": [1, 1, 0]},
+                  {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]})";
+  const auto file = LoadMeshFile(Write("embedded.gltf", gltf));
+  ASSERT_EQ(file->parts.size(), 1u);
+  EXPECT_EQ(file->parts[0].texture_units, 2);
+  EXPECT_EQ(file->parts[0].texture, "");
+}
+
 TEST_F(MeshFileTest, EachFileIsLoadedOnce) {
   const std::string path = Write("cube.stl", BinaryStl(Cube()));
   const auto first = LoadMeshFile(path);

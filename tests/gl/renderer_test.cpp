@@ -138,6 +138,26 @@ TEST_F(RendererTest, TextureModulatesTheLitColourWithVZeroAtTheImageTop) {
   ExpectNear(image, {255, 255, 128}, 83, 83);
 }
 
+TEST_F(RendererTest, EachTextureUnitModulatesByTheTextureAgain) {
+  // one texel, so filtering plays no part: the lit white times (128, 192, 255)/255 per unit
+  auto texel = std::make_shared<TextureImage>();
+  texel->width = texel->height = 1;
+  texel->texels = {128, 192, 255, 255};
+  Scene scene;
+  DrawItem item;
+  item.mesh = UpperTriangle();
+  item.X_FG = Eigen::Affine3d::Identity();
+  item.rgba = {1, 1, 1, 1};
+  item.texture = texel;
+  scene.items.push_back(item);
+  const Rgb expected[] = {{255, 255, 255}, {128, 192, 255}, {64, 145, 255}, {32, 109, 255}};
+  for (int units = 0; units < 4; ++units) {
+    scene.items[0].texture_units = units;
+    const Rgb p = Pixel(renderer_->Render(scene, FrontView(), 64, 48).colour, 32, 14);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], expected[units][c], 1) << units << " units, channel " << c;
+  }
+}
+
 TEST_F(RendererTest, EmissionAddsToTheLitColourAndClampsAtOne) {
   Scene scene;
   DrawItem item;
