@@ -5,15 +5,12 @@
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <tinyxml2.h>
 
 #include <Eigen/LU>
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string_view>
 #include <system_error>
 #include <tuple>
@@ -42,29 +39,6 @@ bool IsStlFile(const fs::path& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   return ext == ".stl" || ext == ".stlb";
-}
-
-// getMeshUnitRescale() in mesh_loader.cpp: <COLLADA><asset><unit meter="..."> of a file that
-// parses as XML, else 1. assimp also folds the unit into the root node's transform, but RViz drops
-// that transform (see AddNode) and applies this factor instead. Only files starting with '<' are
-// parsed: nothing else can be an XML document with a COLLADA element.
-float UnitRescale(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(256, '\0');
-  head.resize(in.read(head.data(), head.size()).gcount());
-  const size_t first = head.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
-  if (first == std::string::npos || head[first] != '<') return 1.f;
-  in.clear();
-  in.seekg(0);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  tinyxml2::XMLDocument doc;
-  if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) return 1.f;
-  const tinyxml2::XMLElement* collada = doc.FirstChildElement("COLLADA");
-  const tinyxml2::XMLElement* asset = collada ? collada->FirstChildElement("asset") : nullptr;
-  const tinyxml2::XMLElement* unit = asset ? asset->FirstChildElement("unit") : nullptr;
-  float scale = 1.f;
-  if (unit) unit->QueryFloatAttribute("meter", &scale);  // a bad value leaves 1, as in RViz
-  return scale;
 }
 
 // loadMaterials() in mesh_loader.cpp: the diffuse colour starts white and "$clr.diffuse" sets it
@@ -109,7 +83,6 @@ std::string UnitTexture(const aiMaterial& material, const fs::path& mesh_path) {
 struct Builder {
   const fs::path& path;
   const aiScene& scene;
-  float unit_scale;
   bool is_stl;
   MeshFile& out;
 
@@ -117,14 +90,21 @@ struct Builder {
     throw Error(SourceLocation{path.string()}, message);
   }
 
-  // buildMesh() in mesh_loader.cpp: a node's meshes are placed by the node's transform times
-  // those of its ancestors except the root ("Don't convert to y-up orientation, which is what the
-  // root node in Assimp does"), so the root's up-axis rotation (and its unit scale, applied again
-  // as unit_scale) is dropped, except for meshes attached to the root itself. Positions are then
-  // scaled by unit_scale; normals go through the inverse transpose and are renormalised.
-  // `above` is the product of the transforms between the root (excluded) and `node`.
-  void AddNode(const aiNode& node, const aiMatrix4x4& above) {
-    const aiMatrix4x4 transform = above * node.mTransformation;
+  // buildMesh() in mesh_loader.cpp, as RViz 1.14.14 and later have it: a node's meshes are placed
+  // by the node's transform after those of its ancestors, where the root node's transform loses
+  // its rotation but keeps its scale and translation (assimp's Decompose). assimp turns a COLLADA
+  // file's up axis into a rotation of the root and its <unit> into a scale of the root, so the up
+  // axis is ignored and the unit honoured; a glTF file whose single node is the root keeps that
+  // node's translation and scale but not its rotation. Normals go through the inverse transpose
+  // and are renormalised. `parent` is the transform `node`'s parent placed its meshes by.
+  void AddNode(const aiNode& node, const aiMatrix4x4& parent) {
+    aiMatrix4x4 transform = parent * node.mTransformation;
+    if (!node.mParent) {
+      aiVector3D scaling, position;
+      aiQuaternion rotation;
+      node.mTransformation.Decompose(scaling, rotation, position);
+      transform = aiMatrix4x4(scaling, aiQuaternion(), position);
+    }
     Eigen::Matrix4f X;
     for (int r = 0; r < 4; ++r) {
       for (int c = 0; c < 4; ++c) X(r, c) = transform[r][c];
@@ -137,8 +117,7 @@ struct Builder {
       if (node.mMeshes[i] >= scene.mNumMeshes) Fail("a node refers to a mesh that does not exist");
       AddMesh(*scene.mMeshes[node.mMeshes[i]], linear, translation, normal_matrix);
     }
-    const aiMatrix4x4 below = node.mParent ? transform : aiMatrix4x4();
-    for (unsigned i = 0; i < node.mNumChildren; ++i) AddNode(*node.mChildren[i], below);
+    for (unsigned i = 0; i < node.mNumChildren; ++i) AddNode(*node.mChildren[i], transform);
   }
 
   void AddMesh(const aiMesh& in, const Eigen::Matrix3f& linear, const Eigen::Vector3f& translation,
@@ -168,8 +147,7 @@ struct Builder {
     for (unsigned v = 0; v < in.mNumVertices; ++v) {
       const aiVector3D& p = in.mVertices[v];
       const aiVector3D& n = in.mNormals[v];
-      mesh.positions.push_back(unit_scale *
-                               (linear * Eigen::Vector3f(p.x, p.y, p.z) + translation));
+      mesh.positions.push_back(linear * Eigen::Vector3f(p.x, p.y, p.z) + translation);
       mesh.normals.push_back((normal_matrix * Eigen::Vector3f(n.x, n.y, n.z)).normalized());
       if (in.HasTextureCoords(0)) mesh.uvs.emplace_back(in.mTextureCoords[0][v].x, in.mTextureCoords[0][v].y);
     }
@@ -204,8 +182,7 @@ MeshFile Load(const fs::path& path) {
   if (!scene || !scene->mRootNode)
     throw Error(where, std::string("cannot read mesh file: ") + importer.GetErrorString());
   MeshFile file;
-  Builder{path, *scene, UnitRescale(path), IsStlFile(path), file}.AddNode(*scene->mRootNode,
-                                                                          aiMatrix4x4());
+  Builder{path, *scene, IsStlFile(path), file}.AddNode(*scene->mRootNode, aiMatrix4x4());
   if (file.parts.empty())
     throw Error(where, "no triangles in the mesh file");  // RViz: "No meshes found in file"
   return file;

@@ -17,9 +17,9 @@ namespace urdfsnap::geometry {
 
 // One sub-mesh of a file: one assimp mesh as placed by one node of the file's node tree.
 struct MeshPart {
-  // Positions in metres of the mesh frame (node transforms and the COLLADA unit applied, the
-  // rotation of the root node dropped as RViz does); normals as in the file, else flat ones
-  // generated from the winding.
+  // Positions in metres of the mesh frame (node transforms applied, the root node's without its
+  // rotation as RViz does, which honours a COLLADA unit and ignores its up axis); normals as in
+  // the file, else flat ones generated from the winding.
   TriangleMesh mesh;
   // True where RViz gives the sub-mesh the link's URDF material (STL files, whose sub-meshes get
   // Ogre's BaseWhiteNoLighting); false where the file's own material is kept.

@@ -334,28 +334,55 @@ TEST_F(MeshFileTest, EveryTextureMapIsATextureUnitShowingTheDiffuseMap) {
   EXPECT_TRUE(bump_only->parts[0].diffuse.isApprox(Eigen::Vector4f(0.8f, 0.6f, 0.4f, 1)));
 }
 
-TEST_F(MeshFileTest, AnEmbeddedDiffuseMapIsNoImageForTheTextureUnits) {
-  // glTF: one triangle whose base colour texture is a PNG inside the file (assimp names it "*0"
-  // and reports it as a diffuse and a base colour map); RViz looks for a file named "*0"
-  const std::string png_1x1 =
-      "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAIAAACQd1PeAAAADElEQVR4nGP4z8AAAAMBAQDJ/pLvAAAAAElFTkSuQmCC";
+// A glTF file of one triangle (0,0,0), (1,0,0), (0,1,0), facing +z, placed by `nodes` (a JSON
+// array whose first node is the scene's only root, one of them holding mesh 0) and with
+// `material` (a JSON object, which may close the array and add more top-level entries).
+std::string GltfTriangle(const std::string& nodes, const std::string& material) {
   const std::string triangle =   // 3 float positions, then indices 0 1 2 as uint16 (+ padding)
       "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA=";
-  const std::string gltf = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
-    "nodes": [{"mesh": 0}],
-    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
-    "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
-    "textures": [{"source": 0}], "images": [{"uri": "data:image/png;base64,)" + png_1x1 + R"("}],
+  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" + nodes +
+         R"(, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+    "materials": [)" + material + R"(],
     "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,)" + triangle + R"("}],
     "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
                     {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
     "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
                    "min": [0, 0, 0], "max": [1, 1, 0]},
                   {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]})";
+}
+
+TEST_F(MeshFileTest, AnEmbeddedDiffuseMapIsNoImageForTheTextureUnits) {
+  // the base colour texture is a PNG inside the file: assimp names it "*0" and reports it as a
+  // diffuse and a base colour map; RViz looks for a file named "*0"
+  const std::string png_1x1 =
+      "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAIAAACQd1PeAAAADElEQVR4nGP4z8AAAAMBAQDJ/pLvAAAAAElFTkSuQmCC";
+  const std::string gltf = GltfTriangle(R"([{"mesh": 0}])",
+                                        R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+    "textures": [{"source": 0}], "images": [{"uri": "data:image/png;base64,)" + png_1x1 + R"("})");
   const auto file = LoadMeshFile(Write("embedded.gltf", gltf));
   ASSERT_EQ(file->parts.size(), 1u);
   EXPECT_EQ(file->parts[0].texture_units, 2);
   EXPECT_EQ(file->parts[0].texture, "");
+}
+
+TEST_F(MeshFileTest, TheRootNodeKeepsItsScaleAndTranslationButNotItsRotation) {
+  // root: turned 90 degrees about x, halved, moved 1 m along z; its child turned 90 degrees about z
+  const std::string nodes = R"([
+      {"children": [1], "rotation": [0.7071068, 0, 0, 0.7071068], "scale": [0.5, 0.5, 0.5],
+       "translation": [0, 0, 1]},
+      {"mesh": 0, "rotation": [0, 0, 0.7071068, 0.7071068]}])";
+  const auto nested = LoadMeshFile(Write("nested.gltf", GltfTriangle(nodes, "{}")));
+  ASSERT_EQ(nested->parts.size(), 1u);
+  // (1,0,0) -> child (0,1,0) -> root without rotation: (0, 0.5, 1); the face turns to +z still
+  const TriangleMesh& mesh = nested->parts[0].mesh;
+  EXPECT_TRUE(mesh.positions[1].isApprox(Eigen::Vector3f(0, 0.5f, 1), 1e-5f)) << mesh.positions[1].transpose();
+  EXPECT_TRUE(mesh.positions[2].isApprox(Eigen::Vector3f(-0.5f, 0, 1), 1e-5f)) << mesh.positions[2].transpose();
+  EXPECT_TRUE(mesh.normals[0].isApprox(Eigen::Vector3f(0, 0, 1), 1e-5f)) << mesh.normals[0].transpose();
+  // the mesh on the root itself: the same rule
+  const auto on_root = LoadMeshFile(Write("root.gltf", GltfTriangle(
+      R"([{"mesh": 0, "rotation": [0.7071068, 0, 0, 0.7071068], "translation": [0, 0, 1]}])", "{}")));
+  EXPECT_TRUE(on_root->parts[0].mesh.positions[2].isApprox(Eigen::Vector3f(0, 1, 1), 1e-5f))
+      << on_root->parts[0].mesh.positions[2].transpose();
 }
 
 TEST_F(MeshFileTest, EachFileIsLoadedOnce) {

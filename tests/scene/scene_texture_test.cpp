@@ -129,6 +129,8 @@ TEST_F(SceneTextureTest, EveryMapOfAMeshMaterialModulatesByItsDiffuseMap) {
   EXPECT_EQ(three.texture, one.texture);
   EXPECT_EQ(three.texture_units, 3);
   EXPECT_EQ(item_of("diffuse_bump_obj").texture_units, 2);
+  EXPECT_EQ(item_of("base_colour_gltf").texture, one.texture);   // glTF: diffuse and base colour
+  EXPECT_EQ(item_of("base_colour_gltf").texture_units, 2);
   // maps without a diffuse one: Ogre's warning texture over the material's own colour, said once
   const DrawItem bump_only = item_of("bump_only");
   EXPECT_EQ(bump_only.texture, WarningTexture());
