@@ -7,7 +7,7 @@
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
-  liburdfdom-dev libeigen3-dev libosmesa6-dev libstb-dev zlib1g-dev
+  liburdfdom-dev libeigen3-dev libosmesa6-dev libstb-dev libjpeg-dev zlib1g-dev
   libtinyxml2-dev libexpat1-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libbenchmark-dev fonts-liberation libfreetype-dev python3
   libcpp-httplib-dev chromium nodejs

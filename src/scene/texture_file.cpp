@@ -1,12 +1,15 @@
-// Texture decoding with stb_image (compiled here, privately) and a process-wide cache.
+// Texture decoding (JPEG as FreeImage decodes it for Ogre, the other formats with stb_image,
+// compiled here privately) and a process-wide cache.
 #include "scene/texture_file.h"
 
 #include <filesystem>
 #include <utility>
 
 #include "common/error.h"
+#include "common/file_reading.h"
 #include "common/shared_cache.h"
 #include "image/image.h"
+#include "scene/jpeg_texture.h"
 
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
@@ -21,9 +24,22 @@ namespace {
 
 static_assert(STBI_MAX_DIMENSIONS == image::kMaxImageSide);
 
+// Largest texture file read: a 16384x16384 RGBA image with room to spare for its encoding.
+constexpr std::size_t kMaxTextureFileBytes = std::size_t{1} << 30;
+
 std::shared_ptr<const TextureImage> Decode(const std::string& path) {
+  std::string bytes;
+  try {
+    bytes = ReadFileBounded(path, kMaxTextureFileBytes);
+  } catch (const FileReadError& e) {
+    throw Error(SourceLocation{path}, std::string("cannot read texture: ") + e.what());
+  }
+  if (IsJpeg(bytes)) {
+    if (std::shared_ptr<TextureImage> jpeg = DecodeJpegAsFreeImage(bytes, path)) return jpeg;
+  }
   int width = 0, height = 0, channels = 0;
-  stbi_uc* pixels = stbi_load(path.c_str(), &width, &height, &channels, 4);
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                          static_cast<int>(bytes.size()), &width, &height, &channels, 4);
   if (!pixels) throw Error(SourceLocation{path}, std::string("cannot read texture: ") + stbi_failure_reason());
   auto texture = std::make_shared<TextureImage>();
   texture->width = width;

@@ -1,5 +1,6 @@
-// Image files used as textures (URDF <texture>, the diffuse maps of mesh materials), decoded with
-// stb_image into RGBA as Ogre's image codecs would hand them to RViz. GL-free.
+// Image files used as textures (URDF <texture>, the diffuse maps of mesh materials), decoded into
+// RGBA as Ogre's FreeImage codec hands them to RViz: JPEG through libjpeg with FreeImage's
+// settings (jpeg_texture.h), the rest with stb_image (lossless formats decode alike). GL-free.
 #pragma once
 
 #include <memory>
@@ -12,8 +13,8 @@ namespace urdfsnap::scene {
 // Loads the image file at `path` (PNG, JPEG, BMP, TGA, GIF, PSD, PNM) as 4-channel RGBA, top row
 // first. While the returned image is held anywhere, later calls naming the same unchanged file
 // return it (common/shared_cache.h). Thread-safe. Throws
-// urdfsnap::Error "PATH: ..." when the file is missing, not an image, or larger than
-// image::kMaxImageSide on a side.
+// urdfsnap::Error "PATH: ..." when the file is missing, larger than 1 GiB, not an image, or
+// larger than image::kMaxImageSide on a side.
 std::shared_ptr<const TextureImage> LoadTextureFile(const std::string& path);
 
 // Ogre's warning texture (TextureManager::_getWarningTexture, Ogre 1.12): 8x8 texels of diagonal
