@@ -385,6 +385,13 @@ TEST_F(MeshFileTest, TheRootNodeKeepsItsScaleAndTranslationButNotItsRotation) {
       << on_root->parts[0].mesh.positions[2].transpose();
 }
 
+TEST_F(MeshFileTest, AnAbsoluteTextureNameStaysInsideTheMeshFolder) {
+  // mesh_loader.cpp appends the name to the folder and a "/": "/skin.png" is the folder's file
+  Write("m.mtl", "newmtl s\nKd 1 1 1\nmap_Kd /skin.png\n");
+  const auto file = LoadMeshFile(Write("t.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl s\nf 1 2 3\n"));
+  EXPECT_EQ(file->parts.back().texture, dir_.string() + "//skin.png");
+}
+
 TEST_F(MeshFileTest, EachFileIsLoadedOnce) {
   const std::string path = Write("cube.stl", BinaryStl(Cube()));
   const auto first = LoadMeshFile(path);
