@@ -5,7 +5,11 @@
 #include <cctype>
 #include <cmath>
 
+#include "xacro/call_arguments.h"
 #include "xacro/operators.h"
+#include "xacro/python_iterators.h"
+#include "xacro/python_set.h"
+#include "xacro/python_types.h"
 #include "xacro/symbol_table.h"
 
 namespace urdfsnap::xacro {
@@ -354,6 +358,131 @@ Value DictMethod(const Value& v, const std::string& name) {
   throw EvalError("'dict' object has no attribute '" + name + "'");
 }
 
+// a method of a set or frozenset
+Value SetMethod(const Value& v, const std::string& name) {
+  const std::string full = TypeName(v) + "." + name;
+  // methods of any number of iterables, or of exactly one
+  const auto many = [&](Value (*body)(const Value&, ValueList&)) {
+    return Value::Callable(name, [v, full, body](ValueList& a, Kwargs& kw) {
+      NoKeywords(full, kw);
+      return body(v, a);
+    });
+  };
+  const auto one = [&](Value (*body)(const Value&, const Value&)) {
+    return Value::Callable(name, [v, full, body](ValueList& a, Kwargs& kw) {
+      NoKeywords(full, kw);
+      TakesOne(full, a);
+      return body(v, a[0]);
+    });
+  };
+  const auto none = [&](Value (*body)(const Value&)) {
+    return Value::Callable(name, [v, full, body](ValueList& a, Kwargs& kw) {
+      NoKeywords(full, kw);
+      if (!a.empty()) throw EvalError(full + "() takes no arguments (" + std::to_string(a.size()) + " given)");
+      return body(v);
+    });
+  };
+  if (name == "copy") {
+    return none([](const Value& s) { return s.type == Value::Type::kFrozenSet ? s : SetCopy(s); });
+  }
+  if (name == "union") return many([](const Value& s, ValueList& a) { return SetUnion(s, a); });
+  if (name == "intersection") {
+    return many([](const Value& s, ValueList& a) {
+      if (a.empty()) return SetCopy(s);
+      Value r = s;
+      for (const Value& other : a) r = SetIntersection(r, other);
+      return r;
+    });
+  }
+  if (name == "difference") {
+    return many([](const Value& s, ValueList& a) {
+      if (a.empty()) return SetCopy(s);
+      Value r = SetDifference(s, a[0]);
+      for (size_t k = 1; k < a.size(); ++k) SetDifferenceUpdate(r, a[k]);
+      return r;
+    });
+  }
+  if (name == "symmetric_difference") return one(SetSymmetricDifference);
+  if (name == "issubset") return one([](const Value& s, const Value& o) { return Value::Bool(IsSubset(s, o)); });
+  if (name == "issuperset") return one([](const Value& s, const Value& o) { return Value::Bool(IsSuperset(s, o)); });
+  if (name == "isdisjoint") return one([](const Value& s, const Value& o) { return Value::Bool(IsDisjoint(s, o)); });
+  if (v.type == Value::Type::kSet) {
+    // the methods that change the set
+    if (name == "add") return one([](const Value& s, const Value& k) { SetOf(s).Add(k); return Value::None(); });
+    if (name == "discard") return one([](const Value& s, const Value& k) { SetOf(s).Discard(k); return Value::None(); });
+    if (name == "remove") {
+      return one([](const Value& s, const Value& k) {
+        if (!SetOf(s).Discard(k)) throw EvalError(Repr(k));
+        return Value::None();
+      });
+    }
+    if (name == "pop") return none([](const Value& s) { return SetOf(s).Pop(); });
+    if (name == "clear") return none([](const Value& s) { SetOf(s).Clear(); return Value::None(); });
+    if (name == "update") {
+      return many([](const Value& s, ValueList& a) {
+        for (const Value& other : a) SetOf(s).Update(other);
+        return Value::None();
+      });
+    }
+    if (name == "intersection_update") {
+      return many([](const Value& s, ValueList& a) {
+        Value r = s;
+        for (const Value& other : a) r = SetIntersection(r, other);
+        if (r.object != s.object) SetOf(s) = SetOf(r);
+        return Value::None();
+      });
+    }
+    if (name == "difference_update") {
+      return many([](const Value& s, ValueList& a) {
+        for (const Value& other : a) SetDifferenceUpdate(s, other);
+        return Value::None();
+      });
+    }
+    if (name == "symmetric_difference_update") {
+      return one([](const Value& s, const Value& o) { SetSymmetricDifferenceUpdate(s, o); return Value::None(); });
+    }
+  }
+  throw EvalError("'" + TypeName(v) + "' object has no attribute '" + name + "'");
+}
+
+Value RangeAttribute(const Value& v, const std::string& name) {
+  if (name == "start") return (*v.list)[0];
+  if (name == "stop") return (*v.list)[1];
+  if (name == "step") return (*v.list)[2];
+  if (name == "count" || name == "index") {
+    return Value::Callable(name, [v, name](ValueList& a, Kwargs& kw) {
+      NoKeywords("range." + name, kw);
+      TakesOne("range." + name, a);
+      const bool found = RangeContains(v, a[0]);
+      if (name == "count") return Value::Integer(found ? 1 : 0);
+      if (!found) throw EvalError(Repr(a[0]) + " is not in range");
+      // the position of an equal item
+      Int k = 0;
+      const NextFunction next = IterateLazily(v);
+      while (std::optional<Value> item = next()) {
+        if (Equal(*item, a[0])) break;
+        ++k;
+      }
+      return Value::Integer(k);
+    });
+  }
+  throw EvalError("'range' object has no attribute '" + name + "'");
+}
+
+Value SliceAttribute(const Value& v, const std::string& name) {
+  if (name == "start") return (*v.list)[0];
+  if (name == "stop") return (*v.list)[1];
+  if (name == "step") return (*v.list)[2];
+  if (name == "indices") {
+    return Bind("slice.indices", [v](ValueList& a) {
+      TakesOne("slice.indices", a);
+      if (!a[0].IsIntLike()) throw EvalError("'" + TypeName(a[0]) + "' object cannot be interpreted as an integer");
+      return SliceIndicesTuple(v, AsInt(a[0]));
+    });
+  }
+  throw EvalError("'slice' object has no attribute '" + name + "'");
+}
+
 }  // namespace
 
 Value GetAttribute(const Value& v, const std::string& name) {
@@ -375,6 +504,22 @@ Value GetAttribute(const Value& v, const std::string& name) {
     case Value::Type::kStr: return StrMethod(v.s, name);
     case Value::Type::kList:
     case Value::Type::kTuple: return SequenceMethod(v, name);
+    case Value::Type::kSet:
+    case Value::Type::kFrozenSet: return SetMethod(v, name);
+    case Value::Type::kRange: return RangeAttribute(v, name);
+    case Value::Type::kSlice: return SliceAttribute(v, name);
+    case Value::Type::kType: return TypeAttribute(v, name);
+    case Value::Type::kInstance: return InstanceAttribute(v, name);
+    case Value::Type::kComplex:
+      if (name == "real") return Value::Float(v.f);
+      if (name == "imag") return Value::Float(v.imag);
+      if (name == "conjugate") {
+        return Bind("complex.conjugate", [re = v.f, im = v.imag](ValueList& a) {
+          CheckArity("conjugate", a, 0, 0);
+          return Value::Complex(re, -im);
+        });
+      }
+      break;
     case Value::Type::kFloat:
       if (name == "is_integer") {
         return Bind("float.is_integer", [f = v.f](ValueList&) { return Value::Bool(std::isfinite(f) && f == static_cast<double>(static_cast<long long>(f))); });

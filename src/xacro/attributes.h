@@ -1,5 +1,6 @@
 // Attribute access on values: members of the math/python/xacro modules, properties of an
-// include namespace, keys of yaml dicts, and the methods of str, list, tuple, dict and float.
+// include namespace, keys of yaml dicts, the methods of str, list, tuple, dict, set and
+// frozenset, the attributes of numbers, ranges, slices, types and instances of classes.
 #pragma once
 
 #include <string>

@@ -8,6 +8,8 @@
 #include "xacro/attributes.h"
 #include "xacro/evaluation_budget.h"
 #include "xacro/operators.h"
+#include "xacro/python_hash.h"
+#include "xacro/python_set.h"
 
 namespace urdfsnap::xacro {
 namespace {
@@ -30,13 +32,10 @@ class Evaluator {
         const Value v = Eval(*e.kids[0]);
         const Expr& index = *e.kids[1];
         if (index.kind != Expr::Kind::kSlice) return Subscript(v, Eval(index));
-        auto bound = [this](const ExprPtr& b) -> std::optional<long> {
-          if (!b) return std::nullopt;
-          const Value x = Eval(*b);
-          if (x.type == Value::Type::kNone) return std::nullopt;
-          return AsIndex(x, "slice indices");
-        };
-        return Slice(v, bound(index.kids[0]), bound(index.kids[1]), bound(index.kids[2]));
+        // v[a:b:c] is v[slice(a, b, c)]
+        auto bound = [this](const ExprPtr& b) { return b ? Eval(*b) : Value::None(); };
+        Value start = bound(index.kids[0]), stop = bound(index.kids[1]);
+        return Subscript(v, Value::SliceOf(std::move(start), std::move(stop), bound(index.kids[2])));
       }
       case Expr::Kind::kSlice: throw EvalError("invalid syntax (<expression>, line 1)");
       case Expr::Kind::kCall: return Call(e);
@@ -81,14 +80,24 @@ class Evaluator {
         std::vector<std::pair<Value, Value>> items;
         for (size_t k = 0; k + 1 < e.kids.size(); k += 2) {
           Value key = Eval(*e.kids[k]);
+          Hash(key);  // keys must be hashable
           DictPut(items, std::move(key), Eval(*e.kids[k + 1]));
         }
         return Value::Dict(std::move(items));
       }
-      case Expr::Kind::kListComp: {
+      case Expr::Kind::kSet: {
+        Value set = MakeSet(Value::Type::kSet);
+        for (const auto& kid : e.kids) SetOf(set).Add(Eval(*kid));
+        return set;
+      }
+      case Expr::Kind::kListComp:
+      case Expr::Kind::kSetComp: {
         ValueList out;
         Comprehend(e, 0, out);
-        return Value::List(std::move(out));
+        if (e.kind == Expr::Kind::kListComp) return Value::List(std::move(out));
+        Value set = MakeSet(Value::Type::kSet);
+        for (const Value& v : out) SetOf(set).Add(v);
+        return set;
       }
     }
     throw EvalError("invalid syntax (<expression>, line 1)");
@@ -101,18 +110,14 @@ class Evaluator {
     if (op == "in") return Contains(b, a);
     if (op == "not in") return !Contains(b, a);
     if (op == "is" || op == "is not") {
-      // identity: None, bools and the same container are the only cases that matter here
+      // identity: None, bools and the same container, type or object are the cases that matter
       bool same = a.type == b.type && (a.type == Value::Type::kNone ||
                                        (a.type == Value::Type::kBool && a.b == b.b) ||
                                        (a.list && a.list == b.list) || (a.dict && a.dict == b.dict) ||
-                                       (a.fn && a.fn == b.fn));
+                                       (a.object && a.object == b.object) || (a.fn && a.fn == b.fn));
       return op == "is" ? same : !same;
     }
-    const int c = Compare(a, b, op.c_str());
-    if (op == "<") return c < 0;
-    if (op == ">") return c > 0;
-    if (op == "<=") return c <= 0;
-    return c >= 0;
+    return RichCompare(op, a, b);
   }
 
   Value Call(const Expr& e) {
@@ -124,10 +129,7 @@ class Evaluator {
     for (size_t k = 0; k < n_pos; ++k) args.push_back(Eval(*e.kids[1 + k]));
     Kwargs kwargs;
     for (size_t k = 0; k < n_kw; ++k) kwargs.emplace_back(e.ops[k], Eval(*e.kids[1 + n_pos + k]));
-    if (callee.type != Value::Type::kFunction) {
-      throw EvalError("'" + TypeName(callee) + "' object is not callable");
-    }
-    return callee.fn->call(args, kwargs);
+    return CallValue(callee, std::move(args), std::move(kwargs));
   }
 
   void Comprehend(const Expr& e, size_t clause_index, ValueList& out) {
@@ -138,20 +140,20 @@ class Evaluator {
       return;
     }
     const ComprehensionClause& clause = e.clauses[clause_index];
-    const ValueList items = Iterate(Eval(*clause.iter));
+    const NextFunction next = IterateLazily(Eval(*clause.iter));
     const size_t mark = locals_.size();
-    for (const Value& item : items) {
+    while (const std::optional<Value> item = next()) {
       EvaluationBudget::Charge(1);  // filtered-out steps are work too
       locals_.resize(mark);
       if (clause.unpack) {
-        const ValueList parts = Iterate(item);
+        const ValueList parts = Iterate(*item);
         if (parts.size() != clause.targets.size()) {
           throw EvalError("cannot unpack " + std::to_string(parts.size()) + " values into " +
                           std::to_string(clause.targets.size()) + " names");
         }
         for (size_t k = 0; k < parts.size(); ++k) locals_.emplace_back(clause.targets[k], parts[k]);
       } else {
-        locals_.emplace_back(clause.targets[0], item);
+        locals_.emplace_back(clause.targets[0], *item);
       }
       bool keep = true;
       for (const auto& cond : clause.conditions) {

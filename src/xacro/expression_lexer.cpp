@@ -1,5 +1,5 @@
 // Python's tokenizer for expressions: number literals (with underscores, 0x/0o/0b prefixes,
-// exponents), string literals (quotes, escapes, raw and triple-quoted forms), names, operators.
+// exponents, imaginary `j`), string literals (quotes, escapes, raw and triple-quoted forms), names, operators.
 #include "xacro/expression_lexer.h"
 
 #include <cctype>
@@ -95,8 +95,11 @@ Token ReadNumber(const std::string& s, size_t& k) {
         text += exp + digits;
       }
     }
-    if (k < s.size() && (s[k] == 'j' || s[k] == 'J')) throw EvalError("complex numbers are not supported");
-    if (is_float) {
+    if (k < s.size() && (s[k] == 'j' || s[k] == 'J')) {
+      // an imaginary literal: 2j, 1.5e3J
+      ++k;
+      t.number = Value::Complex(0.0, std::strtod(text.c_str(), nullptr));
+    } else if (is_float) {
       t.number = Value::Float(std::strtod(text.c_str(), nullptr));
     } else {
       // Python forbids leading zeros in decimal integer literals ("007")

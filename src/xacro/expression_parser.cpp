@@ -72,6 +72,15 @@ class Parser {
     return e;
   }
 
+  // Python's keywords: not names (`python.True` is a syntax error too)
+  static bool IsReserved(const std::string& name) {
+    static const std::set<std::string> kKeywords = {"and", "or", "not", "in", "is", "if", "else", "for",
+                                                    "lambda", "import", "def", "class", "return", "yield",
+                                                    "from", "with", "as", "del", "pass", "while", "await",
+                                                    "async", "global", "True", "False", "None"};
+    return kKeywords.count(name) != 0;
+  }
+
   void NoteName(const std::string& name) {
     if (name.size() >= 2 && name[0] == '_' && name[1] == '_') invalid_.insert(name);
   }
@@ -213,7 +222,7 @@ class Parser {
     ExprPtr e = ParseAtom();
     while (true) {
       if (Accept(".")) {
-        if (Peek().kind != Token::Kind::kName) Fail();
+        if (Peek().kind != Token::Kind::kName || IsReserved(Peek().text)) Fail();
         auto a = Make(Expr::Kind::kAttr);
         a->name = Peek().text;
         NoteName(a->name);
@@ -332,17 +341,13 @@ class Parser {
       return e;
     }
     if (t.kind == Token::Kind::kName) {
-      static const std::set<std::string> kKeywords = {"and", "or", "not", "in", "is", "if", "else",
-                                                      "for", "lambda", "import", "def", "class",
-                                                      "return", "yield", "from", "with", "as", "del",
-                                                      "pass", "while", "await", "async", "global"};
       auto e = Make(Expr::Kind::kConst);
       if (t.text == "True" || t.text == "False") {
         e->constant = Value::Bool(t.text == "True");
       } else if (t.text == "None") {
         e->constant = Value::None();
       } else {
-        if (kKeywords.count(t.text)) Fail();
+        if (IsReserved(t.text)) Fail();
         e->kind = Expr::Kind::kName;
         e->name = t.text;
         NoteName(t.text);
@@ -354,6 +359,30 @@ class Parser {
     if (Accept("[")) return ParseDisplay("]", Expr::Kind::kList);
     if (Accept("{")) {
       auto dict = Make(Expr::Kind::kDict);
+      if (!IsOp("}")) {
+        // a set display or comprehension: {a, b}, {x for x in y}
+        ExprPtr first = ParseTest();
+        if (IsKeyword("for")) {
+          first = ParseComprehension(std::move(first));
+          first->kind = Expr::Kind::kSetComp;
+          Expect("}");
+          return first;
+        }
+        if (!IsOp(":")) {
+          auto set = Make(Expr::Kind::kSet);
+          set->kids.push_back(std::move(first));
+          while (Accept(",") && !IsOp("}")) set->kids.push_back(ParseTest());
+          Expect("}");
+          return set;
+        }
+        Expect(":");
+        dict->kids.push_back(std::move(first));
+        dict->kids.push_back(ParseTest());
+        if (!Accept(",")) {
+          Expect("}");
+          return dict;
+        }
+      }
       while (!Accept("}")) {
         dict->kids.push_back(ParseTest());
         Expect(":");

@@ -39,7 +39,9 @@ struct Expr {
     kList,
     kTuple,
     kDict,       // kids: key, value, key, value, ...
+    kSet,        // {kids...}
     kListComp,   // [kids[0] clauses...]
+    kSetComp,    // {kids[0] clauses...}
   };
   Kind kind = Kind::kConst;
   Value constant;

@@ -5,6 +5,11 @@
 
 #include "xacro/evaluation_budget.h"
 #include "xacro/number_format.h"
+#include "xacro/python_complex.h"
+#include "xacro/python_hash.h"
+#include "xacro/python_iterators.h"
+#include "xacro/python_set.h"
+#include "xacro/python_types.h"
 #include "xacro/string_format.h"
 
 namespace urdfsnap::xacro {
@@ -69,10 +74,8 @@ Value IntArith(const std::string& op, Int x, Int y) {
   } else if (op == "%") {
     r = FloorMod(x, y);
   } else if (op == "**") {
-    if (y < 0) {
-      if (x == 0) throw EvalError("0.0 cannot be raised to a negative power");
-      return Value::Float(std::pow(static_cast<double>(x), static_cast<double>(y)));
-    }
+    // a negative exponent makes it float ** float
+    if (y < 0) return FloatPower(static_cast<double>(x), static_cast<double>(y));
     r = CheckedPow(x, y);
   } else if (op == "<<" || op == ">>") {
     if (y < 0) throw EvalError("negative shift count");
@@ -121,12 +124,17 @@ Value FloatArith(const std::string& op, const Value& a, const Value& b) {
     if (y == 0.0) throw EvalError("float modulo");
     return Value::Float(FloatMod(x, y));
   }
-  if (op == "**") {
-    if (x == 0.0 && y < 0) throw EvalError("0.0 cannot be raised to a negative power");
-    if (x < 0 && y != std::floor(y)) throw EvalError("complex results are not supported");
-    return Value::Float(std::pow(x, y));
-  }
+  if (op == "**") return FloatPower(x, y);
   Unsupported(op, a, b);
+}
+
+// s OP t for two sets: | & - ^ (the result has s's type)
+Value SetOperator(const std::string& op, const Value& s, const Value& t) {
+  if (op == "|") return SetUnion(s, {t});
+  if (op == "&") return SetIntersection(s, t);
+  if (op == "-") return SetDifference(s, t);
+  if (op == "^") return SetSymmetricDifference(s, t);
+  Unsupported(op, s, t);
 }
 
 Value Repeat(const Value& seq, const Value& count) {
@@ -180,6 +188,11 @@ Value BinaryOp(const std::string& op, const Value& a, const Value& b) {
     if (op == "<<" || op == ">>" || op == "&" || op == "|" || op == "^") Unsupported(op, a, b);
     return FloatArith(op, a, b);
   }
+  const auto numeric = [](const Value& v) { return v.IsNumber() || v.type == Value::Type::kComplex; };
+  if (numeric(a) && numeric(b)) return ComplexArith(op, a, b);
+  if (a.IsAnySet() && b.IsAnySet()) return SetOperator(op, a, b);
+  const auto typelike = [](const Value& v) { return v.type == Value::Type::kType || v.type == Value::Type::kUnion; };
+  if (op == "|" && (typelike(a) || typelike(b))) return TypeUnion(a, b);
   if (op == "+") {
     if (a.type == Value::Type::kStr && b.type == Value::Type::kStr) {
       if (a.s.size() + b.s.size() > kMaxItems) throw EvalError("string too large");
@@ -212,6 +225,7 @@ Value BinaryOp(const std::string& op, const Value& a, const Value& b) {
 }
 
 Value UnaryOp(const std::string& op, const Value& a) {
+  if (a.type == Value::Type::kComplex && op != "~") return Value::Complex(op == "-" ? -a.f : a.f, op == "-" ? -a.imag : a.imag);
   if (!a.IsNumber()) throw EvalError("bad operand type for unary " + op + ": '" + TypeName(a) + "'");
   if (op == "~") {
     if (!a.IsIntLike()) throw EvalError("bad operand type for unary ~: 'float'");
@@ -241,16 +255,74 @@ bool Contains(const Value& container, const Value& item) {
       }
       return false;
     case Value::Type::kDict:
+      Hash(item);  // a dict lookup wants a hashable key
+      [[fallthrough]];
     case Value::Type::kModule:
       for (const auto& kv : container.dict->items) {
         if (Equal(kv.first, item)) return true;
       }
       return false;
+    case Value::Type::kSet:
+    case Value::Type::kFrozenSet: return SetOf(container).Contains(item);
+    case Value::Type::kRange: return RangeContains(container, item);
+    case Value::Type::kIterator: {
+      // reads the iterator up to the item, as Python does
+      const NextFunction next = IterateLazily(container);
+      while (std::optional<Value> v = next()) {
+        if (Equal(*v, item)) return true;
+      }
+      return false;
+    }
     default: throw EvalError("argument of type '" + TypeName(container) + "' is not iterable");
   }
 }
 
+namespace {
+
+// a slice object's bound: None or an int (huge ints clamp, as they would to any length)
+std::optional<long> SliceBound(const Value& b) {
+  if (b.type == Value::Type::kNone) return std::nullopt;
+  if (!b.IsIntLike()) throw EvalError("slice indices must be integers or None or have an __index__ method");
+  return static_cast<long>(std::clamp(AsInt(b), -(Int(1) << 62), Int(1) << 62));
+}
+
+// the first index, clamped stop, step and count of the items a slice takes from `size` items (CPython's
+// PySlice_AdjustIndices)
+struct SliceIndices {
+  Int first, stop, step, count;  // stop: the clamped stop bound
+};
+
+SliceIndices AdjustSlice(std::optional<long> start, std::optional<long> stop, std::optional<long> step, Int size) {
+  const Int st = step.value_or(1);
+  if (st == 0) throw EvalError("slice step cannot be zero");
+  auto clamp = [&](std::optional<long> bound, Int dflt) {
+    if (!bound) return dflt;
+    const Int b = *bound < 0 ? *bound + size : *bound;
+    if (st > 0) return std::clamp(b, Int(0), size);
+    return std::clamp(b, Int(-1), size - 1);
+  };
+  const Int from = clamp(start, st > 0 ? 0 : size - 1);
+  const Int to = clamp(stop, st > 0 ? size : -1);
+  Int count = 0;
+  if (st > 0 && to > from) count = (to - from - 1) / st + 1;
+  if (st < 0 && to < from) count = (from - to - 1) / -st + 1;
+  return {from, to, st, count};
+}
+
+}  // namespace
+
+Value SliceIndicesTuple(const Value& slice, Int length) {
+  if (length < 0) throw EvalError("length should not be negative");
+  const ValueList& p = *slice.list;
+  const SliceIndices s = AdjustSlice(SliceBound(p[0]), SliceBound(p[1]), SliceBound(p[2]), length);
+  return Value::Tuple({Value::Integer(s.first), Value::Integer(s.stop), Value::Integer(s.step)});
+}
+
 Value Subscript(const Value& v, const Value& index) {
+  if (index.type == Value::Type::kSlice && v.type != Value::Type::kDict) {
+    const ValueList& p = *index.list;
+    return Slice(v, SliceBound(p[0]), SliceBound(p[1]), SliceBound(p[2]));
+  }
   switch (v.type) {
     case Value::Type::kList:
     case Value::Type::kTuple:
@@ -263,7 +335,11 @@ Value Subscript(const Value& v, const Value& index) {
       if (v.type == Value::Type::kStr) return Value::Str(v.s.substr(static_cast<size_t>(k), 1));
       return Wrapped((*v.list)[static_cast<size_t>(k)], v.wrapped);
     }
+    case Value::Type::kRange:
+      if (!index.IsIntLike()) throw EvalError("range indices must be integers or slices, not " + TypeName(index));
+      return RangeItem(v, AsInt(index));
     case Value::Type::kDict:
+      Hash(index);  // a dict lookup wants a hashable key
       for (const auto& kv : v.dict->items) {
         if (Equal(kv.first, index)) return Wrapped(kv.second, v.wrapped);
       }
@@ -274,30 +350,26 @@ Value Subscript(const Value& v, const Value& index) {
 }
 
 Value Slice(const Value& v, std::optional<long> start, std::optional<long> stop, std::optional<long> step) {
+  if (v.type == Value::Type::kRange) {
+    const SliceIndices s = AdjustSlice(start, stop, step, RangeLength(v));
+    const Int r_start = AsInt((*v.list)[0]), r_step = AsInt((*v.list)[2]);
+    return Value::Range(r_start + s.first * r_step, r_start + s.stop * r_step, r_step * s.step);
+  }
   if (v.type != Value::Type::kStr && !v.IsSequence()) {
     throw EvalError("'" + TypeName(v) + "' object is not subscriptable");
   }
-  const long size = static_cast<long>(v.type == Value::Type::kStr ? v.s.size() : v.list->size());
-  const long st = step.value_or(1);
-  if (st == 0) throw EvalError("slice step cannot be zero");
-  auto clamp = [&](std::optional<long> bound, long dflt) {
-    if (!bound) return dflt;
-    long b = *bound < 0 ? *bound + size : *bound;
-    if (st > 0) return std::clamp(b, 0L, size);
-    return std::clamp(b, -1L, size - 1);
-  };
-  const long from = clamp(start, st > 0 ? 0 : size - 1);
-  const long to = clamp(stop, st > 0 ? size : -1);
-  std::string s;
+  const Int size = static_cast<Int>(v.type == Value::Type::kStr ? v.s.size() : v.list->size());
+  const SliceIndices s = AdjustSlice(start, stop, step, size);
+  std::string text;
   ValueList items;
-  for (long k = from; st > 0 ? k < to : k > to; k += st) {
+  for (Int n = 0, k = s.first; n < s.count; ++n, k += s.step) {
     if (v.type == Value::Type::kStr) {
-      s += v.s[static_cast<size_t>(k)];
+      text += v.s[static_cast<size_t>(k)];
     } else {
       items.push_back((*v.list)[static_cast<size_t>(k)]);
     }
   }
-  if (v.type == Value::Type::kStr) return Value::Str(std::move(s));
+  if (v.type == Value::Type::kStr) return Value::Str(std::move(text));
   Value r = v.type == Value::Type::kList ? Value::List(std::move(items)) : Value::Tuple(std::move(items));
   return Wrapped(r, v.wrapped);
 }

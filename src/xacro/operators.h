@@ -28,6 +28,9 @@ Value Subscript(const Value& v, const Value& index);
 // v[start:stop:step]; nullopt stands for an omitted bound.
 Value Slice(const Value& v, std::optional<long> start, std::optional<long> stop, std::optional<long> step);
 
+// slice.indices(length): the slice's start, stop and step clamped to `length` items.
+Value SliceIndicesTuple(const Value& slice, Int length);
+
 // The int value of a value used as an index or count (bool or int); EvalError otherwise.
 long AsIndex(const Value& v, const char* what);
 

@@ -1,12 +1,16 @@
-// Python's rules for values: constructors, str()/repr(), truth, equality and ordering.
+// Python's rules for values: constructors, str()/repr(), truth, equality, ordering, calls and
+// iteration.
 #include "xacro/python_value.h"
-
-#include "xacro/evaluation_budget.h"
 
 #include <cmath>
 #include <cstdio>
 
+#include "xacro/evaluation_budget.h"
 #include "xacro/number_format.h"
+#include "xacro/python_complex.h"
+#include "xacro/python_iterators.h"
+#include "xacro/python_set.h"
+#include "xacro/python_types.h"
 #include "xacro/symbol_table.h"
 
 namespace urdfsnap::xacro {
@@ -29,6 +33,14 @@ Value Value::Float(double v) {
   Value r;
   r.type = Type::kFloat;
   r.f = v;
+  return r;
+}
+
+Value Value::Complex(double real, double imag) {
+  Value r;
+  r.type = Type::kComplex;
+  r.f = real;
+  r.imag = imag;
   return r;
 }
 
@@ -60,6 +72,18 @@ Value Value::Dict(std::vector<std::pair<Value, Value>> items) {
   return r;
 }
 
+Value Value::Range(Int start, Int stop, Int step) {
+  Value r = List({Integer(start), Integer(stop), Integer(step)});
+  r.type = Type::kRange;
+  return r;
+}
+
+Value Value::SliceOf(Value start, Value stop, Value step) {
+  Value r = List({std::move(start), std::move(stop), std::move(step)});
+  r.type = Type::kSlice;
+  return r;
+}
+
 Value Value::Module(std::string name, std::vector<std::pair<Value, Value>> members) {
   Value r = Dict(std::move(members));
   r.type = Type::kModule;
@@ -70,7 +94,7 @@ Value Value::Module(std::string name, std::vector<std::pair<Value, Value>> membe
 Value Value::Callable(std::string name, std::function<Value(ValueList&, Kwargs&)> call) {
   Value r;
   r.type = Type::kFunction;
-  r.fn = std::make_shared<Function>(Function{std::move(name), std::move(call)});
+  r.fn = std::make_shared<Function>(Function{std::move(name), std::move(call), ""});
   return r;
 }
 
@@ -95,15 +119,9 @@ std::string TypeName(const Value& v) {
     case Value::Type::kInt: return "int";
     case Value::Type::kFloat: return "float";
     case Value::Type::kStr: return "str";
-    case Value::Type::kList: return "list";
     case Value::Type::kTuple: return "tuple";
-    case Value::Type::kDict: return "dict";
-    case Value::Type::kFunction: return "builtin_function_or_method";
-    case Value::Type::kModule: return "module";
-    case Value::Type::kScope: return "NameSpace";
-    case Value::Type::kBlock: return "Element";
+    default: return TypeOf(TypeOfValue(v)).name;
   }
-  return "object";
 }
 
 static std::string ReprStr(const std::string& s) {
@@ -157,7 +175,24 @@ std::string Repr(const Value& v) {
       }
       return out + "}";
     }
-    case Value::Type::kFunction: return "<built-in function " + v.fn->name + ">";
+    case Value::Type::kComplex: return FormatComplex(v.f, v.imag);
+    case Value::Type::kSet:
+    case Value::Type::kFrozenSet: return SetRepr(v);
+    case Value::Type::kRange: return RangeRepr(v);
+    case Value::Type::kSlice: {
+      const ValueList& p = *v.list;
+      return "slice(" + Repr(p[0]) + ", " + Repr(p[1]) + ", " + Repr(p[2]) + ")";
+    }
+    case Value::Type::kIterator: {
+      char address[32];
+      std::snprintf(address, sizeof address, "%p", static_cast<const void*>(v.object.get()));
+      return "<" + IteratorOf(v).type_name() + " object at " + address + ">";
+    }
+    case Value::Type::kType:
+    case Value::Type::kUnion: return TypeRepr(v);
+    case Value::Type::kInstance: return InstanceRepr(v);
+    case Value::Type::kFunction:
+      return v.fn->repr.empty() ? "<built-in function " + v.fn->name + ">" : v.fn->repr;
     case Value::Type::kModule: return "<module '" + v.s + "'>";
     default: return ToStr(v);
   }
@@ -182,10 +217,14 @@ bool Truthy(const Value& v) {
     case Value::Type::kBool: return v.b;
     case Value::Type::kInt: return v.i != 0;
     case Value::Type::kFloat: return v.f != 0.0;
+    case Value::Type::kComplex: return v.f != 0.0 || v.imag != 0.0;
     case Value::Type::kStr: return !v.s.empty();
     case Value::Type::kList:
     case Value::Type::kTuple: return !v.list->empty();
     case Value::Type::kDict: return !v.dict->items.empty();
+    case Value::Type::kSet:
+    case Value::Type::kFrozenSet: return SetOf(v).size() != 0;
+    case Value::Type::kRange: return RangeLength(v) != 0;
     default: return true;
   }
 }
@@ -202,6 +241,14 @@ bool Equal(const Value& a, const Value& b) {
     if (a.IsIntLike() && b.IsIntLike()) return AsInt(a) == AsInt(b);
     return AsDouble(a) == AsDouble(b);
   }
+  if (a.type == Value::Type::kComplex || b.type == Value::Type::kComplex) {
+    const auto parts = [](const Value& v) {
+      return v.type == Value::Type::kComplex ? std::make_pair(v.f, v.imag) : std::make_pair(AsDouble(v), 0.0);
+    };
+    const bool numbers = (a.IsNumber() || a.type == Value::Type::kComplex) && (b.IsNumber() || b.type == Value::Type::kComplex);
+    return numbers && parts(a) == parts(b);
+  }
+  if (a.IsAnySet() && b.IsAnySet()) return SetOf(a).size() == SetOf(b).size() && IsSubset(a, b);
   const bool seq = a.IsSequence() && b.IsSequence();
   if (a.type != b.type && !seq) return false;
   if (seq && a.type != b.type) return false;
@@ -230,6 +277,17 @@ bool Equal(const Value& a, const Value& b) {
       }
       return true;
     }
+    case Value::Type::kRange: return RangeEqual(a, b);
+    case Value::Type::kSlice: {
+      for (size_t k = 0; k < 3; ++k) {
+        if (!Equal((*a.list)[k], (*b.list)[k])) return false;
+      }
+      return true;
+    }
+    case Value::Type::kUnion: return UnionEqual(a, b);
+    case Value::Type::kIterator:
+    case Value::Type::kType:
+    case Value::Type::kInstance: return a.object == b.object;
     case Value::Type::kFunction: return a.fn == b.fn;
     case Value::Type::kModule: return a.dict == b.dict;
     case Value::Type::kScope: return a.scope == b.scope;
@@ -251,7 +309,7 @@ int Compare(const Value& a, const Value& b, const char* op) {
     const int c = a.s.compare(b.s);
     return c < 0 ? -1 : (c > 0 ? 1 : 0);
   }
-  if (a.IsSequence() && a.type == b.type) {
+  if ((a.IsSequence() || a.type == Value::Type::kSlice) && a.type == b.type) {
     const size_t n = std::min(a.list->size(), b.list->size());
     for (size_t k = 0; k < n; ++k) {
       if (!Equal((*a.list)[k], (*b.list)[k])) return Compare((*a.list)[k], (*b.list)[k], op);
@@ -260,6 +318,27 @@ int Compare(const Value& a, const Value& b, const char* op) {
   }
   throw EvalError(std::string("'") + op + "' not supported between instances of '" + TypeName(a) +
                   "' and '" + TypeName(b) + "'");
+}
+
+bool RichCompare(const std::string& op, const Value& a, const Value& b) {
+  if (a.IsAnySet() && b.IsAnySet()) {
+    // subset order
+    const size_t na = SetOf(a).size(), nb = SetOf(b).size();
+    if (op == "<") return na < nb && IsSubset(a, b);
+    if (op == "<=") return IsSubset(a, b);
+    if (op == ">") return na > nb && IsSuperset(a, b);
+    return IsSuperset(a, b);
+  }
+  const int c = Compare(a, b, op.c_str());
+  if (op == "<") return c < 0;
+  if (op == ">") return c > 0;
+  if (op == "<=") return c <= 0;
+  return c >= 0;
+}
+
+Value CallValue(const Value& f, ValueList args, Kwargs kwargs) {
+  if (!f.IsCallable()) throw EvalError("'" + TypeName(f) + "' object is not callable");
+  return f.fn->call(args, kwargs);
 }
 
 void DictPut(std::vector<std::pair<Value, Value>>& items, Value key, Value value) {
@@ -277,39 +356,70 @@ Value Wrapped(Value v, bool wrap) {
   return v;
 }
 
-ValueList Iterate(const Value& v) {
+NextFunction IterateLazily(const Value& v) {
   switch (v.type) {
     case Value::Type::kList:
     case Value::Type::kTuple: {
       CheckListSize(static_cast<Int>(v.list->size()), "sequence");
-      if (!v.wrapped) return *v.list;
-      ValueList out;
-      out.reserve(v.list->size());
-      for (const Value& item : *v.list) out.push_back(Wrapped(item, true));
-      return out;
+      return [list = v.list, wrap = v.wrapped, k = size_t{0}]() mutable -> std::optional<Value> {
+        if (k == list->size()) return std::nullopt;
+        return Wrapped((*list)[k++], wrap);
+      };
     }
     case Value::Type::kStr: {
-      // one item per UTF-8 code point, counted before any is made
-      const auto length = [&](size_t k) {
-        const unsigned char c = v.s[k];
+      // one item per UTF-8 code point
+      const auto length = [s = &v.s](size_t k) {
+        const unsigned char c = (*s)[k];
         return c >= 0xf0 ? 4 : c >= 0xe0 ? 3 : c >= 0xc0 ? 2 : 1;
       };
       Int count = 0;
       for (size_t k = 0; k < v.s.size(); k += length(k)) ++count;
       CheckListSize(count, "string to iterate");
-      ValueList out;
-      out.reserve(static_cast<size_t>(count));
-      for (size_t k = 0; k < v.s.size(); k += length(k)) out.push_back(Value::Str(v.s.substr(k, length(k))));
-      return out;
+      return [s = v.s, k = size_t{0}]() mutable -> std::optional<Value> {
+        if (k >= s.size()) return std::nullopt;
+        const unsigned char c = s[k];
+        const size_t n = c >= 0xf0 ? 4 : c >= 0xe0 ? 3 : c >= 0xc0 ? 2 : 1;
+        Value item = Value::Str(s.substr(k, n));
+        k += n;
+        return item;
+      };
     }
     case Value::Type::kDict: {
       CheckListSize(static_cast<Int>(v.dict->items.size()), "dict");
-      ValueList out;
-      for (const auto& item : v.dict->items) out.push_back(item.first);
-      return out;
+      return [dict = v.dict, k = size_t{0}]() mutable -> std::optional<Value> {
+        if (k == dict->items.size()) return std::nullopt;
+        return dict->items[k++].first;
+      };
     }
+    case Value::Type::kSet:
+    case Value::Type::kFrozenSet: {
+      // the keys as they are now (CPython raises if a set changes size while it is iterated)
+      auto keys = std::make_shared<ValueList>(SetOf(v).Keys());
+      CheckListSize(static_cast<Int>(keys->size()), "set");
+      return [keys, k = size_t{0}]() mutable -> std::optional<Value> {
+        if (k == keys->size()) return std::nullopt;
+        return (*keys)[k++];
+      };
+    }
+    case Value::Type::kRange: return IterateRange(v);
+    case Value::Type::kIterator:
+      return [it = v.object]() { return static_cast<Iterator&>(*it).Next(); };
     default: throw EvalError("'" + TypeName(v) + "' object is not iterable");
   }
+}
+
+ValueList Iterate(const Value& v) {
+  if (v.IsSequence() && !v.wrapped) {
+    CheckListSize(static_cast<Int>(v.list->size()), "sequence");
+    return *v.list;
+  }
+  const NextFunction next = IterateLazily(v);
+  ValueList out;
+  while (std::optional<Value> item = next()) {
+    if (out.size() == kMaxListItems) CheckListSize(static_cast<Int>(out.size() + 1), "iterator");
+    out.push_back(std::move(*item));
+  }
+  return out;
 }
 
 }  // namespace urdfsnap::xacro

@@ -1,10 +1,12 @@
-// Python values as xacro's `${}` expressions see them (None, bool, int, float, str, list, tuple,
-// dict, callables, modules, property scopes and XML blocks) and the Python rules for them:
-// str() and repr(), truth, equality and ordering.
+// Python values as xacro's `${}` expressions see them (None, bool, int, float, complex, str, list,
+// tuple, dict, set, frozenset, range, slice, iterators, types, callables, modules, property scopes
+// and XML blocks) and the Python rules for them: str() and repr(), truth, equality, ordering and
+// iteration.
 #pragma once
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -34,14 +36,24 @@ struct DictItems {
   std::vector<std::pair<Value, Value>> items;
 };
 
-// A callable: a builtin function or a method bound to its receiver.
+// A callable: a builtin function, a method bound to its receiver, or a type's constructor.
 struct Function {
   std::string name;
   std::function<Value(ValueList& args, Kwargs& kwargs)> call;
+  std::string repr;  // when not "<built-in function NAME>"
+};
+
+// The shared state of the values that are more than a payload: a set's hash table
+// (python_set.h), an iterator's position (python_iterators.h), a type (python_types.h).
+struct Object {
+  virtual ~Object() = default;
 };
 
 struct Value {
-  enum class Type { kNone, kBool, kInt, kFloat, kStr, kList, kTuple, kDict, kFunction, kModule, kScope, kBlock };
+  enum class Type {
+    kNone, kBool, kInt, kFloat, kComplex, kStr, kList, kTuple, kDict, kSet, kFrozenSet, kRange,
+    kSlice, kIterator, kType, kUnion, kInstance, kFunction, kModule, kScope, kBlock
+  };
 
   Type type = Type::kNone;
   // a yaml dict or list (xacro's YamlDictWrapper/YamlListWrapper): dict keys read as attributes,
@@ -49,11 +61,14 @@ struct Value {
   bool wrapped = false;
   bool b = false;
   Int i = 0;
-  double f = 0.0;
+  double f = 0.0;                      // float; a complex number's real part
+  double imag = 0.0;                   // a complex number's imaginary part
   std::string s;                       // str value; module name
-  std::shared_ptr<ValueList> list;     // list and tuple items
+  std::shared_ptr<ValueList> list;     // list and tuple items; range (start, stop, step) and
+                                       // slice (start, stop, step); a union's types
   std::shared_ptr<DictItems> dict;     // dict items; module members
-  std::shared_ptr<Function> fn;        // callable
+  std::shared_ptr<Function> fn;        // callable (a type's constructor too)
+  std::shared_ptr<Object> object;      // set/frozenset table, iterator, type, instance's class
   std::shared_ptr<Table> scope;        // property namespace of an include with ns=
   const Node* block = nullptr;         // XML block of a *param or a block property
 
@@ -61,10 +76,15 @@ struct Value {
   static Value Bool(bool v);
   static Value Integer(Int v);
   static Value Float(double v);
+  static Value Complex(double real, double imag);
   static Value Str(std::string v);
   static Value List(ValueList items);
   static Value Tuple(ValueList items);
   static Value Dict(std::vector<std::pair<Value, Value>> items);
+  // range(start, stop, step); step != 0
+  static Value Range(Int start, Int stop, Int step);
+  // slice(start, stop, step) of any values
+  static Value SliceOf(Value start, Value stop, Value step);
   static Value Module(std::string name, std::vector<std::pair<Value, Value>> members);
   static Value Callable(std::string name, std::function<Value(ValueList&, Kwargs&)> call);
   static Value Scope(std::shared_ptr<Table> table);
@@ -73,6 +93,9 @@ struct Value {
   bool IsNumber() const { return type == Type::kBool || type == Type::kInt || type == Type::kFloat; }
   bool IsIntLike() const { return type == Type::kBool || type == Type::kInt; }
   bool IsSequence() const { return type == Type::kList || type == Type::kTuple; }
+  bool IsAnySet() const { return type == Type::kSet || type == Type::kFrozenSet; }
+  // whether calling it means anything (functions, methods, types)
+  bool IsCallable() const { return fn != nullptr; }
 };
 
 // Python's type(v).__name__ ("int", "str", "NoneType", ...).
@@ -96,7 +119,21 @@ bool Equal(const Value& a, const Value& b);
 // instances of 'str' and 'int'") for values Python cannot order.
 int Compare(const Value& a, const Value& b, const char* op = "<");
 
-// The items of an iterable value (list, tuple, str, dict keys), wrapped when the container is.
+// Python's `a OP b` for OP in < <= > >=, sets included (subset order, which is partial).
+bool RichCompare(const std::string& op, const Value& a, const Value& b);
+
+// Calls a callable value; EvalError "'int' object is not callable" for anything else.
+Value CallValue(const Value& f, ValueList args, Kwargs kwargs = {});
+
+// Python's iter(v) as a pull function giving the items one by one and nullopt at the end:
+// list, tuple, str (code points), dict (keys), set, range and iterator items, wrapped when the
+// container is. Containers are checked against kMaxListItems and charged to the evaluation
+// budget up front, iterators per item (see evaluation_budget.h). Throws "'int' object is not
+// iterable".
+using NextFunction = std::function<std::optional<Value>()>;
+NextFunction IterateLazily(const Value& v);
+
+// All the items of an iterable value (an iterator is used up), at most kMaxListItems.
 ValueList Iterate(const Value& v);
 
 // Sets `key` in ordered dict items: replaces the value of an equal key, else appends.
