@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "xacro/call_arguments.h"
+#include "xacro/evaluation_budget.h"
 #include "xacro/operators.h"
 #include "xacro/python_iterators.h"
 #include "xacro/python_set.h"
@@ -140,7 +141,8 @@ bool AllChars(const std::string& s, int (*f)(int)) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [f](char c) { return f(static_cast<unsigned char>(c)) != 0; });
 }
 
-Value StrMethod(const std::string& s, const std::string& name) {
+// (`s` is shared with the str value: a bound method does not copy the text)
+Value StrMethod(const SharedString& s, const std::string& name) {
   const std::string full = "str." + name;
   if (name == "upper") return Bind(full, [s](ValueList&) { return Value::Str(MapChars(s, ::toupper)); });
   if (name == "lower") return Bind(full, [s](ValueList&) { return Value::Str(MapChars(s, ::tolower)); });
@@ -196,7 +198,7 @@ Value StrMethod(const std::string& s, const std::string& name) {
       ValueList out;
       size_t k = 0;
       while (k < s.size()) {
-        size_t e = s.find_first_of("\r\n", k);
+        size_t e = s.str().find_first_of("\r\n", k);
         if (e == std::string::npos) e = s.size();
         out.push_back(Value::Str(s.substr(k, e - k)));
         k = e + ((e + 1 < s.size() && s[e] == '\r' && s[e + 1] == '\n') ? 2 : 1);
@@ -207,18 +209,24 @@ Value StrMethod(const std::string& s, const std::string& name) {
   if (name == "join") {
     return Bind(full, [s](ValueList& a) {
       CheckArity("join", a, 1, 1);
-      std::string out;
-      bool first = true;
-      for (const Value& item : Iterate(a[0])) {
-        if (item.type != Value::Type::kStr) {
-          throw EvalError("sequence item: expected str instance, " + TypeName(item) + " found");
+      const ValueList items = Iterate(a[0]);
+      // the size first, so that nothing too large is built
+      size_t size = items.empty() ? 0 : s.size() * (items.size() - 1);
+      for (size_t k = 0; k < items.size(); ++k) {
+        if (items[k].type != Value::Type::kStr) {
+          throw EvalError("sequence item " + std::to_string(k) + ": expected str instance, " + TypeName(items[k]) + " found");
         }
-        if (!first) out += s;
-        first = false;
-        out += item.s;
-        if (out.size() > kMaxItems) throw EvalError("string too large");
+        size += items[k].s.size();
+        if (size > kMaxStringBytes) break;
       }
-      return Value::Str(out);
+      CheckStringSize(size, "joined string");
+      std::string out;
+      out.reserve(size);
+      for (size_t k = 0; k < items.size(); ++k) {
+        if (k) out += s.str();
+        out += items[k].s.str();
+      }
+      return Value::Str(std::move(out));
     });
   }
   if (name == "replace") {
@@ -226,26 +234,34 @@ Value StrMethod(const std::string& s, const std::string& name) {
       CheckArity("replace", a, 2, 3);
       const std::string& from = StrArg("replace", a, 0);
       const std::string& to = StrArg("replace", a, 1);
-      long count = a.size() > 2 ? AsIndex(a[2], "count") : -1;
-      std::string out;
-      size_t k = 0;
+      const long limit = a.size() > 2 ? AsIndex(a[2], "count") : -1;
+      // the number of replacements first, so that nothing too large is built
+      size_t matches = 0;
       if (from.empty()) {
-        for (char c : s) {
-          if (count-- != 0) out += to;
-          out += c;
+        matches = s.size() + 1;
+      } else {
+        for (size_t e = s.find(from); e != std::string::npos; e = s.find(from, e + from.size())) ++matches;
+      }
+      if (limit >= 0) matches = std::min(matches, static_cast<size_t>(limit));
+      // (no overflow: each size is at most kMaxStringBytes)
+      const size_t size = s.size() - matches * from.size() + matches * to.size();
+      CheckStringSize(size, "replaced string");
+      std::string out;
+      out.reserve(size);
+      size_t k = 0;
+      for (size_t n = 0; n < matches; ++n) {
+        if (from.empty()) {
+          out += to;
+          if (k < s.size()) out += s[k++];
+          continue;
         }
-        if (count != 0) out += to;
-        return Value::Str(out);
-      }
-      while (count != 0) {
         const size_t e = s.find(from, k);
-        if (e == std::string::npos) break;
-        out += s.substr(k, e - k) + to;
+        out.append(s.str(), k, e - k);
+        out += to;
         k = e + from.size();
-        --count;
-        if (out.size() > kMaxItems) throw EvalError("string too large");
       }
-      return Value::Str(out + s.substr(k));
+      out.append(s.str(), k, std::string::npos);
+      return Value::Str(std::move(out));
     });
   }
   if (name == "startswith" || name == "endswith") {
@@ -255,7 +271,8 @@ Value StrMethod(const std::string& s, const std::string& name) {
       for (const Value& o : options) {
         if (o.type != Value::Type::kStr) throw EvalError(name + " first arg must be str or a tuple of str");
         if (o.s.size() > s.size()) continue;
-        if (name == "startswith" ? s.compare(0, o.s.size(), o.s) == 0 : s.compare(s.size() - o.s.size(), o.s.size(), o.s) == 0) {
+        const std::string& text = s;
+        if (name == "startswith" ? text.compare(0, o.s.size(), o.s) == 0 : text.compare(s.size() - o.s.size(), o.s.size(), o.s) == 0) {
           return Value::Bool(true);
         }
       }
@@ -272,7 +289,7 @@ Value StrMethod(const std::string& s, const std::string& name) {
         for (size_t k = s.find(sub); k != std::string::npos; k = s.find(sub, k + sub.size())) ++n;
         return Value::Integer(n);
       }
-      const size_t k = name[0] == 'r' ? s.rfind(sub) : s.find(sub);
+      const size_t k = name[0] == 'r' ? s.str().rfind(sub) : s.find(sub);
       if (k == std::string::npos) {
         if (name == "index" || name == "rindex") throw EvalError("substring not found");
         return Value::Integer(-1);
@@ -284,6 +301,7 @@ Value StrMethod(const std::string& s, const std::string& name) {
     return Bind(full, [s, name](ValueList& a) {
       CheckArity(name, a, 1, 2);
       const long width = AsIndex(a[0], "width");
+      if (width > static_cast<long>(s.size())) CheckStringSize(static_cast<size_t>(width), "padded string");
       const char fill = name == "zfill" ? '0' : (a.size() > 1 ? StrArg(name, a, 1)[0] : ' ');
       if (width <= static_cast<long>(s.size())) return Value::Str(s);
       const size_t pad = static_cast<size_t>(width) - s.size();
@@ -356,6 +374,22 @@ Value DictMethod(const Value& v, const std::string& name) {
   }
   if (name == "copy") return Bind("dict.copy", [v](ValueList&) { return Value::Dict(v.dict->items); });
   throw EvalError("'dict' object has no attribute '" + name + "'");
+}
+
+// the method, with the text of each result charged to the evaluation budget: a method of a str
+// makes new text (bounded by its own, but a loop of them would grow without bound)
+Value ChargingText(Value method) {
+  const std::shared_ptr<Function> inner = method.fn;
+  method.fn = std::make_shared<Function>(Function{inner->name, [inner](ValueList& a, Kwargs& kw) {
+    Value result = inner->call(a, kw);
+    size_t bytes = result.type == Value::Type::kStr ? result.s.size() : 0;
+    if (result.type == Value::Type::kList) {
+      for (const Value& item : *result.list) bytes += item.type == Value::Type::kStr ? item.s.size() : 0;
+    }
+    EvaluationBudget::ChargeBytes(bytes);
+    return result;
+  }, ""});
+  return method;
 }
 
 // a method of a set or frozenset
@@ -501,7 +535,7 @@ Value GetAttribute(const Value& v, const std::string& name) {
         throw EvalError("The yaml dictionary has no key '" + name + "'");
       }
       return DictMethod(v, name);
-    case Value::Type::kStr: return StrMethod(v.s, name);
+    case Value::Type::kStr: return ChargingText(StrMethod(v.s, name));
     case Value::Type::kList:
     case Value::Type::kTuple: return SequenceMethod(v, name);
     case Value::Type::kSet:

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "xacro/call_arguments.h"
+#include "xacro/evaluation_budget.h"
 #include "xacro/math_module.h"
 #include "xacro/number_format.h"
 #include "xacro/operators.h"
@@ -228,7 +229,11 @@ Members PythonOnlyBuiltins() {
       {"isinstance", Two("isinstance", [](const Value& v, const Value& c) { return Value::Bool(IsInstance(v, c)); })},
       {"issubclass", Two("issubclass", [](const Value& v, const Value& c) { return Value::Bool(IsSubclass(v, c)); })},
       {"ord", One("ord", Ord)},
-      {"repr", One("repr", [](const Value& v) { return Value::Str(Repr(v)); })},
+      {"repr", One("repr", [](const Value& v) {
+         std::string text = Repr(v);
+         EvaluationBudget::ChargeBytes(text.size());
+         return Value::Str(std::move(text));
+       })},
       {"reversed", BuiltinType("reversed")},
       {"slice", BuiltinType("slice")},
       {"set", BuiltinType("set")},

@@ -1,8 +1,7 @@
-// EvaluationBudget: one counter per thread, owned by the outermost open budget.
+// EvaluationBudget: counters per thread, owned by the outermost open budget.
 #include "xacro/evaluation_budget.h"
 
 #include <string>
-
 
 namespace urdfsnap::xacro {
 
@@ -10,17 +9,17 @@ namespace {
 
 struct Counter {
   bool open = false;
-  size_t left = 0;
-  size_t total = 0;
+  size_t items_left = 0, items_total = 0;
+  size_t bytes_left = 0, bytes_total = 0;
 };
 
 thread_local Counter counter;
 
 }  // namespace
 
-EvaluationBudget::EvaluationBudget(size_t items) {
+EvaluationBudget::EvaluationBudget(size_t items, size_t bytes) {
   if (counter.open) return;
-  counter = {true, items, items};
+  counter = {true, items, items, bytes, bytes};
   owner_ = true;
 }
 
@@ -30,12 +29,12 @@ EvaluationBudget::~EvaluationBudget() {
 
 void EvaluationBudget::Charge(size_t items) {
   if (!counter.open) return;
-  if (items > counter.left) {
-    counter.left = 0;
-    throw EvalError("expressions build more than " + std::to_string(counter.total) +
+  if (items > counter.items_left) {
+    counter.items_left = 0;
+    throw EvalError("expressions build more than " + std::to_string(counter.items_total) +
                     " list items in all (runaway comprehension or range()?)");
   }
-  counter.left -= items;
+  counter.items_left -= items;
 }
 
 void CheckListSize(Int n, const char* what) {
@@ -44,6 +43,29 @@ void CheckListSize(Int n, const char* what) {
                     " items (the limit is " + std::to_string(kMaxListItems) + ")");
   }
   EvaluationBudget::Charge(static_cast<size_t>(n));
+}
+
+void CheckStringSize(size_t n, const char* what) {
+  if (n > kMaxStringBytes) {
+    throw EvalError(std::string(what) + " too large: " + std::to_string(n) + " bytes (the limit is " +
+                    std::to_string(kMaxStringBytes) + ")");
+  }
+  EvaluationBudget::ChargeBytes(n);
+}
+
+void EvaluationBudget::ChargeBytes(size_t bytes) {
+  if (!counter.open) return;
+  if (bytes > counter.bytes_left) {
+    counter.bytes_left = 0;
+    throw EvalError("expressions build more than " + std::to_string(counter.bytes_total) +
+                    " bytes of text in all (runaway string building?)");
+  }
+  counter.bytes_left -= bytes;
+}
+
+void AppendBounded(std::string& out, std::string_view piece, const char* what) {
+  if (out.size() + piece.size() > kMaxStringBytes) CheckStringSize(out.size() + piece.size(), what);
+  out += piece;
 }
 
 }  // namespace urdfsnap::xacro

@@ -142,17 +142,18 @@ Value Repeat(const Value& seq, const Value& count) {
   // an empty sequence stays empty however often it is repeated (found by fuzzing: '[] * 10**12'
   // looped 10^12 times)
   const Int n = unit == 0 ? 0 : std::max<Int>(0, AsInt(count));
-  const size_t limit = seq.type == Value::Type::kStr ? kMaxItems : kMaxListItems;
+  const size_t limit = seq.type == Value::Type::kStr ? kMaxStringBytes : kMaxListItems;
   if (unit != 0 && n > static_cast<Int>(limit / unit)) {
     throw EvalError("result of repetition is too large (limit " + std::to_string(limit) + ")");
   }
-  if (seq.type != Value::Type::kStr) CheckListSize(n * static_cast<Int>(unit), "repeated sequence");
   if (seq.type == Value::Type::kStr) {
+    CheckStringSize(unit * static_cast<size_t>(n), "repeated string");
     std::string out;
     out.reserve(unit * static_cast<size_t>(n));
-    for (Int k = 0; k < n; ++k) out += seq.s;
+    for (Int k = 0; k < n; ++k) out += seq.s.str();
     return Value::Str(std::move(out));
   }
+  CheckListSize(n * static_cast<Int>(unit), "repeated sequence");
   ValueList out;
   for (Int k = 0; k < n; ++k) out.insert(out.end(), seq.list->begin(), seq.list->end());
   Value r = seq.type == Value::Type::kList ? Value::List(std::move(out)) : Value::Tuple(std::move(out));
@@ -195,8 +196,8 @@ Value BinaryOp(const std::string& op, const Value& a, const Value& b) {
   if (op == "|" && (typelike(a) || typelike(b))) return TypeUnion(a, b);
   if (op == "+") {
     if (a.type == Value::Type::kStr && b.type == Value::Type::kStr) {
-      if (a.s.size() + b.s.size() > kMaxItems) throw EvalError("string too large");
-      return Value::Str(a.s + b.s);
+      CheckStringSize(a.s.size() + b.s.size(), "concatenated string");
+      return Value::Str(a.s.str() + b.s.str());
     }
     if (a.IsSequence() && a.type == b.type) {
       CheckListSize(static_cast<Int>(a.list->size() + b.list->size()), "concatenated sequence");
@@ -247,7 +248,7 @@ bool Contains(const Value& container, const Value& item) {
       if (item.type != Value::Type::kStr) {
         throw EvalError("'in <string>' requires string as left operand, not " + TypeName(item));
       }
-      return container.s.find(item.s) != std::string::npos;
+      return container.s.find(item.s.str()) != std::string::npos;
     case Value::Type::kList:
     case Value::Type::kTuple:
       for (const Value& v : *container.list) {
@@ -369,7 +370,10 @@ Value Slice(const Value& v, std::optional<long> start, std::optional<long> stop,
       items.push_back((*v.list)[static_cast<size_t>(k)]);
     }
   }
-  if (v.type == Value::Type::kStr) return Value::Str(std::move(text));
+  if (v.type == Value::Type::kStr) {
+    EvaluationBudget::ChargeBytes(text.size());
+    return Value::Str(std::move(text));
+  }
   Value r = v.type == Value::Type::kList ? Value::List(std::move(items)) : Value::Tuple(std::move(items));
   return Wrapped(r, v.wrapped);
 }

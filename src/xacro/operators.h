@@ -1,6 +1,6 @@
 // Python's operators on values: arithmetic with Python's int/float semantics (true division,
 // floor division and modulo with the divisor's sign, exact integer powers), sequence repetition
-// and concatenation, `in`, indexing and slicing. Results are bounded in size (see kMaxItems).
+// and concatenation, `in`, indexing and slicing. Results are bounded in size (evaluation_budget.h).
 #pragma once
 
 #include <optional>
@@ -9,9 +9,6 @@
 #include "xacro/python_value.h"
 
 namespace urdfsnap::xacro {
-
-// The largest string (bytes) or list (items) an operation may build; beyond it EvalError.
-inline constexpr size_t kMaxItems = 16u << 20;
 
 // a OP b for OP in + - * / // % ** << >> & | ^.
 Value BinaryOp(const std::string& op, const Value& a, const Value& b);

@@ -48,7 +48,7 @@ bool BooleanValue(const Value& value, const std::string& condition) {
   if (value.type == Value::Type::kStr) {
     if (value.s == "true" || value.s == "True") return true;
     if (value.s == "false" || value.s == "False") return false;
-    if (auto i = ParseIntText(value.s)) return *i != 0;
+    if (auto i = ParseIntText(value.s.str())) return *i != 0;
     throw EvalError("Xacro conditional \"" + condition + "\" evaluated to \"" + value.s +
                     "\", which is not a boolean expression.");
   }
@@ -141,6 +141,7 @@ std::vector<std::pair<std::string, Value>> Processor::XacroMembers() {
            if (k == "sep") sep = ToStr(v);
            else if (k == "skip_empty") skip_empty = Truthy(v);
          }
+         EvaluationBudget::ChargeBytes(a[0].s.size());  // the pieces are new text
          ValueList out;
          std::string piece;
          for (char c : a[0].s + sep.substr(0, 1)) {
@@ -263,8 +264,18 @@ Value Processor::EvalText(const std::string& text, const Symbols& symbols) {
     throw EvalError("invalid expression: " + text.substr(pos));
   }
   if (results.size() == 1) return results[0];
+  // the size first, so that no text larger than the string limit is built (a property that is
+  // the previous one twice, thirty deep, would otherwise take gigabytes)
+  std::vector<std::string> texts(results.size());
+  size_t size = 0;
+  for (size_t k = 0; k < results.size() && size <= kMaxStringBytes; ++k) {
+    if (results[k].type != Value::Type::kStr) texts[k] = ToStr(results[k]);
+    size += results[k].type == Value::Type::kStr ? results[k].s.size() : texts[k].size();
+  }
+  CheckStringSize(size, "substituted text");
   std::string joined;
-  for (const Value& v : results) joined += ToStr(v);
+  joined.reserve(size);
+  for (size_t k = 0; k < results.size(); ++k) joined += results[k].type == Value::Type::kStr ? results[k].s.str() : texts[k];
   return Value::Str(std::move(joined));
 }
 

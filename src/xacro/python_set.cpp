@@ -383,7 +383,7 @@ std::string SetRepr(const Value& s) {
   SetOf(s).ForEachEntry([&](const Value& key, int64_t) {
     if (!first) out += ", ";
     first = false;
-    out += Repr(key);
+    AppendBounded(out, Repr(key), "repr");
   });
   return out + (frozen ? "})" : "}");
 }

@@ -15,6 +15,14 @@
 
 namespace urdfsnap::xacro {
 
+SharedString::SharedString(std::string text)
+    : text_(text.empty() ? nullptr : std::make_shared<const std::string>(std::move(text))) {}
+
+const std::string& SharedString::Empty() {
+  static const std::string empty;
+  return empty;
+}
+
 Value Value::Bool(bool v) {
   Value r;
   r.type = Type::kBool;
@@ -156,11 +164,12 @@ std::string Repr(const Value& v) {
     case Value::Type::kStr: return ReprStr(v.s);
     case Value::Type::kList:
     case Value::Type::kTuple: {
+      // containers are checked piece by piece, so that no repr grows past the string limit
       const bool tuple = v.type == Value::Type::kTuple;
       std::string out = tuple ? "(" : "[";
       for (size_t k = 0; k < v.list->size(); ++k) {
         if (k) out += ", ";
-        out += Repr((*v.list)[k]);
+        AppendBounded(out, Repr((*v.list)[k]), "repr");
       }
       if (tuple && v.list->size() == 1) out += ",";
       return out + (tuple ? ")" : "]");
@@ -171,7 +180,9 @@ std::string Repr(const Value& v) {
       for (const auto& [key, value] : v.dict->items) {
         if (!first) out += ", ";
         first = false;
-        out += Repr(key) + ": " + Repr(value);
+        AppendBounded(out, Repr(key), "repr");
+        out += ": ";
+        AppendBounded(out, Repr(value), "repr");
       }
       return out + "}";
     }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -49,6 +50,44 @@ struct Object {
   virtual ~Object() = default;
 };
 
+// The text of a str value, shared by every copy of the value: Python's str is immutable, and
+// copying a value (into a list, a comprehension's variable, a property) must not copy its text,
+// which may be megabytes long. Reads as a const std::string.
+class SharedString {
+ public:
+  SharedString() = default;
+  SharedString(std::string text);  // NOLINT(google-explicit-constructor): a str is made from text
+  SharedString(const char* text) : SharedString(std::string(text)) {}  // NOLINT
+
+  const std::string& str() const { return text_ ? *text_ : Empty(); }
+  operator const std::string&() const { return str(); }  // NOLINT
+
+  // the read-only std::string interface the evaluator uses
+  size_t size() const { return str().size(); }
+  bool empty() const { return str().empty(); }
+  const char* c_str() const { return str().c_str(); }
+  char operator[](size_t k) const { return str()[k]; }
+  std::string::const_iterator begin() const { return str().begin(); }
+  std::string::const_iterator end() const { return str().end(); }
+  std::string substr(size_t pos, size_t n = std::string::npos) const { return str().substr(pos, n); }
+  size_t find(std::string_view what, size_t pos = 0) const { return str().find(what, pos); }
+  size_t find(char c, size_t pos = 0) const { return str().find(c, pos); }
+  int compare(const std::string& other) const { return str().compare(other); }
+  friend bool operator==(const SharedString& a, const std::string& b) { return a.str() == b; }
+  friend bool operator==(const SharedString& a, const char* b) { return a.str() == b; }
+  friend bool operator==(const SharedString& a, const SharedString& b) { return a.str() == b.str(); }
+  template <class T>
+  friend bool operator!=(const SharedString& a, const T& b) { return !(a == b); }
+  friend std::string operator+(const SharedString& a, const std::string& b) { return a.str() + b; }
+  friend std::string operator+(const std::string& a, const SharedString& b) { return a + b.str(); }
+  friend std::string operator+(const char* a, const SharedString& b) { return a + b.str(); }
+  friend std::string operator+(const SharedString& a, const char* b) { return a.str() + b; }
+
+ private:
+  static const std::string& Empty();
+  std::shared_ptr<const std::string> text_;
+};
+
 struct Value {
   enum class Type {
     kNone, kBool, kInt, kFloat, kComplex, kStr, kList, kTuple, kDict, kSet, kFrozenSet, kRange,
@@ -63,7 +102,7 @@ struct Value {
   Int i = 0;
   double f = 0.0;                      // float; a complex number's real part
   double imag = 0.0;                   // a complex number's imaginary part
-  std::string s;                       // str value; module name
+  SharedString s;                      // str value; module name
   std::shared_ptr<ValueList> list;     // list and tuple items; range (start, stop, step) and
                                        // slice (start, stop, step); a union's types
   std::shared_ptr<DictItems> dict;     // dict items; module members

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "xacro/evaluation_budget.h"
 #include "xacro/number_format.h"
 #include "xacro/operators.h"
 
@@ -78,6 +79,8 @@ std::string PercentFormat(const std::string& format, const Value& args) {
     return positional[next++];
   };
   std::string out;
+  // each piece is checked before it is added, so that nothing too large is built
+  const auto append = [&out](const std::string& piece) { AppendBounded(out, piece, "formatted string"); };
   for (size_t k = 0; k < format.size(); ++k) {
     if (format[k] != '%') {
       out += format[k];
@@ -97,10 +100,10 @@ std::string PercentFormat(const std::string& format, const Value& args) {
     std::string flags;
     while (k < format.size() && std::string("-+ #0").find(format[k]) != std::string::npos) flags += format[k++];
     int width = -1, precision = -1;
-    // a width or precision that would make a string over kMaxItems is refused (found by
+    // a width or precision that would make a string over kMaxStringBytes is refused (found by
     // fuzzing: the digits overflowed an int; Python fails as well, with a MemoryError)
     const auto checked = [](long value) {
-      if (value > static_cast<long>(kMaxItems) || value < -static_cast<long>(kMaxItems)) {
+      if (value > static_cast<long>(kMaxStringBytes) || value < -static_cast<long>(kMaxStringBytes)) {
         throw EvalError("width or precision too big");
       }
       return static_cast<int>(value);
@@ -114,7 +117,7 @@ std::string PercentFormat(const std::string& format, const Value& args) {
       if (k < format.size() && std::isdigit(static_cast<unsigned char>(format[k]))) {
         long value = 0;
         while (k < format.size() && std::isdigit(static_cast<unsigned char>(format[k]))) {
-          value = std::min(value * 10 + (format[k++] - '0'), static_cast<long>(kMaxItems) + 1);
+          value = std::min(value * 10 + (format[k++] - '0'), static_cast<long>(kMaxStringBytes) + 1);
         }
         target = checked(value);
       }
@@ -139,20 +142,21 @@ std::string PercentFormat(const std::string& format, const Value& args) {
       case 'a': {
         std::string s = conv == 's' ? ToStr(*value) : Repr(*value);
         if (precision >= 0 && static_cast<size_t>(precision) < s.size()) s.resize(static_cast<size_t>(precision));
-        out += Pad(s, flags, width);
+        append(Pad(s, flags, width));
         break;
       }
       case 'c':
-        out += Pad(value->type == Value::Type::kStr ? value->s : std::string(1, static_cast<char>(AsInt(*value))), flags, width);
+        append(Pad(value->type == Value::Type::kStr ? value->s.str() : std::string(1, static_cast<char>(AsInt(*value))), flags, width));
         break;
       case 'd': case 'i': case 'u': case 'x': case 'X': case 'o':
       case 'f': case 'F': case 'e': case 'E': case 'g': case 'G':
-        out += FormatNumber(conv, flags, width, precision, *value);
+        append(FormatNumber(conv, flags, width, precision, *value));
         break;
       default: throw EvalError(std::string("unsupported format character '") + conv + "'");
     }
   }
   if (!mapping && next < positional.size()) throw EvalError("not all arguments converted during string formatting");
+  CheckStringSize(out.size(), "formatted string");
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "xacro/call_arguments.h"
+#include "xacro/evaluation_budget.h"
 #include "xacro/number_format.h"
 #include "xacro/operators.h"
 #include "xacro/python_complex.h"
@@ -25,7 +26,7 @@ Value ToInt(ValueList& a, Kwargs& kw) {
   if (const Value* b = Keyword(kw, "base")) base = static_cast<int>(AsIndex(*b, "base"));
   if (v.type == Value::Type::kStr) {
     if (base == 10) {
-      if (auto i = ParseIntText(v.s)) return Value::Integer(*i);
+      if (auto i = ParseIntText(v.s.str())) return Value::Integer(*i);
     } else {
       std::string t = v.s;
       t.erase(std::remove(t.begin(), t.end(), '_'), t.end());
@@ -47,7 +48,7 @@ Value ToFloat(ValueList& a, Kwargs& kw) {
   const Value& v = a[0];
   if (v.IsNumber()) return Value::Float(AsDouble(v));
   if (v.type == Value::Type::kStr) {
-    if (auto f = ParseFloatText(v.s)) return Value::Float(*f);
+    if (auto f = ParseFloatText(v.s.str())) return Value::Float(*f);
     throw EvalError("could not convert string to float: " + Repr(v));
   }
   throw EvalError("float() argument must be a string or a real number, not '" + TypeName(v) + "'");
@@ -60,7 +61,7 @@ Value ToComplex(ValueList& a, Kwargs& kw) {
   const Value* imag = a.size() > 1 ? &a[1] : Keyword(kw, "imag");
   if (real && real->type == Value::Type::kStr) {
     if (imag) throw EvalError("complex() can't take second arg if first is a string");
-    const auto [re, im] = ParseComplexText(real->s);
+    const auto [re, im] = ParseComplexText(real->s.str());
     return Value::Complex(re, im);
   }
   if (imag && imag->type == Value::Type::kStr) throw EvalError("complex() second arg can't be a string");
@@ -96,7 +97,11 @@ Value ToStrValue(ValueList& a, Kwargs& kw) {
     if (object && object->type == Value::Type::kStr) throw EvalError("decoding str is not supported");
     throw EvalError("decoding to str: need a bytes-like object, " + TypeName(object ? *object : Value::Str("")) + " found");
   }
-  return Value::Str(object ? ToStr(*object) : "");
+  if (!object) return Value::Str("");
+  if (object->type == Value::Type::kStr) return *object;  // str(s) is s
+  std::string text = ToStr(*object);
+  EvaluationBudget::ChargeBytes(text.size());
+  return Value::Str(std::move(text));
 }
 
 Value ToBool(ValueList& a, Kwargs& kw) {

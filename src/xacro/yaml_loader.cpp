@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "common/file_reading.h"
+#include "xacro/evaluation_budget.h"
 #include "xacro/number_format.h"
 #include "xacro/xml_tree.h"
 
@@ -122,6 +123,9 @@ Value LoadYaml(const std::string& path, const std::function<Value(const std::str
   } catch (const FileReadError& e) {
     throw EvalError(PythonOsErrorText(e.errno_value, e.what(), path));
   }
+  // the text a document loads counts as text it makes (a yaml file loaded in a loop would
+  // otherwise grow without bound)
+  EvaluationBudget::ChargeBytes(text.size());
   YAML::Node root;
   try {
     root = YAML::Load(text);

@@ -59,6 +59,28 @@ std::string ExponentialXacro() {
   return Xacro(body + "<xacro:m12/>");
 }
 
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+// Properties each the previous one twice, thirty deep: a 2 GiB string if nothing stops it.
+// `twice` says how a property doubles `{p}`, the previous one ("${{p}}${{p}}", "${{p} + {p}}").
+std::string DoublingXacro(const std::string& twice) {
+  std::string body = "<xacro:property name=\"p0\" value=\"ab\"/>\n";
+  for (int level = 1; level <= 30; ++level) {
+    // (appended piece by piece: gcc 12 warns about "literal" + std::string temporaries here)
+    body += "<xacro:property name=\"p";
+    body += std::to_string(level);
+    body += "\" value=\"";
+    body += Replace(twice, "{p}", std::string("p").append(std::to_string(level - 1)));
+    body += "\"/>\n";
+  }
+  return Xacro(body + "<link name=\"${p30}\"/>");
+}
+
 // XML entities nested ten deep, each ten times the one before ("billion laughs").
 std::string EntityBomb(bool xacro_namespace) {
   std::string doc = "<?xml version=\"1.0\"?>\n<!DOCTYPE robot [\n<!ENTITY e0 \"lol\">\n";
@@ -205,6 +227,21 @@ std::vector<HostileCase> Cases() {
        "/nope.xacro [Errno 2] No such file or directory"},
       {"huge_string", xacro(Xacro("<link name=\"${'a' * 10**10}\"/>")), render_xacro,
        "robot.xacro:3"},
+      // each stops where its string would pass 16 MiB (line 34 uses p30, which needs p24)
+      {"string_doubling", xacro(DoublingXacro("${{p}}${{p}}")), render_xacro,
+       "robot.xacro:34: substituted text too large: 33554432 bytes (the limit is 16777216)"},
+      {"string_doubling_xacro_command", xacro(DoublingXacro("${{p}}${{p}}")), "xacro {dir}/robot.xacro -o {out}",
+       "substituted text too large"},
+      {"string_doubling_concatenation", xacro(DoublingXacro("${{p} + {p}}")), render_xacro,
+       "robot.xacro:34: concatenated string too large"},
+      {"string_doubling_format", xacro(DoublingXacro("${'%s%s' % ({p}, {p})}")), render_xacro,
+       "robot.xacro:34: formatted string too large"},
+      {"string_doubling_join", xacro(DoublingXacro("${''.join([{p}, {p}])}")), render_xacro,
+       "robot.xacro:34: joined string too large"},
+      {"string_copies_in_a_loop",
+       xacro(Xacro("<xacro:property name=\"p\" value=\"${'a' * 16000000}\"/>\n"
+                   "<link name=\"${len([p.upper() for i in python.range(1000)])}\"/>")),
+       render_xacro, "robot.xacro:4: expressions build more than 268435456 bytes of text in all"},
       {"undefined_property", xacro(Xacro("<link name=\"${nothing}\"/>")), render_xacro,
        "name 'nothing' is not defined"},
       {"bad_expression", xacro(Xacro("<link name=\"${1 +}\"/>")), render_xacro, "robot.xacro:3"},
@@ -293,12 +330,6 @@ void PrintTo(const HostileCase& c, std::ostream* os) { *os << c.name; }
 
 class HostileInputTest : public ::testing::TestWithParam<HostileCase> {};
 
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
-    text.replace(at, from.size(), to);
-  }
-  return text;
-}
 
 std::string ReadAll(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -352,6 +383,23 @@ TEST_P(HostileInputTest, EndsWithOneLocatedErrorAndLeavesTheOutputAlone) {
   }
   EXPECT_EQ(ReadAll(out), precious);
   EXPECT_EQ(Listing(dir), before) << "a file appeared or disappeared";
+}
+
+// The string bombs stop in bounded memory, as the element-count bomb does: under 512 MB where the
+// doubling bomb took more than 6 GB and a minute before strings were checked before being built.
+TEST(HostileXacroStrings, StopInBoundedMemory) {
+  if (urdfsnap::test::BuiltWithAddressSanitizer()) GTEST_SKIP() << "AddressSanitizer's own memory";
+  for (const HostileCase& c : Cases()) {
+    if (c.name.rfind("string_", 0) != 0) continue;
+    const fs::path dir = fs::temp_directory_path() / ("urdfsnap_hostile_memory_" + c.name);
+    fs::create_directories(dir);
+    for (const auto& [name, bytes] : c.files) std::ofstream(dir / name, std::ios::binary) << bytes;
+    const auto run = urdfsnap::test::RunUrdfsnap(
+        Replace(Replace(c.arguments, "{out}", (dir / "out").string()), "{dir}", dir.string()), 60, 2048);
+    EXPECT_EQ(run.status, 2) << c.name << ": " << run.err;
+    EXPECT_LT(run.peak_rss_kb, 512 * 1024) << c.name << ": peak memory";
+    fs::remove_all(dir);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, HostileInputTest, ::testing::ValuesIn(Cases()),

@@ -301,6 +301,31 @@ TEST(Expression, ListsAreBoundedBeforeTheyAreBuilt) {
   EXPECT_EQ(Eval("python.sum([i for i in python.range(1000) for j in python.range(1000) if j == 0])"), "499500");
 }
 
+// Strings are bounded before they are built, and the text all expressions build is bounded in
+// all, so that no expression takes gigabytes (before, a property that doubled the previous one,
+// thirty deep, passed 6 GB). Copying a string value shares its text.
+TEST(Expression, StringsAreBoundedBeforeTheyAreBuilt) {
+  const Case cases[] = {
+      {"'ab' * 2**23 + 'ab' * 2**23", "concatenated string too large: 33554432 bytes (the limit is 16777216)"},
+      {"''.join(['ab' * 2**23, 'x'])", "joined string too large: 16777217 bytes (the limit is 16777216)"},
+      {"('ab' * 2**22).replace('a', 'aaaa')", "replaced string too large: 20971520 bytes (the limit is 16777216)"},
+      {"'%s%s%s' % ('ab' * 2**22, 'ab' * 2**22, 'a')", "formatted string too large: 16777217 bytes (the limit is 16777216)"},
+      {"'a'.ljust(10**9)", "padded string too large: 1000000000 bytes (the limit is 16777216)"},
+      {"'a'.zfill(10**9)", "padded string too large: 1000000000 bytes (the limit is 16777216)"},
+      // a repr stops at the first piece that takes it past the limit
+      {"str(['ab' * 2**22] * 3)", "repr too large: 16777223 bytes (the limit is 16777216)"},
+      {"python.repr(python.set(['a' * 9000000, 'b' * 9000000]))", "repr too large: 18000007 bytes (the limit is 16777216)"},
+      {"len([('a' * 9000000).upper() for i in python.range(100)])",
+       "expressions build more than 268435456 bytes of text in all (runaway string building?)"},
+      {"len([('a' * 9000000)[1:] for i in python.range(100)])",
+       "expressions build more than 268435456 bytes of text in all (runaway string building?)"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(EvalFailure(c.expr), c.expected) << c.expr;
+  // copies of a value share its text: a thousand of them cost no more than one
+  EXPECT_EQ(Eval("len([('a' * 9000000)] * 1000 + [s for s in ['a' * 9000000] for i in python.range(1000)])"), "2000");
+  EXPECT_EQ(Eval("len(str('a' * 9000000))"), "9000000");
+}
+
 TEST(Expression, NestingIsBounded) {
   EXPECT_EQ(EvalFailure(std::string(1000, '(') + "1" + std::string(1000, ')')),
             "too many nested parentheses (<expression>, line 1)");
