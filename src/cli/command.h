@@ -32,6 +32,11 @@ void PrintWarningsBeforeError(const Warnings& warnings);
 // a full disk).
 void WriteToStdout(std::string_view text);
 
+// A CLI11 check for a numeric option: the value must be a finite number ("nan", "inf" and
+// "1e999" are refused with "expected a finite number, got 'nan'", which CLI11 prefixes with the
+// option's name). CLI::Range alone lets NaN through: it compares false both ways.
+CLI::Validator FiniteNumber();
+
 // Each subcommand file defines one of these; main.cpp calls them all.
 void AddRenderCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);

@@ -48,13 +48,13 @@ void AddDiffCommand(CLI::App& app) {
                   "over a dimmed EXPECTED");
   cmd->add_option("--max-delta", o->tolerance.max_delta,
                   "a pixel counts as changed when a channel differs by more than N (0-255)")
-      ->capture_default_str()->check(CLI::Range(0, 255));
+      ->capture_default_str()->check(FiniteNumber())->check(CLI::Range(0, 255));
   cmd->add_option("--max-fraction", o->tolerance.max_fraction,
                   "the images differ when more than this fraction of the pixels changed")
-      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+      ->capture_default_str()->check(FiniteNumber())->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--max-mean", o->tolerance.max_mean,
                   "the images differ when the mean pixel delta (0-255) is above this")
-      ->capture_default_str()->check(CLI::Range(0.0, 255.0));
+      ->capture_default_str()->check(FiniteNumber())->check(CLI::Range(0.0, 255.0));
   cmd->callback([o] { Run(*o); });
 }
 

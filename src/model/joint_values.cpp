@@ -41,7 +41,7 @@ void ParseJointAssignment(const std::string& text, NamedValues& out) {
   double value = 0;
   if (equals == std::string::npos || equals == 0 ||
       !ParseNumber(std::string_view(text).substr(equals + 1), value)) {
-    throw Error("joint assignment " + Quoted(text) +
+    throw Error("--joint " + Quoted(text) +
                 ": expected NAME=VALUE with VALUE a number in radians or metres");
   }
   out.emplace_back(text.substr(0, equals), value);

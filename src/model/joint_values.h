@@ -16,7 +16,8 @@ namespace urdfsnap::model {
 using NamedValues = std::vector<std::pair<std::string, double>>;
 
 // Appends the assignment "NAME=VALUE" (VALUE a finite number in radians or metres) to `out`.
-// Throws Error quoting `text` when there is no '=', no name or no number after it.
+// Throws Error naming the option the text comes from ("--joint 'elbow=bent': ...") when there
+// is no '=', no name or no number after it.
 void ParseJointAssignment(const std::string& text, NamedValues& out);
 
 // Reads a joint file: YAML, or JSON when the name ends in ".json". Either a map {name: value} or

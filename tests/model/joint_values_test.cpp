@@ -105,7 +105,7 @@ TEST(ParseJointAssignmentTest, BadAssignmentsAreErrors) {
       ADD_FAILURE() << "no error for " << text;
     } catch (const Error& e) {
       EXPECT_EQ(std::string(e.what()),
-                std::string("joint assignment '") + text +
+                std::string("--joint '") + text +
                     "': expected NAME=VALUE with VALUE a number in radians or metres");
     }
   }

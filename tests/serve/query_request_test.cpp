@@ -50,7 +50,7 @@ TEST(QueryRequest, JointsAsRenderTakesThem) {
   EXPECT_EQ(r.joints[1], (std::pair<std::string, double>{"shoulder", 0.25}));
   // the message of `render -j elbow=bent`
   EXPECT_EQ(ErrorOf({{"j.elbow", "bent"}}),
-            "joint assignment 'elbow=bent': expected NAME=VALUE with VALUE a number in radians or metres");
+            "--joint 'elbow=bent': expected NAME=VALUE with VALUE a number in radians or metres");
   EXPECT_NE(ErrorOf({{"j.", "1"}}).find("expected NAME=VALUE"), std::string::npos);
 }
 

@@ -1,0 +1,230 @@
+// Every option of every command and every key of a snapshot suite, each classified here as a
+// number, text or a flag; the numeric ones must refuse NaN and infinities with exit status 2 and
+// an error naming them (CLI11's range checks let NaN through: `diff --max-fraction nan` once said
+// "differ" for two identical images). The table is checked against what the binary itself lists
+// (each command's --help, the suite reader's known keys), so a new option fails this test until
+// it is classified here.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/temp_folder.h"
+#include "urdfsnap_process.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+enum class Kind { kNumber, kText, kFlag };
+
+const std::string kMrm = std::string(URDFSNAP_SOURCE_DIR) + "/models/mrm_description/urdf/mrm.urdf";
+const std::string kPng = std::string(URDFSNAP_SOURCE_DIR) + "/tests/fuzz/png_reader/rgb8.png";
+
+struct CommandOption {
+  const char* command;  // as typed after "urdfsnap" ("" for the options before any command)
+  const char* option;   // the long name, or the short one when there is no long one
+  Kind kind;
+  // numbers: the arguments after the command that use the option, {v} standing for the value
+  const char* usage = "";
+};
+
+// every option --help lists, per command
+const std::vector<CommandOption>& Options() {
+  static const std::vector<CommandOption> options = {
+      {"", "--help", Kind::kFlag},
+      {"", "--version", Kind::kFlag},
+      {"", "--strict", Kind::kFlag},
+      {"render", "--help", Kind::kFlag},
+      {"render", "--package", Kind::kText},
+      {"render", "--xacro-ns", Kind::kFlag},
+      {"render", "--output", Kind::kText},
+      {"render", "--joint", Kind::kNumber, "MRM -o OUT -j base_link__link_01={v}"},
+      {"render", "--joints", Kind::kText},
+      {"render", "--size", Kind::kNumber, "MRM -o OUT --size {v}x480"},
+      {"render", "--rviz", Kind::kText},
+      {"render", "--yaw", Kind::kNumber, "MRM -o OUT --yaw {v}"},
+      {"render", "--pitch", Kind::kNumber, "MRM -o OUT --pitch {v}"},
+      {"render", "--distance", Kind::kNumber, "MRM -o OUT --distance {v}"},
+      {"render", "--focal", Kind::kNumber, "MRM -o OUT --focal 0,{v},0"},
+      {"render", "--fov", Kind::kNumber, "MRM -o OUT --fov {v}"},
+      {"render", "--fixed-frame", Kind::kText},
+      {"render", "--background", Kind::kNumber, "MRM -o OUT --background {v},0,0"},
+      {"render", "--alpha", Kind::kNumber, "MRM -o OUT --alpha {v}"},
+      {"render", "--tf-scale", Kind::kNumber, "MRM -o OUT --tf-scale {v}"},
+      {"render", "--no-clamp", Kind::kFlag},
+      {"render", "--fit", Kind::kFlag},
+      {"render", "--collision", Kind::kFlag},
+      {"render", "--no-visual", Kind::kFlag},
+      {"render", "--no-grid", Kind::kFlag},
+      {"render", "--tf", Kind::kFlag},
+      {"render", "--no-tf-names", Kind::kFlag},
+      {"render", "--no-tf-axes", Kind::kFlag},
+      {"render", "--no-tf-arrows", Kind::kFlag},
+      {"render", "--no-aa", Kind::kFlag},
+      {"render", "--allow-missing-meshes", Kind::kFlag},
+      {"info", "--help", Kind::kFlag},
+      {"info", "--package", Kind::kText},
+      {"info", "--xacro-ns", Kind::kFlag},
+      {"xacro", "--help", Kind::kFlag},
+      {"xacro", "--output", Kind::kText},
+      {"xacro", "--inorder", Kind::kFlag},
+      {"xacro", "--xacro-ns", Kind::kFlag},
+      {"xacro", "--deps", Kind::kFlag},
+      {"xacro", "-q", Kind::kFlag},
+      {"xacro", "--package", Kind::kText},
+      {"diff", "--help", Kind::kFlag},
+      {"diff", "--diff", Kind::kText},
+      {"diff", "--max-delta", Kind::kNumber, "PNG PNG --max-delta {v}"},
+      {"diff", "--max-fraction", Kind::kNumber, "PNG PNG --max-fraction {v}"},
+      {"diff", "--max-mean", Kind::kNumber, "PNG PNG --max-mean {v}"},
+      {"snapshot", "--help", Kind::kFlag},
+      {"snapshot check", "--help", Kind::kFlag},
+      {"snapshot check", "--report", Kind::kText},
+      {"snapshot check", "--junit", Kind::kText},
+      {"snapshot update", "--help", Kind::kFlag},
+      {"snapshot update", "--force", Kind::kFlag},
+  };
+  return options;
+}
+
+struct SuiteKey {
+  const char* key;
+  Kind kind;
+  const char* value = "";  // numbers: the value that uses the key, {v} standing for the number
+};
+
+// every key a case of a suite file may have
+const std::vector<SuiteKey>& SuiteKeys() {
+  static const std::vector<SuiteKey> keys = {
+      {"name", Kind::kText},
+      {"golden", Kind::kText},
+      {"model", Kind::kText},
+      {"args", Kind::kText},
+      {"packages", Kind::kText},
+      {"xacro-ns", Kind::kFlag},
+      {"joints", Kind::kNumber, "{base_link__link_01: {v}}"},
+      {"max-delta", Kind::kNumber, "{v}"},
+      {"max-fraction", Kind::kNumber, "{v}"},
+      {"max-mean", Kind::kNumber, "{v}"},
+      {"size", Kind::kNumber, "{v}x480"},
+      {"rviz", Kind::kText},
+      {"yaw", Kind::kNumber, "{v}"},
+      {"pitch", Kind::kNumber, "{v}"},
+      {"distance", Kind::kNumber, "{v}"},
+      {"focal", Kind::kNumber, "0,{v},0"},
+      {"fov", Kind::kNumber, "{v}"},
+      {"fixed-frame", Kind::kText},
+      {"background", Kind::kNumber, "{v},0,0"},
+      {"alpha", Kind::kNumber, "{v}"},
+      {"tf-scale", Kind::kNumber, "{v}"},
+      {"no-clamp", Kind::kFlag},
+      {"fit", Kind::kFlag},
+      {"collision", Kind::kFlag},
+      {"no-visual", Kind::kFlag},
+      {"no-grid", Kind::kFlag},
+      {"tf", Kind::kFlag},
+      {"no-tf-names", Kind::kFlag},
+      {"no-tf-axes", Kind::kFlag},
+      {"no-tf-arrows", Kind::kFlag},
+      {"no-aa", Kind::kFlag},
+      {"allow-missing-meshes", Kind::kFlag},
+  };
+  return keys;
+}
+
+// NaN and the infinities as a user might write them (YAML's spellings in suites too)
+const std::vector<std::string> kNotFinite = {"nan", "NaN", "inf", "-inf", "+Infinity", "1e999"};
+const std::vector<std::string> kNotFiniteInYaml = {"nan", ".nan", "inf", "-.inf", "1e999"};
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+// the options a command's --help lists (the long name where there is one)
+std::set<std::string> HelpOptions(const std::string& command) {
+  const auto run = urdfsnap::test::RunUrdfsnap(command + " --help");
+  EXPECT_EQ(run.status, 0) << command << ": " << run.err;
+  static const std::regex kOptionLine(R"(^  (-[A-Za-z0-9])?,?(--[a-z][a-z0-9-]*)?[ \[])");
+  std::set<std::string> names;
+  std::istringstream lines(run.out);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (!std::regex_search(line, m, kOptionLine)) continue;
+    if (m[2].matched) names.insert(m[2]);
+    else if (m[1].matched) names.insert(m[1]);
+  }
+  return names;
+}
+
+TEST(NumericOptions, EveryOptionOfEveryCommandIsClassified) {
+  std::map<std::string, std::set<std::string>> table;
+  for (const CommandOption& o : Options()) table[o.command].insert(o.option);
+  for (const std::string command : {"", "render", "info", "xacro", "diff", "snapshot", "snapshot check", "snapshot update"}) {
+    EXPECT_EQ(HelpOptions(command), table[command])
+        << "'urdfsnap " << command << " --help' lists other options than this test's table: classify the new "
+        << "ones (a number must refuse NaN and infinities)";
+  }
+}
+
+TEST(NumericOptions, EveryKeyOfASuiteIsClassified) {
+  const urdfsnap::test::TempFolder folder("numeric_options");
+  const fs::path suite = folder.path() / "suite.yaml";
+  std::ofstream(suite) << "cases:\n  - name: a\n    no-such-key: 1\n";
+  const auto run = urdfsnap::test::RunUrdfsnap("snapshot check " + suite.string());
+  const size_t known = run.err.find("(known: ");
+  ASSERT_NE(known, std::string::npos) << run.err;
+  std::set<std::string> listed;
+  std::istringstream words(run.err.substr(known + 8, run.err.find(')', known) - known - 8));
+  for (std::string word; std::getline(words, word, ',');) listed.insert(word.substr(word.find_first_not_of(' ')));
+  std::set<std::string> table;
+  for (const SuiteKey& k : SuiteKeys()) table.insert(k.key);
+  EXPECT_EQ(listed, table) << "the suite reader knows other keys than this test's table: classify the new ones";
+}
+
+TEST(NumericOptions, RefuseNanAndInfinitiesNamingTheOption) {
+  const urdfsnap::test::TempFolder folder("numeric_options");
+  const std::string out = (folder.path() / "out.png").string();
+  for (const CommandOption& o : Options()) {
+    if (o.kind != Kind::kNumber) continue;
+    for (const std::string& value : kNotFinite) {
+      std::string arguments = Replace(Replace(Replace(o.usage, "{v}", value), "MRM", kMrm), "OUT", out);
+      arguments = std::string(o.command) + " " + Replace(arguments, "PNG", kPng);
+      const auto run = urdfsnap::test::RunUrdfsnap(arguments);
+      EXPECT_EQ(run.status, 2) << "urdfsnap " << arguments << "\n" << run.out << run.err;
+      EXPECT_EQ(run.err.rfind("urdfsnap: error: ", 0), 0u) << arguments << "\n" << run.err;
+      EXPECT_NE(run.err.find(o.option), std::string::npos) << "the error does not name " << o.option << ":\n" << run.err;
+      EXPECT_NE(run.err.find(value), std::string::npos) << "the error does not quote '" << value << "':\n" << run.err;
+      EXPECT_FALSE(fs::exists(out)) << arguments;
+    }
+  }
+}
+
+TEST(NumericOptions, SuiteKeysRefuseNanAndInfinitiesNamingTheKeyAndLine) {
+  const urdfsnap::test::TempFolder folder("numeric_options");
+  const fs::path suite = folder.path() / "suite.yaml";
+  for (const SuiteKey& k : SuiteKeys()) {
+    if (k.kind != Kind::kNumber) continue;
+    for (const std::string& value : kNotFiniteInYaml) {
+      std::ofstream(suite) << "cases:\n  - name: a\n    model: " << kMrm << "\n    " << k.key << ": "
+                           << Replace(k.value, "{v}", value) << "\n";
+      const auto run = urdfsnap::test::RunUrdfsnap("snapshot update " + suite.string());
+      const std::string output = run.out + run.err;
+      EXPECT_EQ(run.status, 2) << k.key << ": " << value << "\n" << output;
+      EXPECT_NE(output.find("suite.yaml:4"), std::string::npos) << output;
+      EXPECT_NE(output.find(k.key), std::string::npos) << "the error does not name '" << k.key << "':\n" << output;
+      EXPECT_FALSE(fs::exists(folder.path() / "a.png")) << k.key << ": " << value;
+    }
+  }
+}
+
+}  // namespace
