@@ -109,6 +109,30 @@ TEST_F(CliTest, BadOptionValuesAreUsageErrors) {
   }
 }
 
+// CLI11 alone says "A subcommand is required" for all of these.
+TEST_F(CliTest, UnknownOrMissingCommandsAreNamed) {
+  const std::string commands = "(commands: render, info, xacro, diff, snapshot)";
+  const std::pair<std::string, std::string> cases[] = {
+      {"frobnicate", "urdfsnap: error: unknown command 'frobnicate' " + commands},
+      {"--strict frobnicate x.urdf", "urdfsnap: error: unknown command 'frobnicate' " + commands},
+      {"rendr x.urdf",
+       "urdfsnap: error: unknown command 'rendr' (did you mean 'render'? commands: render, info, xacro, diff, snapshot)"},
+      {"snapshot frob", "urdfsnap: error: unknown snapshot command 'frob' (commands: check, update)"},
+      {"snapshot chek suite.yaml",
+       "urdfsnap: error: unknown snapshot command 'chek' (did you mean 'check'? commands: check, update)"},
+      {"", "urdfsnap: error: no command given (commands: render, info, xacro, diff, snapshot; see 'urdfsnap --help')"},
+      {"snapshot", "urdfsnap: error: no snapshot command given (commands: check, update; see 'urdfsnap --help')"},
+      {"-x", "urdfsnap: error: unknown option '-x' and no command " + commands},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const Result r = RunUrdfsnap(arguments);
+    EXPECT_EQ(r.status, 2) << arguments;
+    EXPECT_EQ(r.output, message + "\n") << arguments;
+  }
+  // the other usage errors keep CLI11's words
+  EXPECT_EQ(RunUrdfsnap("render").output, "urdfsnap: error: MODEL is required (see 'urdfsnap --help')\n");
+}
+
 TEST_F(CliTest, MissingModelIsAnError) {
   const Result r = RunUrdfsnap("render " + Path("nope.urdf") + " -o " + Path("a.png"));
   EXPECT_EQ(r.status, 2);
