@@ -589,11 +589,26 @@ bool Processor::HandleMacroCall(Node* node, const Macros& macros, const Symbols&
   for (const auto& active : macro_stack_) {
     if (active->name == node->name) return false;
   }
-  warnings_.Add(SourceLocation{node->file >= 0 ? files_[node->file] : "", node->line}.ToString() + ": <" + node->name +
-                "> is a legacy macro call without the xacro: prefix (expanded as ROS Melodic's xacro did); write <xacro:" +
-                node->name + "> instead, or pass --xacro-ns to leave such tags alone");
+  // one warning per macro, made at the end (a tutorial robot calls each macro several times)
+  auto calls = std::find_if(legacy_calls_.begin(), legacy_calls_.end(),
+                            [&](const LegacyCalls& c) { return c.name == node->name; });
+  if (calls == legacy_calls_.end()) {
+    legacy_calls_.push_back({node->name, SourceLocation{node->file >= 0 ? files_[node->file] : "", node->line}.ToString(), 0});
+    calls = legacy_calls_.end() - 1;
+  }
+  ++calls->count;
   ExpandMacro(node, node->name, macros, symbols);
   return true;
+}
+
+void Processor::ReportLegacyCalls() {
+  for (const LegacyCalls& c : legacy_calls_) {
+    const std::string calls = c.count == 1 ? "" : " (" + std::to_string(c.count) + " calls, the first here)";
+    warnings_.Add(c.first_location + ": <" + c.name + "> is a legacy macro call without the xacro: prefix" + calls +
+                  ", expanded as ROS Melodic's xacro did; write <xacro:" + c.name +
+                  "> instead, or pass --xacro-ns to leave such tags alone");
+  }
+  legacy_calls_.clear();
 }
 
 void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& macros, const Symbols& symbols) {
@@ -702,6 +717,11 @@ void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& m
 
 Result Processor::Run(const std::string& path) {
   const EvaluationBudget budget;  // one for all of the document's expressions
+  // the legacy-call warnings, whether the expansion succeeds or fails
+  struct ReportAtExit {
+    Processor& processor;
+    ~ReportAtExit() { processor.ReportLegacyCalls(); }
+  } report{*this};
   try {
     files_.push_back(path);
     file_stack_.push_back({0, 0});

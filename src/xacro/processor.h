@@ -54,6 +54,9 @@ class Processor : public TextEvaluator {
   void RemovePreviousComments(Node* node);
   // Gives a node that left the document (and its subtree) back to the pool.
   void Recycle(Node* node);
+  // Adds one warning per macro called the legacy way (without xacro:), with the number of calls
+  // and the first one's location.
+  void ReportLegacyCalls();
 
   Value EvalExpression(const std::string& text, const Symbols& symbols);
   std::string AbsFilename(const std::string& spec) const;
@@ -72,6 +75,13 @@ class Processor : public TextEvaluator {
   std::vector<std::string> dependencies_;
   std::vector<std::shared_ptr<Table>> namespaces_;  // include ns= tables, cleared at the end
   std::unordered_map<std::string, ExprPtr> expression_cache_;
+  // legacy macro calls, per macro in the order of their first call: its location and the count
+  struct LegacyCalls {
+    std::string name;
+    std::string first_location;
+    int count = 0;
+  };
+  std::vector<LegacyCalls> legacy_calls_;
   const Node* current_ = nullptr;  // the node being processed, for error locations
   Node* barrier_ = nullptr;        // xacro's _empty_text_node: stops comment removal
 };

@@ -235,6 +235,31 @@ TEST(Processor, LegacyUnprefixedCallsExpandWithAWarning) {
   EXPECT_TRUE(none.empty());
 }
 
+// The tutorial robot calls each of its macros several times the legacy way: one warning per
+// macro, with the number of calls and the first, also when the expansion fails later.
+TEST(Processor, LegacyCallsWarnOncePerMacro) {
+  const std::string macros = R"(
+  <xacro:macro name="box" params="name"><link name="${name}"/></xacro:macro>
+  <xacro:macro name="pin" params="name"><joint name="${name}"/></xacro:macro>)";
+  Warnings warnings;
+  ExpandText(Robot(macros + R"(
+  <box name="a"/><pin name="j1"/>
+  <box name="b"/>
+  <box name="c"/><pin name="j2"/>)"), {}, &warnings);
+  std::vector<std::string> messages;  // from the file name on (the folder is a temporary one)
+  for (const std::string& m : warnings.messages()) messages.push_back(m.substr(m.find("input.xacro")));
+  EXPECT_EQ(messages, (std::vector<std::string>{
+      "input.xacro:6: <box> is a legacy macro call without the xacro: prefix (3 calls, the first here), "
+      "expanded as ROS Melodic's xacro did; write <xacro:box> instead, or pass --xacro-ns to leave such tags alone",
+      "input.xacro:6: <pin> is a legacy macro call without the xacro: prefix (2 calls, the first here), "
+      "expanded as ROS Melodic's xacro did; write <xacro:pin> instead, or pass --xacro-ns to leave such tags alone"}));
+
+  Warnings before_error;
+  EXPECT_THROW(ExpandText(Robot(macros + "\n  <box name=\"a\"/><box name=\"${nothing}\"/>"), {}, &before_error), Error);
+  ASSERT_EQ(before_error.messages().size(), 1u);
+  EXPECT_THAT(before_error.messages()[0], HasSubstr("<box> is a legacy macro call without the xacro: prefix (2 calls"));
+}
+
 TEST(Processor, RedefiningAGlobalSymbolWarns) {
   Warnings warnings;
   const std::string out = ExpandText(Robot(R"(<xacro:property name="pi" value="3"/><a p="${pi}" m="${math.pi}"/>)"), {}, &warnings);
