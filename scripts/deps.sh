@@ -10,9 +10,10 @@ packages=(
   liburdfdom-dev libeigen3-dev libosmesa6-dev libstb-dev libjpeg-dev zlib1g-dev
   libtinyxml2-dev libexpat1-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libbenchmark-dev fonts-liberation libfreetype-dev python3
-  libcpp-httplib-dev chromium nodejs
+  libcpp-httplib-dev nodejs
   libzstd-dev liblz4-dev
   libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev libavutil-dev libwebp-dev ffmpeg
+  chromium  # the browser tests (the HTML report, serve's page), headless; CI fails them without it
 )
 # npm only for the test tooling, and only when no npm is on the PATH (NodeSource's nodejs package
 # brings its own, which Debian's npm package would conflict with)

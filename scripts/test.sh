@@ -6,6 +6,8 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"
+# the browser tests run in headless Chromium (in CI a missing browser fails them)
+echo "test.sh: browser tests with $(chromium --version 2>/dev/null || echo 'no chromium (they will be skipped, or fail in CI)')"
 (cd "$root/build" && ctest --output-on-failure -j "$(nproc)" "$@")
 if [ "${CI:-}" = true ]; then
   "$root/scripts/test-sanitizers.sh"
