@@ -3,7 +3,10 @@
 
 #include <cmath>
 
+#include <algorithm>
+
 #include "xacro/attributes.h"
+#include "xacro/call_arguments.h"
 #include "xacro/operators.h"
 
 namespace urdfsnap::xacro {
@@ -43,9 +46,133 @@ Value IntResult(const std::string& name, double (*f)(double)) {
   });
 }
 
-Int IntArg(const std::string& function, const Value& v) {
-  if (!v.IsIntLike()) throw EvalError("'" + TypeName(v) + "' object cannot be interpreted as an integer (" + function + ")");
+Int IntArg(const Value& v) {
+  if (!v.IsIntLike()) throw EvalError("'" + TypeName(v) + "' object cannot be interpreted as an integer");
   return AsInt(v);
+}
+
+// n! / (n - k)!, exactly (an EvalError when it needs more than 127 bits)
+Value FallingFactorial(Int n, Int k) {
+  Value r = Value::Integer(1);
+  for (Int j = 0; j < k; ++j) r = BinaryOp("*", r, Value::Integer(n - j));
+  return r;
+}
+
+Int Gcd(Int a, Int b) {
+  a = a < 0 ? -a : a;
+  b = b < 0 ? -b : b;
+  while (b) {
+    const Int t = a % b;
+    a = b;
+    b = t;
+  }
+  return a;
+}
+
+// the length of a vector (CPython's vector_norm: inf wins over nan); glibc's correctly rounded
+// hypot for two coordinates, extended precision for more
+double Norm(const std::vector<double>& v) {
+  bool infinite = false, nan = false;
+  for (double x : v) {
+    infinite = infinite || std::isinf(x);
+    nan = nan || std::isnan(x);
+  }
+  if (infinite) return HUGE_VAL;
+  if (nan) return NAN;
+  if (v.size() <= 2) return std::hypot(v.empty() ? 0.0 : v[0], v.size() < 2 ? 0.0 : v[1]);
+  long double largest = 0.0L, sum = 0.0L;
+  for (double x : v) largest = std::max(largest, std::fabs(static_cast<long double>(x)));
+  if (largest == 0.0L) return 0.0;
+  for (double x : v) {
+    const long double scaled = x / largest;
+    sum += scaled * scaled;
+  }
+  return static_cast<double>(largest * std::sqrt(sum));
+}
+
+// the math functions on integers and iterables Python 3.8 to 3.11 added
+Members NewerMathMembers() {
+  return {
+      {"comb", Fn("comb", [](ValueList& a) {
+         Expected("comb", a, 2, 2);
+         const Int n = IntArg(a[0]), k = IntArg(a[1]);
+         if (n < 0) throw EvalError("n must be a non-negative integer");
+         if (k < 0) throw EvalError("k must be a non-negative integer");
+         if (k > n) return Value::Integer(0);
+         // C(n, k) = C(n, k - 1) * (n - k + 1) / k, exact at every step
+         const Int m = std::min(k, n - k);
+         Value r = Value::Integer(1);
+         for (Int j = 1; j <= m; ++j) r = BinaryOp("//", BinaryOp("*", r, Value::Integer(n - m + j)), Value::Integer(j));
+         return r;
+       })},
+      {"perm", Fn("perm", [](ValueList& a) {
+         Expected("perm", a, 1, 2);
+         const Int n = IntArg(a[0]);
+         if (a.size() == 1 || a[1].type == Value::Type::kNone) {
+           if (n < 0) throw EvalError("factorial() not defined for negative values");
+           return FallingFactorial(n, n);
+         }
+         const Int k = IntArg(a[1]);
+         if (n < 0) throw EvalError("n must be a non-negative integer");
+         if (k < 0) throw EvalError("k must be a non-negative integer");
+         return k > n ? Value::Integer(0) : FallingFactorial(n, k);
+       })},
+      {"dist", Fn("dist", [](ValueList& a) {
+         Expected("dist", a, 2, 2);
+         const ValueList p = Iterate(a[0]), q = Iterate(a[1]);
+         if (p.size() != q.size()) throw EvalError("both points must have the same number of dimensions");
+         std::vector<double> d;
+         for (size_t k = 0; k < p.size(); ++k) d.push_back(Real(p[k]) - Real(q[k]));
+         return Value::Float(Norm(d));
+       })},
+      {"frexp", Fn("frexp", [](ValueList& a) {
+         CheckArity("frexp", a, 1, 1);
+         const double x = Real(a[0]);
+         if (!std::isfinite(x)) return Value::Tuple({Value::Float(x), Value::Integer(0)});
+         int e = 0;
+         const double m = std::frexp(x, &e);
+         return Value::Tuple({Value::Float(m), Value::Integer(e)});
+       })},
+      {"lcm", Fn("lcm", [](ValueList& a) {
+         Value r = Value::Integer(1);
+         for (const Value& v : a) {
+           const Int x = IntArg(v), current = AsInt(r);
+           if (x == 0 || current == 0) {
+             r = Value::Integer(0);
+             continue;
+           }
+           r = BinaryOp("*", Value::Integer(current / Gcd(current, x)), Value::Integer(x < 0 ? -x : x));
+         }
+         return r;
+       })},
+      {"nextafter", Fn("nextafter", [](ValueList& a) {
+         Expected("nextafter", a, 2, 2);
+         return Value::Float(std::nextafter(Real(a[0]), Real(a[1])));
+       })},
+      {"prod", Value::Callable("prod", [](ValueList& a, Kwargs& kw) {
+         if (a.size() != 1) {
+           throw EvalError("prod() takes exactly 1 positional argument (" + std::to_string(a.size()) + " given)");
+         }
+         OnlyKeywords("prod", kw, {"start"});
+         const Value* start = Keyword(kw, "start");
+         Value r = start ? *start : Value::Integer(1);
+         const NextFunction next = IterateLazily(a[0]);
+         while (std::optional<Value> item = next()) r = BinaryOp("*", r, *item);
+         return r;
+       })},
+      {"ulp", Fn("ulp", [](ValueList& a) {
+         CheckArity("ulp", a, 1, 1);
+         const double x = std::fabs(Real(a[0]));
+         if (!std::isfinite(x)) return Value::Float(x);
+         const double next = std::nextafter(x, HUGE_VAL);
+         return Value::Float(std::isinf(next) ? x - std::nextafter(x, 0.0) : next - x);
+       })},
+      {"hypot", Fn("hypot", [](ValueList& a) {
+         std::vector<double> v;
+         for (const Value& x : a) v.push_back(Real(x));
+         return Value::Float(Norm(v));
+       })},
+  };
 }
 
 }  // namespace
@@ -63,7 +190,7 @@ std::vector<std::pair<std::string, Value>> MathMembers() {
       {"fabs", Math1("fabs", std::fabs)}, {"erf", Math1("erf", std::erf)}, {"erfc", Math1("erfc", std::erfc)},
       {"gamma", Math1("gamma", std::tgamma)}, {"lgamma", Math1("lgamma", std::lgamma)},
       {"cbrt", Math1("cbrt", std::cbrt)}, {"exp2", Math1("exp2", std::exp2)},
-      {"atan2", Math2("atan2", std::atan2)}, {"hypot", Math2("hypot", std::hypot)},
+      {"atan2", Math2("atan2", std::atan2)},
       {"copysign", Math2("copysign", std::copysign)}, {"fmod", Math2("fmod", std::fmod)},
       {"remainder", Math2("remainder", std::remainder)}, {"pow", Math2("pow", std::pow)},
       {"floor", IntResult("floor", std::floor)}, {"ceil", IntResult("ceil", std::ceil)},
@@ -97,7 +224,7 @@ std::vector<std::pair<std::string, Value>> MathMembers() {
        })},
       {"factorial", Fn("factorial", [](ValueList& a) {
          CheckArity("factorial", a, 1, 1);
-         const Int n = IntArg("factorial", a[0]);
+         const Int n = IntArg(a[0]);
          if (n < 0) throw EvalError("factorial() not defined for negative values");
          Value r = Value::Integer(1);
          for (Int k = 2; k <= n; ++k) r = BinaryOp("*", r, Value::Integer(k));
@@ -106,7 +233,7 @@ std::vector<std::pair<std::string, Value>> MathMembers() {
       {"gcd", Fn("gcd", [](ValueList& a) {
          Int g = 0;
          for (const Value& v : a) {
-           Int x = IntArg("gcd", v);
+           Int x = IntArg(v);
            x = x < 0 ? -x : x;
            while (x) { Int t = g % x; g = x; x = t; }
          }
@@ -114,7 +241,7 @@ std::vector<std::pair<std::string, Value>> MathMembers() {
        })},
       {"isqrt", Fn("isqrt", [](ValueList& a) {
          CheckArity("isqrt", a, 1, 1);
-         const Int n = IntArg("isqrt", a[0]);
+         const Int n = IntArg(a[0]);
          if (n < 0) throw EvalError("isqrt() argument must be nonnegative");
          Int r = static_cast<Int>(std::sqrt(static_cast<double>(n)));
          while (r * r > n) --r;
@@ -141,9 +268,10 @@ std::vector<std::pair<std::string, Value>> MathMembers() {
        })},
       {"ldexp", Fn("ldexp", [](ValueList& a) {
          CheckArity("ldexp", a, 2, 2);
-         return Value::Float(std::ldexp(Real(a[0]), static_cast<int>(IntArg("ldexp", a[1]))));
+         return Value::Float(std::ldexp(Real(a[0]), static_cast<int>(IntArg(a[1]))));
        })},
   };
+  for (auto& member : NewerMathMembers()) m.push_back(std::move(member));
   return m;
 }
 

@@ -27,7 +27,9 @@ PYTHON = DIRECT + ['abs', 'all', 'any', 'complex', 'divmod', 'enumerate', 'filte
 def xacro_globals():
     g = {k: getattr(builtins, k) for k in DIRECT + ['sorted', 'range']}
     g['python'] = types.SimpleNamespace(**{k: getattr(builtins, k) for k in PYTHON})
-    g.update({k: v for k, v in math.__dict__.items() if not k.startswith('_')})
+    math_names = {k: v for k, v in math.__dict__.items() if not k.startswith('_')}
+    g.update(math_names)
+    g['math'] = types.SimpleNamespace(**math_names)
     g['__builtins__'] = {}
     return g
 

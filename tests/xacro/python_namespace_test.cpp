@@ -1,7 +1,8 @@
 // Every name of xacro's `python` namespace (create_global_symbols in ros/xacro's xacro/__init__.py,
 // branch ros2: list dict map len str float int True False min max round abs all any complex divmod
 // enumerate filter frozenset hash isinstance issubclass ord repr reversed slice set sum tuple type
-// zip sorted range), and which of them are also global: each result spelt as Python's str()
+// zip sorted range), which of them are also global, and the math functions Python 3.8 to 3.11
+// added (xacro exposes all of math): each result spelt as Python's str()
 // spells it and each error with Python's message. The expected texts are Python 3.11's own,
 // printed by tests/xacro/python_expectations.py (PYTHONHASHSEED=0); addresses ("<zip object at
 // 0x...>") differ from run to run and are compared without their digits.
@@ -918,6 +919,74 @@ TEST(PythonNamespace, Range) {
       {"python.range(3)['a']", "error: range indices must be integers or slices, not str"},
       {"python.range(3)[::0]", "error: slice step cannot be zero"},
       {"len(python.range(2**70))", "error: Python int too large to convert to C ssize_t"},
+  });
+}
+
+// xacro exposes all of math, directly and as math.*: the functions Python 3.8 to 3.11 added too
+TEST(PythonNamespace, MathFunctionsSincePython38) {
+  ExpectPython({
+      {"math.comb(5,2)", "10"},
+      {"math.comb(50,25)", "126410606437752"},
+      {"math.comb(5,7)", "0"},
+      {"math.comb(-1,2)", "error: n must be a non-negative integer"},
+      {"math.comb(5,-1)", "error: k must be a non-negative integer"},
+      {"math.comb(1.5,1)", "error: 'float' object cannot be interpreted as an integer"},
+      {"math.comb(5)", "error: comb expected 2 arguments, got 1"},
+      {"math.comb(True, False)", "1"},
+      {"math.comb(120, 60)", "96614908840363322603893139521372656"},
+      {"math.perm(5,2)", "20"},
+      {"math.perm(5)", "120"},
+      {"math.perm(5,7)", "0"},
+      {"math.perm(-1)", "error: factorial() not defined for negative values"},
+      {"math.perm(30)", "265252859812191058636308480000000"},
+      {"math.dist([0,0],[3,4])", "5.0"},
+      {"math.dist([0],[1,2])", "error: both points must have the same number of dimensions"},
+      {"math.dist(1,2)", "error: 'int' object is not iterable"},
+      {"math.dist((1,2),(3,'a'))", "error: must be real number, not str"},
+      {"math.dist((1,2,3),(4,5,6))", "5.196152422706632"},
+      {"math.dist([0.1, 0.2, 0.3], [1, 2, 3])", "3.3674916480965473"},
+      {"math.frexp(8.0)", "(0.5, 4)"},
+      {"math.frexp(0)", "(0.0, 0)"},
+      {"math.frexp(float('inf'))", "(inf, 0)"},
+      {"math.frexp(-0.0)", "(-0.0, 0)"},
+      {"math.frexp(0.1)", "(0.8, -3)"},
+      {"math.lcm(4,6)", "12"},
+      {"math.lcm()", "1"},
+      {"math.lcm(0,5)", "0"},
+      {"math.lcm(-4,6)", "12"},
+      {"math.lcm(1.5)", "error: 'float' object cannot be interpreted as an integer"},
+      {"math.lcm(4, 6, 10)", "60"},
+      {"math.nextafter(1,2)", "1.0000000000000002"},
+      {"math.nextafter(1)", "error: nextafter expected 2 arguments, got 1"},
+      {"math.nextafter(0, -1)", "-5e-324"},
+      {"math.prod([1,2,3])", "6"},
+      {"math.prod([])", "1"},
+      {"math.prod([1.5,2])", "3.0"},
+      {"math.prod([2,3],start=2)", "12"},
+      {"math.prod('ab')", "error: can't multiply sequence by non-int of type 'str'"},
+      {"math.prod(['a', 2])", "aa"},
+      {"math.prod([1],[2])", "error: prod() takes exactly 1 positional argument (2 given)"},
+      {"math.ulp(1.0)", "2.220446049250313e-16"},
+      {"math.ulp(0)", "5e-324"},
+      {"math.ulp(float('inf'))", "inf"},
+      {"math.ulp(float('nan'))", "nan"},
+      {"math.ulp(-2.0)", "4.440892098500626e-16"},
+      {"math.ulp(1e308)", "1.99584030953472e+292"},
+      {"math.hypot(1,2,2)", "3.0"},
+      {"math.hypot()", "0.0"},
+      {"math.hypot(3)", "3.0"},
+      {"math.hypot(3, 4)", "5.0"},
+      {"math.hypot(1, 1)", "1.4142135623730951"},
+      {"math.hypot(0.1, 0.2, 0.3)", "0.3741657386773941"},
+      {"math.hypot(1e308, 1e308, 1e308)", "1.7320508075688772e+308"},
+      {"math.hypot(1, 2, 3, 4, 5, 6, 7)", "11.832159566199232"},
+      {"math.hypot(float('nan'), float('inf'))", "inf"},
+      {"math.gcd()", "0"},
+      {"math.gcd(1.5)", "error: 'float' object cannot be interpreted as an integer"},
+      {"math.factorial(1.5)", "error: 'float' object cannot be interpreted as an integer"},
+      {"math.isqrt('a')", "error: 'str' object cannot be interpreted as an integer"},
+      {"comb(5, 2)", "10"},
+      {"prod([2, 2])", "4"},
   });
 }
 
