@@ -366,9 +366,8 @@ Value DictMethod(const Value& v, const std::string& name) {
   if (name == "get") {
     return Bind("dict.get", [v](ValueList& a) {
       CheckArity("get", a, 1, 2);
-      for (const auto& [key, value] : v.dict->items) {
-        if (Equal(key, a[0])) return Wrapped(value, v.wrapped);
-      }
+      const size_t k = v.dict->Find(a[0]);
+      if (k != DictItems::kNone) return Wrapped(v.dict->items[k].second, v.wrapped);
       return a.size() > 1 ? a[1] : Value::None();
     });
   }
@@ -529,9 +528,8 @@ Value GetAttribute(const Value& v, const std::string& name) {
     case Value::Type::kScope: return v.scope->Get(name);
     case Value::Type::kDict:
       if (v.wrapped) {
-        for (const auto& [key, member] : v.dict->items) {
-          if (key.type == Value::Type::kStr && key.s == name) return Wrapped(member, true);
-        }
+        const size_t k = v.dict->Find(Value::Str(name));
+        if (k != DictItems::kNone) return Wrapped(v.dict->items[k].second, true);
         throw EvalError("The yaml dictionary has no key '" + name + "'");
       }
       return DictMethod(v, name);

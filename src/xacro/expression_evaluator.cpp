@@ -77,13 +77,12 @@ class Evaluator {
         return e.kind == Expr::Kind::kList ? Value::List(std::move(items)) : Value::Tuple(std::move(items));
       }
       case Expr::Kind::kDict: {
-        std::vector<std::pair<Value, Value>> items;
+        DictBuilder items;
         for (size_t k = 0; k + 1 < e.kids.size(); k += 2) {
           Value key = Eval(*e.kids[k]);
-          Hash(key);  // keys must be hashable
-          DictPut(items, std::move(key), Eval(*e.kids[k + 1]));
+          items.Put(std::move(key), Eval(*e.kids[k + 1]));
         }
-        return Value::Dict(std::move(items));
+        return Value::Dict(items.Take());
       }
       case Expr::Kind::kSet: {
         Value set = MakeSet(Value::Type::kSet);

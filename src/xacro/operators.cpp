@@ -255,9 +255,7 @@ bool Contains(const Value& container, const Value& item) {
         if (Equal(v, item)) return true;
       }
       return false;
-    case Value::Type::kDict:
-      Hash(item);  // a dict lookup wants a hashable key
-      [[fallthrough]];
+    case Value::Type::kDict: return container.dict->Find(item) != DictItems::kNone;
     case Value::Type::kModule:
       for (const auto& kv : container.dict->items) {
         if (Equal(kv.first, item)) return true;
@@ -339,13 +337,12 @@ Value Subscript(const Value& v, const Value& index) {
     case Value::Type::kRange:
       if (!index.IsIntLike()) throw EvalError("range indices must be integers or slices, not " + TypeName(index));
       return RangeItem(v, AsInt(index));
-    case Value::Type::kDict:
-      Hash(index);  // a dict lookup wants a hashable key
-      for (const auto& kv : v.dict->items) {
-        if (Equal(kv.first, index)) return Wrapped(kv.second, v.wrapped);
-      }
+    case Value::Type::kDict: {
+      const size_t k = v.dict->Find(index);
+      if (k != DictItems::kNone) return Wrapped(v.dict->items[k].second, v.wrapped);
       if (v.wrapped) throw EvalError("The yaml dictionary has no key '" + ToStr(index) + "'");
       throw EvalError(Repr(index));
+    }
     default: throw EvalError("'" + TypeName(v) + "' object is not subscriptable");
   }
 }

@@ -299,17 +299,8 @@ Value SetDifference(const Value& s, const Value& other) {
   Value r = NewLike(s);
   SetTable& result = SetOf(r);
   SetOf(s).ForEachEntry([&](const Value& key, int64_t hash) {
-    bool found = false;
-    if (other.IsAnySet()) {
-      found = SetOf(other).ContainsEntry(key, hash);
-    } else {
-      for (const auto& item : other.dict->items) {
-        if (Equal(item.first, key)) {
-          found = true;
-          break;
-        }
-      }
-    }
+    const bool found = other.IsAnySet() ? SetOf(other).ContainsEntry(key, hash)
+                                        : other.dict->Find(key) != DictItems::kNone;
     if (!found) result.AddEntry(key, hash);
   });
   return r;

@@ -8,6 +8,7 @@
 #include "xacro/evaluation_budget.h"
 #include "xacro/number_format.h"
 #include "xacro/python_complex.h"
+#include "xacro/python_hash.h"
 #include "xacro/python_iterators.h"
 #include "xacro/python_set.h"
 #include "xacro/python_types.h"
@@ -277,14 +278,8 @@ bool Equal(const Value& a, const Value& b) {
     case Value::Type::kDict: {
       if (a.dict->items.size() != b.dict->items.size()) return false;
       for (const auto& [key, value] : a.dict->items) {
-        bool found = false;
-        for (const auto& [k2, v2] : b.dict->items) {
-          if (Equal(key, k2)) {
-            found = Equal(value, v2);
-            break;
-          }
-        }
-        if (!found) return false;
+        const size_t k = b.dict->Find(key);
+        if (k == DictItems::kNone || !Equal(value, b.dict->items[k].second)) return false;
       }
       return true;
     }
@@ -352,14 +347,39 @@ Value CallValue(const Value& f, ValueList args, Kwargs kwargs) {
   return f.fn->call(args, kwargs);
 }
 
-void DictPut(std::vector<std::pair<Value, Value>>& items, Value key, Value value) {
-  for (auto& kv : items) {
-    if (Equal(kv.first, key)) {
-      kv.second = std::move(value);
+size_t DictItems::Find(const Value& key) const {
+  constexpr size_t kLinear = 8;  // small dicts are searched, large ones indexed
+  if (items.size() <= kLinear) {
+    Hash(key);  // Python hashes the key first: unhashable keys are errors
+    for (size_t k = 0; k < items.size(); ++k) {
+      if (Equal(items[k].first, key)) return k;
+    }
+    return kNone;
+  }
+  if (!indexed_) {
+    for (size_t k = 0; k < items.size(); ++k) index_.emplace(Hash(items[k].first), k);
+    indexed_ = true;
+  }
+  const auto [begin, end] = index_.equal_range(Hash(key));
+  for (auto it = begin; it != end; ++it) {
+    if (Equal(items[it->second].first, key)) return it->second;
+  }
+  return kNone;
+}
+
+std::vector<std::pair<Value, Value>> DictBuilder::Take() { return std::move(items_); }
+
+void DictBuilder::Put(Value key, Value value) {
+  const int64_t hash = Hash(key);
+  const auto [begin, end] = index_.equal_range(hash);
+  for (auto it = begin; it != end; ++it) {
+    if (Equal(items_[it->second].first, key)) {
+      items_[it->second].second = std::move(value);
       return;
     }
   }
-  items.emplace_back(std::move(key), std::move(value));
+  index_.emplace(hash, items_.size());
+  items_.emplace_back(std::move(key), std::move(value));
 }
 
 Value Wrapped(Value v, bool wrap) {
@@ -416,6 +436,20 @@ NextFunction IterateLazily(const Value& v) {
     case Value::Type::kIterator:
       return [it = v.object]() { return static_cast<Iterator&>(*it).Next(); };
     default: throw EvalError("'" + TypeName(v) + "' object is not iterable");
+  }
+}
+
+bool IsIterable(const Value& v) {
+  switch (v.type) {
+    case Value::Type::kList:
+    case Value::Type::kTuple:
+    case Value::Type::kStr:
+    case Value::Type::kDict:
+    case Value::Type::kSet:
+    case Value::Type::kFrozenSet:
+    case Value::Type::kRange:
+    case Value::Type::kIterator: return true;
+    default: return false;
   }
 }
 

@@ -4,12 +4,14 @@
 // iteration.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -32,9 +34,31 @@ struct Value;
 using ValueList = std::vector<Value>;
 using Kwargs = std::vector<std::pair<std::string, Value>>;
 
-// An ordered dict (insertion order, as Python 3.7+).
+// An ordered dict (insertion order, as Python 3.7+). Dicts do not change once made.
 struct DictItems {
   std::vector<std::pair<Value, Value>> items;
+
+  // The position of the item whose key equals `key` (Python's lookup: hash, then ==), or kNone;
+  // EvalError "unhashable type: 'list'" for an unhashable key. A large dict is indexed by hash on
+  // its first lookup, so that looking up every key stays linear.
+  size_t Find(const Value& key) const;
+  static constexpr size_t kNone = SIZE_MAX;
+
+ private:
+  mutable std::unordered_multimap<int64_t, size_t> index_;
+  mutable bool indexed_ = false;
+};
+
+// Builds a dict's items as Python fills a dict: a key equal to an earlier one replaces that
+// item's value in its place (keys must be hashable: EvalError otherwise).
+class DictBuilder {
+ public:
+  void Put(Value key, Value value);
+  std::vector<std::pair<Value, Value>> Take();
+
+ private:
+  std::vector<std::pair<Value, Value>> items_;
+  std::unordered_multimap<int64_t, size_t> index_;
 };
 
 // A callable: a builtin function, a method bound to its receiver, or a type's constructor.
@@ -172,11 +196,11 @@ Value CallValue(const Value& f, ValueList args, Kwargs kwargs = {});
 using NextFunction = std::function<std::optional<Value>()>;
 NextFunction IterateLazily(const Value& v);
 
+// Whether IterateLazily takes v.
+bool IsIterable(const Value& v);
+
 // All the items of an iterable value (an iterator is used up), at most kMaxListItems.
 ValueList Iterate(const Value& v);
-
-// Sets `key` in ordered dict items: replaces the value of an equal key, else appends.
-void DictPut(std::vector<std::pair<Value, Value>>& items, Value key, Value value);
 
 // A value read from a wrapped (yaml) container is wrapped in turn.
 Value Wrapped(Value v, bool wrap);

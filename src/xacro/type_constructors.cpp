@@ -125,23 +125,19 @@ Value ToTuple(ValueList& a, Kwargs& kw) {
 
 Value ToDict(ValueList& a, Kwargs& kw) {
   Expected("dict", a, 0, 1);
-  std::vector<std::pair<Value, Value>> items;
-  auto put = [&items](const Value& key, const Value& value) {
-    Hash(key);  // keys must be hashable
-    DictPut(items, key, value);
-  };
+  DictBuilder items;
+  auto put = [&items](const Value& key, const Value& value) { items.Put(key, value); };
   if (!a.empty()) {
     if (a[0].type == Value::Type::kDict) {
       for (const auto& kv : a[0].dict->items) put(kv.first, kv.second);
     } else {
       const NextFunction next = IterateLazily(a[0]);
       for (size_t k = 0; std::optional<Value> pair = next(); ++k) {
-        ValueList kv;
-        try {
-          kv = Iterate(*pair);
-        } catch (const EvalError&) {
+        // a pair is usually a tuple or list: read it in place
+        if (!pair->IsSequence() && !IsIterable(*pair)) {
           throw EvalError("cannot convert dictionary update sequence element #" + std::to_string(k) + " to a sequence");
         }
+        const ValueList kv = pair->IsSequence() ? *pair->list : Iterate(*pair);
         if (kv.size() != 2) {
           throw EvalError("dictionary update sequence element #" + std::to_string(k) + " has length " +
                           std::to_string(kv.size()) + "; 2 is required");
@@ -151,7 +147,7 @@ Value ToDict(ValueList& a, Kwargs& kw) {
     }
   }
   for (auto& [k, v] : kw) put(Value::Str(k), v);
-  return Value::Dict(std::move(items));
+  return Value::Dict(items.Take());
 }
 
 Value ToYamlDict(ValueList& a, Kwargs& kw) { return Wrapped(ToDict(a, kw), true); }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <regex>
+#include <unordered_map>
 
 #include "common/file_reading.h"
 #include "xacro/evaluation_budget.h"
@@ -79,40 +80,60 @@ Value ResolveYamlScalar(const std::string& text) {
 
 namespace {
 
-Value Convert(const YAML::Node& node, const std::function<Value(const std::string&)>& evaluate) {
-  switch (node.Type()) {
-    case YAML::NodeType::Null:
-    case YAML::NodeType::Undefined: return Value::None();
-    case YAML::NodeType::Sequence: {
+// yaml-cpp's nodes to Values. An alias is the node its anchor names, converted once and shared,
+// as PyYAML shares the object (ten anchors each aliasing the previous one ten times are ten
+// small lists, not ten billion items); every node converted counts against the evaluation
+// budget, so no file makes more values than a document may.
+class Converter {
+ public:
+  explicit Converter(const std::function<Value(const std::string&)>& evaluate) : evaluate_(evaluate) {}
+
+  Value Convert(const YAML::Node& node) {
+    if (node.Type() != YAML::NodeType::Sequence && node.Type() != YAML::NodeType::Map) return Scalar(node);
+    // a node's position in the file is its identity: aliases give the anchored node's
+    const auto cached = containers_.find(node.Mark().pos);
+    if (cached != containers_.end()) return cached->second;
+    EvaluationBudget::Charge(1);
+    Value v;
+    if (node.Type() == YAML::NodeType::Sequence) {
       ValueList items;
-      for (const auto& item : node) items.push_back(Convert(item, evaluate));
-      return Wrapped(Value::List(std::move(items)), true);
-    }
-    case YAML::NodeType::Map: {
-      std::vector<std::pair<Value, Value>> items;
+      for (const auto& item : node) items.push_back(Convert(item));
+      v = Wrapped(Value::List(std::move(items)), true);
+    } else {
+      DictBuilder items;
       for (const auto& kv : node) {
-        Value key = Convert(kv.first, evaluate);
-        DictPut(items, std::move(key), Convert(kv.second, evaluate));
+        Value key = Convert(kv.first);
+        items.Put(std::move(key), Convert(kv.second));
       }
-      return Wrapped(Value::Dict(std::move(items)), true);
+      v = Wrapped(Value::Dict(items.Take()), true);
     }
-    case YAML::NodeType::Scalar: break;
+    containers_.emplace(node.Mark().pos, v);
+    return v;
   }
-  const std::string& tag = node.Tag();
-  const std::string& text = node.Scalar();
-  if (tag == "!radians" || tag == "!degrees") {
-    const Value v = evaluate(text);
-    if (!v.IsNumber()) throw EvalError("invalid expression: " + text);
-    const double radians = tag == "!degrees" ? AsDouble(v) * (M_PI / 180.0) : AsDouble(v);
-    return Value::Float(radians);
+
+ private:
+  Value Scalar(const YAML::Node& node) {
+    EvaluationBudget::Charge(1);
+    if (node.Type() != YAML::NodeType::Scalar) return Value::None();
+    const std::string& tag = node.Tag();
+    const std::string& text = node.Scalar();
+    if (tag == "!radians" || tag == "!degrees") {
+      const Value v = evaluate_(text);
+      if (!v.IsNumber()) throw EvalError("invalid expression: " + text);
+      const double radians = tag == "!degrees" ? AsDouble(v) * (M_PI / 180.0) : AsDouble(v);
+      return Value::Float(radians);
+    }
+    if (tag == "?") return ResolveYamlScalar(text);  // plain scalar: implicit typing
+    if (tag == "tag:yaml.org,2002:int" || tag == "!!int") return ResolveYamlScalar(text);
+    if (tag == "tag:yaml.org,2002:float" || tag == "!!float") {
+      if (auto f = ParseFloatText(text)) return Value::Float(*f);
+    }
+    return Value::Str(text);  // quoted or explicitly str-tagged
   }
-  if (tag == "?") return ResolveYamlScalar(text);  // plain scalar: implicit typing
-  if (tag == "tag:yaml.org,2002:int" || tag == "!!int") return ResolveYamlScalar(text);
-  if (tag == "tag:yaml.org,2002:float" || tag == "!!float") {
-    if (auto f = ParseFloatText(text)) return Value::Float(*f);
-  }
-  return Value::Str(text);  // quoted or explicitly str-tagged
-}
+
+  const std::function<Value(const std::string&)>& evaluate_;
+  std::unordered_map<int, Value> containers_;  // by position in the file
+};
 
 }  // namespace
 
@@ -132,7 +153,7 @@ Value LoadYaml(const std::string& path, const std::function<Value(const std::str
   } catch (const YAML::Exception& e) {
     throw EvalError(path + ": invalid YAML: " + e.what());
   }
-  return Convert(root, evaluate);
+  return Converter(evaluate).Convert(root);
 }
 
 }  // namespace urdfsnap::xacro

@@ -81,6 +81,25 @@ std::string DoublingXacro(const std::string& twice) {
   return Xacro(body + "<link name=\"${p30}\"/>");
 }
 
+// YAML anchors ten deep, each aliasing the previous one ten times: 10^10 items unless aliases are
+// shared, as PyYAML shares them.
+std::string AliasBombYaml() {
+  std::string yaml = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int level = 1; level < 10; ++level) {
+    yaml += "a";
+    yaml += std::to_string(level);
+    yaml += ": &a";
+    yaml += std::to_string(level);
+    yaml += " [";
+    for (int k = 0; k < 10; ++k) {
+      yaml += k ? ", *a" : "*a";
+      yaml += std::to_string(level - 1);
+    }
+    yaml += "]\n";
+  }
+  return yaml;
+}
+
 // XML entities nested ten deep, each ten times the one before ("billion laughs").
 std::string EntityBomb(bool xacro_namespace) {
   std::string doc = "<?xml version=\"1.0\"?>\n<!DOCTYPE robot [\n<!ENTITY e0 \"lol\">\n";
@@ -238,6 +257,12 @@ std::vector<HostileCase> Cases() {
        "robot.xacro:34: formatted string too large"},
       {"string_doubling_join", xacro(DoublingXacro("${''.join([{p}, {p}])}")), render_xacro,
        "robot.xacro:34: joined string too large"},
+      {"yaml_alias_bomb",
+       {{"robot.xacro", Xacro("<xacro:property name=\"d\" value=\"${xacro.load_yaml('bomb.yaml')}\"/>\n"
+                              "<link name=\"${len([x for b in d.a9 for c in b for e in c for f in e for g in f "
+                              "for h in g for i in h for x in i])}\"/>")},
+        {"bomb.yaml", AliasBombYaml()}},
+       render_xacro, "robot.xacro:4: comprehension result too large"},
       {"string_copies_in_a_loop",
        xacro(Xacro("<xacro:property name=\"p\" value=\"${'a' * 16000000}\"/>\n"
                    "<link name=\"${len([p.upper() for i in python.range(1000)])}\"/>")),
