@@ -232,23 +232,21 @@ Value MakeClass(const Value& name, const Value& bases, const Value& dict) {
   for (const auto& [key, value] : dict.dict->items) {
     if (key.type == Value::Type::kStr) type->attributes.emplace_back(key.s, value);
   }
-  // the class value is made first, so that its constructor can hand instances their class
-  auto cls = std::make_shared<Value>();
-  const std::string class_name = name.s;
-  *cls = MakeTypeValue(type, nullptr);
-  std::weak_ptr<Object> weak_type = cls->object;
-  cls->fn->call = [class_name, weak_type, fn = std::weak_ptr<Function>(cls->fn)](ValueList& args, Kwargs& kwargs) {
+  // the constructor hands each instance its class; it holds the class weakly (the class holds it)
+  Value cls = MakeTypeValue(type, nullptr);
+  cls.fn->call = [class_name = name.s.str(), weak_type = std::weak_ptr<Object>(cls.object),
+                  weak_fn = std::weak_ptr<Function>(cls.fn)](ValueList& args, Kwargs& kwargs) {
     if (!args.empty() || !kwargs.empty()) throw EvalError(class_name + "() takes no arguments");
     auto instance = std::make_shared<Instance>();
     instance->cls.type = Value::Type::kType;
     instance->cls.object = weak_type.lock();
-    instance->cls.fn = fn.lock();
+    instance->cls.fn = weak_fn.lock();
     Value v;
     v.type = Value::Type::kInstance;
     v.object = std::move(instance);
     return v;
   };
-  return *cls;
+  return cls;
 }
 
 Value TypeAttribute(const Value& type, const std::string& name) {

@@ -191,8 +191,8 @@ Value CallValue(const Value& f, ValueList args, Kwargs kwargs = {});
 // Python's iter(v) as a pull function giving the items one by one and nullopt at the end:
 // list, tuple, str (code points), dict (keys), set, range and iterator items, wrapped when the
 // container is. Containers are checked against kMaxListItems and charged to the evaluation
-// budget up front, iterators per item (see evaluation_budget.h). Throws "'int' object is not
-// iterable".
+// budget up front (an iterator's items come from such a container; see evaluation_budget.h).
+// Throws "'int' object is not iterable".
 using NextFunction = std::function<std::optional<Value>()>;
 NextFunction IterateLazily(const Value& v);
 

@@ -14,6 +14,25 @@
 
 namespace urdfsnap::xacro {
 
+namespace {
+
+// `start` * `scale` + the value of `digits` in `base` (no sign, no underscores); EvalError when it
+// needs more than 127 bits (Python's ints have no bound)
+Int YamlDigits(std::string_view digits, int base, const std::string& text, Int start = 0, int scale = 1) {
+  Int v = 0;
+  const bool overflow_start = __builtin_mul_overflow(start, Int(scale), &start);
+  bool overflow = overflow_start;
+  for (char c : digits) {
+    const int d = std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : std::tolower(c) - 'a' + 10;
+    overflow = overflow || __builtin_mul_overflow(v, Int(base), &v) || __builtin_add_overflow(v, Int(d), &v);
+  }
+  overflow = overflow || __builtin_add_overflow(start, v, &v);
+  if (overflow) throw EvalError("integer too large for urdfsnap (more than 127 bits): " + text);
+  return v;
+}
+
+}  // namespace
+
 Value ResolveYamlScalar(const std::string& text) {
   // PyYAML's resolver patterns (yaml/resolver.py)
   static const std::regex kBool("yes|Yes|YES|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF");
@@ -31,30 +50,28 @@ Value ResolveYamlScalar(const std::string& text) {
   std::string clean = text;
   clean.erase(std::remove(clean.begin(), clean.end(), '_'), clean.end());
   if (std::regex_match(text, kInt)) {
-    int sign = 1;
     std::string t = clean;
-    if (t[0] == '-' || t[0] == '+') {
-      sign = t[0] == '-' ? -1 : 1;
-      t = t.substr(1);
-    }
+    const bool negative = t[0] == '-';
+    if (t[0] == '-' || t[0] == '+') t = t.substr(1);
     Int v = 0;
     if (t.find(':') != std::string::npos) {
+      // sexagesimal, YAML 1.1's 1:30 (90)
       size_t k = 0;
       while (k <= t.size()) {
         const size_t e = std::min(t.find(':', k), t.size());
-        v = v * 60 + static_cast<Int>(std::stoll(t.substr(k, e - k)));
+        v = YamlDigits(t.substr(k, e - k), 10, text, v, 60);
         k = e + 1;
       }
     } else if (t.rfind("0b", 0) == 0) {
-      v = std::stoll(t.substr(2), nullptr, 2);
+      v = YamlDigits(t.substr(2), 2, text);
     } else if (t.rfind("0x", 0) == 0) {
-      v = std::stoll(t.substr(2), nullptr, 16);
+      v = YamlDigits(t.substr(2), 16, text);
     } else if (t.size() > 1 && t[0] == '0') {
-      v = std::stoll(t, nullptr, 8);
-    } else if (auto parsed = ParseIntText(t)) {
-      v = *parsed;
+      v = YamlDigits(t.substr(1), 8, text);
+    } else {
+      v = YamlDigits(t, 10, text);
     }
-    return Value::Integer(sign * v);
+    return Value::Integer(negative ? -v : v);
   }
   if (std::regex_match(text, kFloat)) {
     std::string lower = clean;

@@ -184,6 +184,28 @@ TEST(Processor, YamlWithAngleTags) {
                              "u=\"1000.0\" y=\"1.5707963267948966\"/>"));
 }
 
+// YAML 1.1's integers as PyYAML reads them (bases, underscores, sexagesimal); one beyond 127 bits
+// is an error at its file (it escaped as std::out_of_range, "urdfsnap: error: stoll").
+TEST(Processor, YamlIntegersAsPyYamlReadsThem) {
+  TestFiles files;
+  files.Write("ok.yaml", "v: 0x1ff_ff\nw: -0b1011\nx: 0755\ny: -12_345\nz: 1:30:15\nq: +0\nr: 017\nbig: 0x1ffffffffffffffffffffffff\n");
+  files.Write("huge.yaml", "y: 99999999999999999999999999999999999999999999\n");
+  const std::string ok = files.Write("ok.xacro", Robot(R"(<a d="${xacro.load_yaml('ok.yaml')}"/>)"));
+  Warnings warnings;
+  // the expected text is PyYAML's (yaml.safe_load, then str())
+  EXPECT_THAT(ExpandFile(ok, {}, warnings).xml,
+              HasSubstr("<a d=\"{'v': 131071, 'w': -11, 'x': 493, 'y': -12345, 'z': 5415, 'q': 0, 'r': 15, "
+                        "'big': 158456325028528675187087900671}\"/>"));
+  const std::string huge = files.Write("huge.xacro", Robot(R"(<a d="${xacro.load_yaml('huge.yaml')}"/>)"));
+  try {
+    ExpandFile(huge, {}, warnings);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("integer too large for urdfsnap (more than 127 bits): 9999999999"));
+    EXPECT_THAT(e.what(), HasSubstr("huge.yaml included from"));
+  }
+}
+
 // An alias is its anchor's object, as in PyYAML: ten anchors each aliasing the previous one ten
 // times load as ten small lists (10^10 items once took 4 GB and a minute before stopping), and
 // what a document does with them stays within the evaluation budget.
