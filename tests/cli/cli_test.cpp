@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -111,16 +112,24 @@ TEST_F(CliTest, BadOptionValuesAreUsageErrors) {
 
 // CLI11 alone says "A subcommand is required" for all of these.
 TEST_F(CliTest, UnknownOrMissingCommandsAreNamed) {
-  const std::string commands = "(commands: render, info, xacro, diff, snapshot)";
+  // the commands as --help lists them, in its order
+  std::string list;
+  std::istringstream help(RunUrdfsnap("--help").output);
+  bool listing = false;
+  for (std::string line; std::getline(help, line);) {
+    if (line.rfind("Subcommands:", 0) == 0) listing = true;
+    else if (listing && line.rfind("  ", 0) == 0) list += (list.empty() ? "" : ", ") + line.substr(2, line.find(' ', 2) - 2);
+  }
+  ASSERT_EQ(list.rfind("render, info, xacro, diff, snapshot", 0), 0u) << list;
+  const std::string commands = "(commands: " + list + ")";
   const std::pair<std::string, std::string> cases[] = {
       {"frobnicate", "urdfsnap: error: unknown command 'frobnicate' " + commands},
       {"--strict frobnicate x.urdf", "urdfsnap: error: unknown command 'frobnicate' " + commands},
-      {"rendr x.urdf",
-       "urdfsnap: error: unknown command 'rendr' (did you mean 'render'? commands: render, info, xacro, diff, snapshot)"},
+      {"rendr x.urdf", "urdfsnap: error: unknown command 'rendr' (did you mean 'render'? commands: " + list + ")"},
       {"snapshot frob", "urdfsnap: error: unknown snapshot command 'frob' (commands: check, update)"},
       {"snapshot chek suite.yaml",
        "urdfsnap: error: unknown snapshot command 'chek' (did you mean 'check'? commands: check, update)"},
-      {"", "urdfsnap: error: no command given (commands: render, info, xacro, diff, snapshot; see 'urdfsnap --help')"},
+      {"", "urdfsnap: error: no command given (commands: " + list + "; see 'urdfsnap --help')"},
       {"snapshot", "urdfsnap: error: no snapshot command given (commands: check, update; see 'urdfsnap --help')"},
       {"-x", "urdfsnap: error: unknown option '-x' and no command " + commands},
   };

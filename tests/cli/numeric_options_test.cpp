@@ -32,65 +32,79 @@ struct CommandOption {
   const char* option;   // the long name, or the short one when there is no long one
   Kind kind;
   // numbers: the arguments after the command that use the option, {v} standing for the value
-  const char* usage = "";
+  std::string usage = "";
 };
+
+// render's view, display and pose options, which serve and docs have too (docs without -j);
+// `before` is what comes before the option on the command line
+void AddViewOptions(std::vector<CommandOption>& options, const char* command, const std::string& before,
+                    bool joint_values = true) {
+  const auto number = [&](const char* option, const std::string& use) {
+    options.push_back({command, option, Kind::kNumber, before + " " + use});
+  };
+  if (joint_values) number("--joint", "-j base_link__link_01={v}");
+  number("--size", "--size {v}x480");
+  number("--yaw", "--yaw {v}");
+  number("--pitch", "--pitch {v}");
+  number("--distance", "--distance {v}");
+  number("--focal", "--focal 0,{v},0");
+  number("--fov", "--fov {v}");
+  number("--background", "--background {v},0,0");
+  number("--alpha", "--alpha {v}");
+  number("--tf-scale", "--tf-scale {v}");
+  for (const char* text : {"--help", "--package", "--joints", "--rviz", "--fixed-frame"}) {
+    options.push_back({command, text, std::string(text) == "--help" ? Kind::kFlag : Kind::kText});
+  }
+  for (const char* flag : {"--xacro-ns", "--no-clamp", "--fit", "--collision", "--no-visual", "--no-grid", "--tf",
+                           "--no-tf-names", "--no-tf-axes", "--no-tf-arrows", "--no-aa", "--allow-missing-meshes"}) {
+    options.push_back({command, flag, Kind::kFlag});
+  }
+}
 
 // every option --help lists, per command
 const std::vector<CommandOption>& Options() {
-  static const std::vector<CommandOption> options = {
-      {"", "--help", Kind::kFlag},
-      {"", "--version", Kind::kFlag},
-      {"", "--strict", Kind::kFlag},
-      {"render", "--help", Kind::kFlag},
-      {"render", "--package", Kind::kText},
-      {"render", "--xacro-ns", Kind::kFlag},
-      {"render", "--output", Kind::kText},
-      {"render", "--joint", Kind::kNumber, "MRM -o OUT -j base_link__link_01={v}"},
-      {"render", "--joints", Kind::kText},
-      {"render", "--size", Kind::kNumber, "MRM -o OUT --size {v}x480"},
-      {"render", "--rviz", Kind::kText},
-      {"render", "--yaw", Kind::kNumber, "MRM -o OUT --yaw {v}"},
-      {"render", "--pitch", Kind::kNumber, "MRM -o OUT --pitch {v}"},
-      {"render", "--distance", Kind::kNumber, "MRM -o OUT --distance {v}"},
-      {"render", "--focal", Kind::kNumber, "MRM -o OUT --focal 0,{v},0"},
-      {"render", "--fov", Kind::kNumber, "MRM -o OUT --fov {v}"},
-      {"render", "--fixed-frame", Kind::kText},
-      {"render", "--background", Kind::kNumber, "MRM -o OUT --background {v},0,0"},
-      {"render", "--alpha", Kind::kNumber, "MRM -o OUT --alpha {v}"},
-      {"render", "--tf-scale", Kind::kNumber, "MRM -o OUT --tf-scale {v}"},
-      {"render", "--no-clamp", Kind::kFlag},
-      {"render", "--fit", Kind::kFlag},
-      {"render", "--collision", Kind::kFlag},
-      {"render", "--no-visual", Kind::kFlag},
-      {"render", "--no-grid", Kind::kFlag},
-      {"render", "--tf", Kind::kFlag},
-      {"render", "--no-tf-names", Kind::kFlag},
-      {"render", "--no-tf-axes", Kind::kFlag},
-      {"render", "--no-tf-arrows", Kind::kFlag},
-      {"render", "--no-aa", Kind::kFlag},
-      {"render", "--allow-missing-meshes", Kind::kFlag},
-      {"info", "--help", Kind::kFlag},
-      {"info", "--package", Kind::kText},
-      {"info", "--xacro-ns", Kind::kFlag},
-      {"xacro", "--help", Kind::kFlag},
-      {"xacro", "--output", Kind::kText},
-      {"xacro", "--inorder", Kind::kFlag},
-      {"xacro", "--xacro-ns", Kind::kFlag},
-      {"xacro", "--deps", Kind::kFlag},
-      {"xacro", "-q", Kind::kFlag},
-      {"xacro", "--package", Kind::kText},
-      {"diff", "--help", Kind::kFlag},
-      {"diff", "--diff", Kind::kText},
-      {"diff", "--max-delta", Kind::kNumber, "PNG PNG --max-delta {v}"},
-      {"diff", "--max-fraction", Kind::kNumber, "PNG PNG --max-fraction {v}"},
-      {"diff", "--max-mean", Kind::kNumber, "PNG PNG --max-mean {v}"},
-      {"snapshot", "--help", Kind::kFlag},
-      {"snapshot check", "--help", Kind::kFlag},
-      {"snapshot check", "--report", Kind::kText},
-      {"snapshot check", "--junit", Kind::kText},
-      {"snapshot update", "--help", Kind::kFlag},
-      {"snapshot update", "--force", Kind::kFlag},
-  };
+  static const std::vector<CommandOption> options = [] {
+    std::vector<CommandOption> o = {
+        {"", "--help", Kind::kFlag},
+        {"", "--version", Kind::kFlag},
+        {"", "--strict", Kind::kFlag},
+        {"render", "--output", Kind::kText},
+        {"render", "--depth", Kind::kText},
+        {"render", "--labels", Kind::kText},
+        {"info", "--help", Kind::kFlag},
+        {"info", "--package", Kind::kText},
+        {"info", "--xacro-ns", Kind::kFlag},
+        {"xacro", "--help", Kind::kFlag},
+        {"xacro", "--output", Kind::kText},
+        {"xacro", "--inorder", Kind::kFlag},
+        {"xacro", "--xacro-ns", Kind::kFlag},
+        {"xacro", "--deps", Kind::kFlag},
+        {"xacro", "-q", Kind::kFlag},
+        {"xacro", "--package", Kind::kText},
+        {"diff", "--help", Kind::kFlag},
+        {"diff", "--diff", Kind::kText},
+        {"diff", "--max-delta", Kind::kNumber, "PNG PNG --max-delta {v}"},
+        {"diff", "--max-fraction", Kind::kNumber, "PNG PNG --max-fraction {v}"},
+        {"diff", "--max-mean", Kind::kNumber, "PNG PNG --max-mean {v}"},
+        {"snapshot", "--help", Kind::kFlag},
+        {"snapshot check", "--help", Kind::kFlag},
+        {"snapshot check", "--report", Kind::kText},
+        {"snapshot check", "--junit", Kind::kText},
+        {"snapshot update", "--help", Kind::kFlag},
+        {"snapshot update", "--force", Kind::kFlag},
+        // serve refuses its bad options before it listens (a port of 0 in case it did not)
+        {"serve", "--port", Kind::kNumber, "MRM --port {v}"},
+        {"serve", "--bind", Kind::kText},
+        {"serve", "--max-size", Kind::kNumber, "MRM --port 0 --max-size {v}x480"},
+        {"docs", "--output", Kind::kText},
+        {"docs", "--check", Kind::kText},
+        {"docs", "--animations", Kind::kText},
+    };
+    AddViewOptions(o, "render", "MRM -o OUT");
+    AddViewOptions(o, "serve", "MRM --port 0");
+    AddViewOptions(o, "docs", "MRM -o OUT", false);  // its --joints are globs, text
+    return o;
+  }();
   return options;
 }
 
@@ -166,10 +180,35 @@ std::set<std::string> HelpOptions(const std::string& command) {
   return names;
 }
 
+// the commands --help lists under "Subcommands:", with their own, as "snapshot check"
+std::set<std::string> HelpCommands(const std::string& command = "") {
+  const auto run = urdfsnap::test::RunUrdfsnap(command + " --help");
+  std::set<std::string> commands;
+  std::istringstream lines(run.out);
+  bool listing = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("Subcommands:", 0) == 0) {
+      listing = true;
+    } else if (listing && line.rfind("  ", 0) == 0 && line.size() > 2 && line[2] != ' ') {
+      const std::string name = (command.empty() ? "" : command + " ") + line.substr(2, line.find(' ', 2) - 2);
+      commands.insert(name);
+      for (const std::string& sub : HelpCommands(name)) commands.insert(sub);
+    } else if (listing && !line.empty() && line[0] != ' ') {
+      listing = false;
+    }
+  }
+  return commands;
+}
+
 TEST(NumericOptions, EveryOptionOfEveryCommandIsClassified) {
   std::map<std::string, std::set<std::string>> table;
   for (const CommandOption& o : Options()) table[o.command].insert(o.option);
-  for (const std::string command : {"", "render", "info", "xacro", "diff", "snapshot", "snapshot check", "snapshot update"}) {
+  std::set<std::string> commands = {""};
+  for (const std::string& command : HelpCommands()) commands.insert(command);
+  std::set<std::string> tabled;
+  for (const auto& [command, options] : table) tabled.insert(command);
+  EXPECT_EQ(commands, tabled) << "urdfsnap has other commands than this test's table: add the new ones";
+  for (const std::string& command : commands) {
     EXPECT_EQ(HelpOptions(command), table[command])
         << "'urdfsnap " << command << " --help' lists other options than this test's table: classify the new "
         << "ones (a number must refuse NaN and infinities)";
@@ -199,7 +238,7 @@ TEST(NumericOptions, RefuseNanAndInfinitiesNamingTheOption) {
     for (const std::string& value : kNotFinite) {
       std::string arguments = Replace(Replace(Replace(o.usage, "{v}", value), "MRM", kMrm), "OUT", out);
       arguments = std::string(o.command) + " " + Replace(arguments, "PNG", kPng);
-      const auto run = urdfsnap::test::RunUrdfsnap(arguments);
+      const auto run = urdfsnap::test::RunUrdfsnap(arguments, 30);  // a server that started ends there
       EXPECT_EQ(run.status, 2) << "urdfsnap " << arguments << "\n" << run.out << run.err;
       EXPECT_EQ(run.err.rfind("urdfsnap: error: ", 0), 0u) << arguments << "\n" << run.err;
       EXPECT_NE(run.err.find(o.option), std::string::npos) << "the error does not name " << o.option << ":\n" << run.err;

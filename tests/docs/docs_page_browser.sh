@@ -2,13 +2,17 @@
 # Pages of `urdfsnap docs` in headless Chromium (tests/node/docs_page_browser.mjs) for the project's
 # robots, the synthetic 42-joint bigbot and, when ../shared is beside the project, published robots
 # the pages were not written for: images load, no console errors, a section per movable joint, the
-# README's links resolve to images that decode. Skips (exit 77) without chromium.
+# README's links resolve to images that decode. Without chromium: skips (exit 77), or fails when CI=true.
 # usage: tests/docs/docs_page_browser.sh URDFSNAP_BINARY [SCREENSHOT_DIR]
 set -euo pipefail
 urdfsnap=$1
 shots=${2:-}
 root=$(cd "$(dirname "$0")/../.." && pwd)
-if [ ! -x /usr/bin/chromium ]; then echo "no /usr/bin/chromium (scripts/deps.sh installs it)"; exit 77; fi
+if [ ! -x /usr/bin/chromium ]; then
+  echo "no /usr/bin/chromium (scripts/deps.sh installs it)"
+  [ "${CI:-}" = true ] && exit 1
+  exit 77
+fi
 "$root/scripts/node-deps.sh"
 work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_docs_browser.XXXXXX")
 trap 'rm -rf "$work"' EXIT

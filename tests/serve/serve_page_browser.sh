@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # The live view's page in headless Chromium (tests/node/serve_page_browser.mjs), then what the page copied
 # checked with urdfsnap itself: the suite case passes `snapshot check` against the frame the page
-# showed, and the pose file renders. Skips (exit 77) without chromium.
+# showed, and the pose file renders. Without chromium: skips (exit 77), or fails when CI=true.
 # usage: tests/serve/serve_page_browser.sh URDFSNAP_BINARY [SCREENSHOT.png]
 set -euo pipefail
 urdfsnap=$1
 screenshot=${2:-}
 root=$(cd "$(dirname "$0")/../.." && pwd)
-if [ ! -x /usr/bin/chromium ]; then echo "no /usr/bin/chromium (scripts/deps.sh installs it)"; exit 77; fi
+if [ ! -x /usr/bin/chromium ]; then
+  echo "no /usr/bin/chromium (scripts/deps.sh installs it)"
+  [ "${CI:-}" = true ] && exit 1
+  exit 77
+fi
 "$root/scripts/node-deps.sh"
 work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_serve_page.XXXXXX")
 server=
