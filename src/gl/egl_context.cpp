@@ -113,6 +113,11 @@ EglLibrary OpenEgl() {
   egl.get_current_context = library.Get<decltype(egl.get_current_context)>("eglGetCurrentContext");
   // client extensions, of libEGL itself rather than of a display (EGL_EXT_client_extensions)
   const char* client = egl.query_string(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (!client || !*client) {
+    // libglvnd's libEGL without a vendor library (its client extensions are the vendors')
+    throw Error(std::string(URDFSNAP_EGL_LIBRARY) +
+                " finds no EGL driver; install Debian's libegl-mesa0 and libgl1-mesa-dri");
+  }
   if (!HasWord(client, "EGL_EXT_platform_base")) {
     throw Error(std::string(URDFSNAP_EGL_LIBRARY) + " lacks EGL_EXT_platform_base (client extensions: " +
                 (client ? client : "none") + ")");
@@ -322,8 +327,8 @@ class EglContext final : public GlContext {
     }
     if (UseGlFunctionsFrom(egl.get_proc_address)) {
       // the table was another backend's: an OSMesa context may have been made current behind
-      // libEGL's back, and libEGL skips making current a context it believes current already,
-      // so release this one and bind it again
+      // libEGL's back, and libglvnd's eglMakeCurrent returns at once, without asking Mesa, for
+      // the context it believes current already; so release this one and bind it again
       egl.make_current(egl_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
       egl.make_current(egl_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
     }

@@ -30,6 +30,7 @@ class ReportBrowserTest : public CliTest {
     CliTest::SetUp();
     chromium_ = FindChromium();
     if (chromium_.empty()) GTEST_SKIP() << "no chromium on PATH";
+    URDFSNAP_REQUIRE_GL();
     // the elbow golden against the arm moved by 0.1 rad: a failing case with all three images
     fs::copy_file(kSource / "tests/golden/mrm_elbow.png", Path("elbow.png"));
     Write("suite.yaml", "cases:\n  - name: elbow\n    model: " + kMrm +
