@@ -32,6 +32,7 @@ TEST_F(CliTest, RendersThePngAtTheRequestedSize) {
 }
 
 TEST_F(CliTest, DepthAndLabelsComeFromTheSameViewBesideTheColourImage) {
+  URDFSNAP_REQUIRE_GL();
   const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("c.png") + " --size 160x120 --fit --depth " +
                                Path("d.png") + " --labels " + Path("l.png"));
   ASSERT_EQ(r.status, 0) << r.output;

@@ -48,7 +48,7 @@ TEST_F(GlBackendTest, BadBackendVariableIsOneErrorLineAndWritesNothing) {
 
 TEST_F(GlBackendTest, EglDeviceSoftwareIsMesasLlvmpipe) {
   if (!EglCompiledIn()) GTEST_SKIP() << "EGL is not compiled in";
-  URDFSNAP_REQUIRE_GL();
+  URDFSNAP_REQUIRE_GL_BACKEND(gl::Backend::kEgl);
   const Result r = RunUrdfsnap("--version", "URDFSNAP_GL_BACKEND=egl URDFSNAP_EGL_DEVICE=software");
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_TRUE(Contains(r.output, ": software), llvmpipe")) << r.output;
@@ -56,6 +56,7 @@ TEST_F(GlBackendTest, EglDeviceSoftwareIsMesasLlvmpipe) {
 
 TEST_F(GlBackendTest, BadEglDeviceIsOneErrorLineNamingTheVariable) {
   if (!EglCompiledIn()) GTEST_SKIP() << "EGL is not compiled in";
+  URDFSNAP_REQUIRE_GL_BACKEND(gl::Backend::kEgl);  // libEGL's own failures come first
   const std::string render = "render " + kMrm + " -o " + Path("a.png");
   Result r = RunUrdfsnap(render, "URDFSNAP_GL_BACKEND=egl URDFSNAP_EGL_DEVICE=gpu");
   EXPECT_EQ(r.status, 2);
@@ -63,7 +64,6 @@ TEST_F(GlBackendTest, BadEglDeviceIsOneErrorLineNamingTheVariable) {
                       "URDFSNAP_EGL_DEVICE=gpu: expected auto, software, a device number or a "
                       "/dev/dri path\n");
   // a device that is not there: the message lists the ones libEGL has
-  URDFSNAP_REQUIRE_GL();
   r = RunUrdfsnap(render, "URDFSNAP_GL_BACKEND=egl URDFSNAP_EGL_DEVICE=/dev/dri/renderD199");
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(Contains(r.output, "URDFSNAP_EGL_DEVICE=/dev/dri/renderD199: no such EGL device (libEGL lists "))

@@ -5,21 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "front_view.h"
 #include "gl/renderer.h"
 #include "scene/primitive_meshes.h"
 #include "support/gl_required.h"
 
 namespace urdfsnap::gl {
 namespace {
-
-// Skips (fails under CI=true) the calling test when `backend` cannot make a context here.
-#define REQUIRE_BACKEND(backend)                                                  \
-  do {                                                                            \
-    if (const std::string no_gl = test::NoGlReason(backend); !no_gl.empty()) {    \
-      if (test::InCi()) FAIL() << no_gl << " (CI=true: no skipping)";             \
-      GTEST_SKIP() << no_gl;                                                      \
-    }                                                                             \
-  } while (false)
 
 class GlContextTest : public ::testing::TestWithParam<Backend> {};
 
@@ -31,7 +23,7 @@ void PrintTo(Backend backend, std::ostream* out) { *out << BackendName(backend);
 namespace {
 
 TEST_P(GlContextTest, MakesACoreContextThatSaysWhatItIs) {
-  REQUIRE_BACKEND(GetParam());
+  URDFSNAP_REQUIRE_GL_BACKEND(GetParam());
   const std::unique_ptr<GlContext> context = CreateGlContext(GetParam());
   EXPECT_EQ(context->backend(), GetParam());
   const std::string& description = context->description();
@@ -48,7 +40,7 @@ INSTANTIATE_TEST_SUITE_P(CompiledIn, GlContextTest, ::testing::ValuesIn(Compiled
                          [](const auto& info) { return std::string(BackendName(info.param)); });
 
 TEST(GlContextFactoryTest, AutoTakesTheFirstCompiledInBackendThatWorks) {
-  REQUIRE_BACKEND(Backend::kAuto);
+  URDFSNAP_REQUIRE_GL_BACKEND(Backend::kAuto);
   Backend expected = Backend::kAuto;
   for (Backend backend : CompiledInBackends()) {
     if (test::NoGlReason(backend).empty()) {
@@ -59,7 +51,7 @@ TEST(GlContextFactoryTest, AutoTakesTheFirstCompiledInBackendThatWorks) {
   EXPECT_EQ(CreateGlContext(Backend::kAuto)->backend(), expected);
 }
 
-// A unit box whose +X face, at x = 0, faces the camera and the head-light from 2 m: n · l = 1,
+// A unit box whose +X face, at x = 0, faces the camera (FrontView) and the head-light: n · l = 1,
 // so the centre pixel of a 64x48 image is exactly the diffuse colour `rgb`.
 scene::Scene BoxFacingTheCamera(const Eigen::Vector3f& rgb) {
   scene::Scene scene;
@@ -74,12 +66,8 @@ scene::Scene BoxFacingTheCamera(const Eigen::Vector3f& rgb) {
 
 TEST(GlContextFactoryTest, BackendsTakeTurnsInOneProcess) {
   if (CompiledInBackends().size() < 2) GTEST_SKIP() << "one backend compiled in";
-  REQUIRE_BACKEND(Backend::kOsMesa);
-  REQUIRE_BACKEND(Backend::kEgl);
-  scene::OrbitView front;
-  front.yaw = 0;
-  front.pitch = 0;
-  front.distance = 2;
+  URDFSNAP_REQUIRE_GL_BACKEND(Backend::kOsMesa);
+  URDFSNAP_REQUIRE_GL_BACKEND(Backend::kEgl);
   // each backend draws its own colour: a call that reached the other backend's context would
   // show up as the other colour (or as the background)
   Renderer osmesa(4, Backend::kOsMesa);
@@ -88,7 +76,7 @@ TEST(GlContextFactoryTest, BackendsTakeTurnsInOneProcess) {
   for (int round = 0; round < 3; ++round) {
     for (Renderer* renderer : {&osmesa, &egl, &egl, &osmesa}) {
       const bool is_egl = renderer == &egl;
-      const image::Image image = renderer->Render(is_egl ? blue : red, front, 64, 48);
+      const image::Image image = renderer->Render(is_egl ? blue : red, FrontView(), 64, 48).colour;
       const size_t centre = (24 * 64 + 32) * 3;
       const std::array<int, 3> pixel{image.rgb[centre], image.rgb[centre + 1], image.rgb[centre + 2]};
       EXPECT_EQ(pixel, (is_egl ? std::array<int, 3>{0, 0, 255} : std::array<int, 3>{255, 0, 0}))
