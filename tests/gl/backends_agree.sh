@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The OSMesa and EGL backends draw the same pictures: every view below is rendered with each
-# backend (URDFSNAP_GL_BACKEND) and the two images must match by `urdfsnap diff`'s default
-# tolerance (the one snapshot suites use). Each view also differs from the same view with the
+# backend (URDFSNAP_GL_BACKEND) and the two colour images must match by `urdfsnap diff`'s default
+# tolerance (the one snapshot suites use), and their depth and link-label images byte for byte
+# (both are exact values, drawn without multisampling by the same llvmpipe; `urdfsnap diff` reads
+# a 16-bit PNG as 8 bits, too coarse for depth). Each view also differs from the same view with the
 # robot hidden, so that two blank frames cannot pass. The views cover what could render
 # differently: 4x multisampling and its resolve, none, an odd size, transparency, TF axes, arrows
 # and names (blended text), meshes, textures and emission, collision geometry.
@@ -35,6 +37,7 @@ for view in "${views[@]}"; do
   for backend in osmesa egl; do
     # shellcheck disable=SC2086  # options are words
     if ! URDFSNAP_GL_BACKEND=$backend "$urdfsnap" render "$model" $options -o "$out/$name.$backend.png" \
+        --depth "$out/$name.$backend.depth.png" --labels "$out/$name.$backend.labels.png" \
         >"$out/$name.$backend.log" 2>&1; then
       echo "FAIL $name: $backend: $(cat "$out/$name.$backend.log")"
       ok=0
@@ -49,6 +52,12 @@ for view in "${views[@]}"; do
     status=$?
     if [ $status -ne 0 ]; then
       echo "FAIL $name: the backends differ: $figures"
+      ok=0
+    elif ! cmp -s "$out/$name.osmesa.depth.png" "$out/$name.egl.depth.png"; then
+      echo "FAIL $name: the backends' depth images differ"
+      ok=0
+    elif ! cmp -s "$out/$name.osmesa.labels.png" "$out/$name.egl.labels.png"; then
+      echo "FAIL $name: the backends' label images differ"
       ok=0
     elif "$urdfsnap" diff "$out/$name.osmesa.png" "$out/$name.empty.png" >/dev/null 2>&1; then
       echo "FAIL $name: the image matches the view without the robot: nothing was drawn"
