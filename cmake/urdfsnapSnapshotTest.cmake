@@ -1,16 +1,18 @@
-# urdfsnap_add_snapshot_test(NAME SUITE [REPORT_DIR DIR] [JUNIT FILE] [LABELS label...])
+# urdfsnap_add_snapshot_test(NAME SUITE [REPORT_DIR DIR] [JUNIT FILE] [LABELS label...]
+#                            [LAUNCHER command...])
 #
 # Adds a CTest test NAME that runs `urdfsnap snapshot check SUITE --report DIR --junit FILE`:
 # every case of the suite rendered and compared with its golden image. SUITE is relative to the
 # current source folder. On failure the HTML report (default: <binary dir>/NAME-report/index.html)
 # shows expected, actual and diff images; JUnit XML goes to FILE (default:
-# <binary dir>/NAME.junit.xml). Labels default to "snapshot".
+# <binary dir>/NAME.junit.xml). Labels default to "snapshot". LAUNCHER runs the check through a
+# command, e.g. `LAUNCHER ${CMAKE_COMMAND} -E env URDFSNAP_GL_BACKEND=egl` for a GL backend.
 # After an intended change, rewrite the goldens with `urdfsnap snapshot update SUITE`.
 #
 # Works in urdfsnap's own build and, through find_package(urdfsnap), in any project: it runs the
 # executable target urdfsnap::urdfsnap.
 function(urdfsnap_add_snapshot_test name suite)
-  cmake_parse_arguments(PARSE_ARGV 2 ARG "" "REPORT_DIR;JUNIT" "LABELS")
+  cmake_parse_arguments(PARSE_ARGV 2 ARG "" "REPORT_DIR;JUNIT" "LABELS;LAUNCHER")
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "urdfsnap_add_snapshot_test: unexpected arguments ${ARG_UNPARSED_ARGUMENTS}")
   endif()
@@ -28,6 +30,6 @@ function(urdfsnap_add_snapshot_test name suite)
     set(ARG_LABELS snapshot)
   endif()
   add_test(NAME ${name}
-    COMMAND urdfsnap::urdfsnap snapshot check "${suite}" --report "${ARG_REPORT_DIR}" --junit "${ARG_JUNIT}")
+    COMMAND ${ARG_LAUNCHER} $<TARGET_FILE:urdfsnap::urdfsnap> snapshot check "${suite}" --report "${ARG_REPORT_DIR}" --junit "${ARG_JUNIT}")
   set_tests_properties(${name} PROPERTIES LABELS "${ARG_LABELS}")
 endfunction()

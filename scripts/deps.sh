@@ -7,7 +7,9 @@
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
-  liburdfdom-dev libeigen3-dev libosmesa6-dev libstb-dev libjpeg-dev zlib1g-dev
+  liburdfdom-dev libeigen3-dev libstb-dev libjpeg-dev zlib1g-dev
+  # GL: the core-profile header; OSMesa; EGL with Mesa's vendor library and drivers (llvmpipe)
+  libgl-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libtinyxml2-dev libexpat1-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libbenchmark-dev fonts-liberation libfreetype-dev python3
   libcpp-httplib-dev nodejs

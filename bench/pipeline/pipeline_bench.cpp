@@ -6,80 +6,28 @@
 //     robot prepared once): joints + FK + posing the scene, draw with 4x MSAA + read back, and the
 //     same with the depth and link-label images as well,
 //   - PNG encoding of one frame,
-//   - forward kinematics alone for all links.
+//   - forward kinematics alone for all links;
+// then the GL backends side by side (backend_comparison.h): context creation, per-frame draw and
+// the whole process, for each compiled-in backend.
 // usage: urdfsnap_pipeline_bench [URDFSNAP_BINARY [MODEL]]
 // Timings only: no test asserts on them.
-#include <sys/wait.h>
-#include <spawn.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <functional>
-#include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "backend_comparison.h"
+#include "frame_loop.h"
 #include "heavy_robot.h"
 #include "image/png_writer.h"
 #include "model/forward_kinematics.h"
-#include "model/joint_values.h"
-#include "gl/renderer.h"
-#include "render/robot_renderer.h"
-
-extern char** environ;
+#include "timing.h"
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double Seconds(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double>(b - a).count();
-}
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-// Median wall time of `runs` calls of fn (each timed on its own).
-double MedianTime(int runs, const std::function<void()>& fn) {
-  std::vector<double> times;
-  for (int i = 0; i < runs; ++i) {
-    const auto t0 = Clock::now();
-    fn();
-    times.push_back(Seconds(t0, Clock::now()));
-  }
-  return Median(times);
-}
-
-void RunProcess(std::vector<std::string> args) {
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid;
-  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) {
-    std::fprintf(stderr, "cannot run %s\n", argv[0]);
-    std::exit(2);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::fprintf(stderr, "%s failed\n", argv[0]);
-    std::exit(2);
-  }
-}
-
-std::string ReadText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using namespace urdfsnap::bench;
 
 struct Figures {
   double process = 0;  // whole `urdfsnap render` process, seconds (median)
@@ -108,42 +56,20 @@ Figures Measure(const std::string& binary, const std::string& model_path, int pr
 
   // per frame, one process, one context
   Warnings warnings;
-  const auto robot_pointer =
-      std::make_shared<const model::Robot>(model::LoadRobot(ReadText(model_path), model_path, warnings));
+  const auto robot_pointer = LoadRobotFile(model_path);
   const model::Robot& robot = *robot_pointer;
   scene::SceneOptions options;
   options.model_file = model_path;
   options.tf = tf;
   const render::RobotRenderer robot_renderer(robot_pointer, options, warnings);
   gl::Renderer renderer(4);
-  std::mt19937 random(42);
-  std::uniform_real_distribution<double> angle(-3.0, 3.0);
-  std::vector<model::NamedValues> poses(200);
-  for (auto& pose : poses) {
-    for (const auto& name : robot.MovableJointNames()) pose.emplace_back(name, angle(random));
-  }
-  std::vector<double> scene_times, draw_times, output_times;
-  image::Image frame;
-  const image::FrameOutputs all{true, true, true};
-  for (const auto& pose : poses) {
-    const auto t0 = Clock::now();
-    const auto positions = model::ResolveJointPositions(robot, pose, true, warnings);
-    const scene::Scene scene = robot_renderer.Pose(positions);
-    const auto t1 = Clock::now();
-    frame = renderer.Render(scene, scene::OrbitView{}, 640, 480).colour;
-    const auto t2 = Clock::now();
-    renderer.Render(scene, scene::OrbitView{}, 640, 480, all);
-    scene_times.push_back(Seconds(t0, t1));
-    draw_times.push_back(Seconds(t1, t2));
-    output_times.push_back(Seconds(t2, Clock::now()));
-    if (figures.triangles == 0) {
-      for (const auto& item : scene.items) figures.triangles += item.mesh->indices.size() / 3;
-    }
-  }
-  figures.scene = Median(scene_times);
-  figures.draw = Median(draw_times);
-  figures.outputs = Median(output_times);
-  figures.png = MedianTime(50, [&] { image::EncodePng(frame); });
+  const std::vector<model::NamedValues> poses = RandomPoses(robot, 200);
+  const FrameTimes frames = RenderPoses(robot_renderer, poses, renderer, true);
+  figures.scene = frames.scene;
+  figures.draw = frames.draw;
+  figures.outputs = frames.outputs;
+  figures.triangles = frames.triangles;
+  figures.png = MedianTime(50, [&] { image::EncodePng(frames.last); });
 
   // forward kinematics alone
   const auto positions = model::ResolveJointPositions(robot, poses[0], true, warnings);
@@ -162,6 +88,9 @@ Figures Measure(const std::string& binary, const std::string& model_path, int pr
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 5 && std::string(argv[1]) == urdfsnap::bench::kMeasureBackendOption) {
+    return urdfsnap::bench::MeasureBackend(argv[2], argv[3], argv[4]);
+  }
   const std::string binary = argc > 1 ? argv[1] : URDFSNAP_BINARY;
   const std::string mrm = argc > 2 ? argv[2]
                                    : std::string(URDFSNAP_SOURCE_DIR) +
@@ -186,5 +115,6 @@ int main(int argc, char** argv) {
   std::printf("| per frame: the same + depth + labels         | %9.3f ms | %9.3f ms | %11.3f ms | %11.3f ms |\n", a.outputs * 1e3, t.outputs * 1e3, u.outputs * 1e3, b.outputs * 1e3);
   std::printf("| per frame: PNG encoding                      | %9.3f ms | %9.3f ms | %11.3f ms | %11.3f ms |\n", a.png * 1e3, t.png * 1e3, u.png * 1e3, b.png * 1e3);
   std::printf("| FK alone, all links (%zu / %zu)                 | %9.3f µs | %9.3f µs | %11.3f µs | %11.3f µs |\n", a.links, b.links, a.fk * 1e6, t.fk * 1e6, u.fk * 1e6, b.fk * 1e6);
+  urdfsnap::bench::PrintBackendComparison(std::filesystem::read_symlink("/proc/self/exe"), binary, mrm);
   return 0;
 }

@@ -1,8 +1,9 @@
-// The OpenGL core-profile API, for the render library's .cpp files only (never a public header).
-// libOSMesa (and through it LLVM, 100 ms of relocations) is loaded only when a context is made,
-// so commands that do not render start fast: every GL entry point used is a function pointer
-// here, filled by LoadGlFunctions from OSMesaGetProcAddress. A call to a GL function not in
-// this list fails to compile, which is how the list stays complete.
+// The OpenGL core-profile API, for the GL library's .cpp files only (never a public header).
+// The backend's library (libOSMesa or libEGL, and through either LLVM, 100 ms of relocations) is
+// loaded only when a context is made, so commands that do not render start fast: every GL entry
+// point used is a function pointer here, filled by UseGlFunctionsFrom from the backend's
+// OSMesaGetProcAddress or eglGetProcAddress. A call to a GL function not in this list fails to
+// compile, which is how the list stays complete.
 #pragma once
 
 #include <GL/glcorearb.h>
@@ -98,9 +99,12 @@ namespace urdfsnap::gl {
 URDFSNAP_GL_FUNCTIONS(URDFSNAP_DECLARE_GL_FUNCTION)
 #undef URDFSNAP_DECLARE_GL_FUNCTION
 
-// Fills every pointer above through `get_proc` (OSMesaGetProcAddress). Throws urdfsnap::Error
-// naming the first function the library does not provide.
+// Fills every pointer above through `get_proc` (OSMesaGetProcAddress or eglGetProcAddress)
+// unless they already come from it. Each context's MakeCurrent calls it, so contexts of both
+// backends can take turns in one process (the table is process-wide: one backend at a time).
+// Returns whether the table changed. Throws urdfsnap::Error naming the first function the
+// library does not provide.
 using GlProcLookup = void (*(*)(const char* name))();
-void LoadGlFunctions(GlProcLookup get_proc);
+bool UseGlFunctionsFrom(GlProcLookup get_proc);
 
 }  // namespace urdfsnap::gl

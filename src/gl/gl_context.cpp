@@ -1,97 +1,133 @@
-// OSMesa implementation of GlContext. libOSMesa is opened with dlopen on the first context, not
-// linked, so that only commands which render pay for loading it (and LLVM behind it).
+// The context factory: which backends a request may use, in which order, and what to say when
+// none makes a context; the background pre-load and the --version report.
 #include "gl/gl_context.h"
 
-#include "gl/gl_api.h"  // before GL/osmesa.h, whose GL/gl.h would hide GL 1.1's typedefs
+#include "gl/gl_api.h"
 
-#include <GL/osmesa.h>
-#include <dlfcn.h>
-
-#include <array>
-#include <future>
-#include <mutex>
 #include <string>
+#include <vector>
 
 #include "common/error.h"
+#include "gl/gl_backends.h"
 
 namespace urdfsnap::gl {
 
 namespace {
 
-// The OSMesa entry points used, looked up with dlsym (GL/osmesa.h declares them).
-struct OsMesaLibrary {
-  decltype(&OSMesaCreateContextAttribs) create_context = nullptr;
-  decltype(&OSMesaMakeCurrent) make_current = nullptr;
-  decltype(&OSMesaDestroyContext) destroy_context = nullptr;
+struct BackendEntry {
+  Backend backend;
+  void (*load)();
+  std::unique_ptr<GlContext> (*create)();
 };
 
-template <typename Fn>
-Fn Symbol(void* library, const char* name) {
-  void* symbol = dlsym(library, name);
-  if (!symbol) throw Error(std::string(URDFSNAP_OSMESA_LIBRARY " has no ") + name);
-  return reinterpret_cast<Fn>(symbol);
+// the compiled-in backends, in auto's order
+const std::vector<BackendEntry>& Entries() {
+  static const std::vector<BackendEntry> entries = {
+#if URDFSNAP_WITH_OSMESA
+      {Backend::kOsMesa, LoadOsMesa, CreateOsMesaContext},
+#endif
+#if URDFSNAP_WITH_EGL
+      {Backend::kEgl, LoadEgl, CreateEglContext},
+#endif
+  };
+  return entries;
 }
 
-// Opens libOSMesa once per process (never closed: Mesa does not support unloading) and fills
-// the GL function table.
-const OsMesaLibrary& LoadOsMesa() {
-  static OsMesaLibrary library;
-  static std::once_flag once;
-  std::call_once(once, [] {
-    void* handle = dlopen(URDFSNAP_OSMESA_LIBRARY, RTLD_NOW | RTLD_LOCAL);
-    if (!handle) {
-      throw Error(std::string("cannot load ") + URDFSNAP_OSMESA_LIBRARY + " (" + dlerror() +
-                  "); install Debian's libosmesa6");
-    }
-    OsMesaLibrary loaded;
-    loaded.create_context =
-        Symbol<decltype(loaded.create_context)>(handle, "OSMesaCreateContextAttribs");
-    loaded.make_current = Symbol<decltype(loaded.make_current)>(handle, "OSMesaMakeCurrent");
-    loaded.destroy_context =
-        Symbol<decltype(loaded.destroy_context)>(handle, "OSMesaDestroyContext");
-    LoadGlFunctions(Symbol<decltype(&OSMesaGetProcAddress)>(handle, "OSMesaGetProcAddress"));
-    library = loaded;
-  });
-  return library;
+// The entries `backend` may use, in order. Throws urdfsnap::Error for a backend not compiled in.
+std::vector<const BackendEntry*> Candidates(Backend backend) {
+  std::vector<const BackendEntry*> candidates;
+  for (const BackendEntry& entry : Entries()) {
+    if (backend == Backend::kAuto || entry.backend == backend) candidates.push_back(&entry);
+  }
+  if (candidates.empty()) {
+    const char* option = backend == Backend::kOsMesa ? "URDFSNAP_WITH_OSMESA" : "URDFSNAP_WITH_EGL";
+    throw Error("cannot make an OpenGL context: GL backend '" + std::string(BackendName(backend)) +
+                "' is not compiled into this urdfsnap (built with " + option +
+                "=OFF); compiled in: " + CompiledInBackendNames());
+  }
+  return candidates;
 }
-
-class OsMesaContext final : public GlContext {
- public:
-  OsMesaContext() : library_(LoadOsMesa()) {
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
-                              OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                              OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-    context_ = library_.create_context(attributes, nullptr);
-    if (!context_) throw Error("OSMesa could not create an OpenGL 3.3 core context");
-    MakeCurrent();
-  }
-  ~OsMesaContext() override { library_.destroy_context(context_); }
-
-  void MakeCurrent() override {
-    if (!library_.make_current(context_, placeholder_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
-      throw Error("OSMesa could not make its OpenGL context current");
-    }
-  }
-
- private:
-  const OsMesaLibrary& library_;
-  OSMesaContext context_ = nullptr;
-  std::array<unsigned char, 4> placeholder_{};
-};
 
 }  // namespace
 
-std::unique_ptr<GlContext> CreateOsMesaContext() { return std::make_unique<OsMesaContext>(); }
+const std::vector<Backend>& CompiledInBackends() {
+  static const std::vector<Backend> backends = [] {
+    std::vector<Backend> list;
+    for (const BackendEntry& entry : Entries()) list.push_back(entry.backend);
+    return list;
+  }();
+  return backends;
+}
 
-std::future<void> StartLoadingGl() {
-  return std::async(std::launch::async, [] {
+std::unique_ptr<GlContext> CreateGlContext(std::optional<Backend> requested) {
+  const Backend backend = ResolveBackend(requested);
+  std::string failures;
+  for (const BackendEntry* entry : Candidates(backend)) {
     try {
-      LoadOsMesa();
+      return entry->create();
+    } catch (const Error& e) {
+      if (!failures.empty()) failures += "; ";
+      failures += std::string(BackendName(entry->backend)) + ": " + e.what();
+    }
+  }
+  throw Error("cannot make an OpenGL context (GL backend " + std::string(BackendName(backend)) +
+              "): " + failures);
+}
+
+std::future<void> StartLoadingGl(std::optional<Backend> requested) {
+  return std::async(std::launch::async, [requested] {
+    try {
+      for (const BackendEntry* entry : Candidates(ResolveBackend(requested))) {
+        try {
+          entry->load();
+          return;
+        } catch (const Error&) {
+          // auto goes on to the next backend; CreateGlContext tries again and reports it
+        }
+      }
     } catch (const Error&) {
-      // CreateOsMesaContext tries again and reports it
+      // a bad URDFSNAP_GL_BACKEND or a backend not compiled in: CreateGlContext reports it
     }
   });
+}
+
+std::string DescribeGlBackends() {
+  std::string text = "GL backends compiled in: " + CompiledInBackendNames() +
+                     " (auto takes the first that makes a context)\nGL backend here: ";
+  try {
+    const Backend backend = ResolveBackend(std::nullopt);
+    const std::string asked = backend == Backend::kAuto
+                                  ? "auto"
+                                  : std::string(kBackendVariable) + "=" + std::string(BackendName(backend));
+    try {
+      const std::unique_ptr<GlContext> context = CreateGlContext(backend);
+      return text + std::string(BackendName(context->backend())) + " (" + asked + "): " +
+             context->description();
+    } catch (const Error& e) {
+      return text + "none (" + asked + "): " + e.what();
+    }
+  } catch (const Error& e) {
+    return text + "none: " + e.what();
+  }
+}
+
+std::string DescribeCurrentContext(const std::string& backend_label) {
+  auto text = [](GLenum name) {
+    const GLubyte* value = glGetString(name);
+    return value ? std::string(reinterpret_cast<const char*>(value)) : std::string("unknown");
+  };
+  // GL_VERSION is "<major>.<minor>[.<release>][ <vendor's text>]"; Mesa's text starts with
+  // "(Core Profile)", which the profile mask says for every vendor
+  const std::string version = text(GL_VERSION);
+  const size_t space = version.find(' ');
+  std::string vendor_text = space == std::string::npos ? "" : version.substr(space + 1);
+  const std::string mesa_profile = "(Core Profile) ";
+  if (vendor_text.rfind(mesa_profile, 0) == 0) vendor_text.erase(0, mesa_profile.size());
+  GLint profile = 0;
+  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+  return backend_label + ", " + text(GL_RENDERER) + ", OpenGL " + version.substr(0, space) +
+         ((profile & GL_CONTEXT_CORE_PROFILE_BIT) ? " core" : "") +
+         (vendor_text.empty() ? "" : ", " + vendor_text);
 }
 
 }  // namespace urdfsnap::gl

@@ -1,26 +1,50 @@
-// The off-screen OpenGL context behind one small interface: OSMesa (llvmpipe) today, EGL later.
-// Rendering goes to framebuffer objects, so the context's own buffer is a 1x1 placeholder.
+// The off-screen OpenGL context behind one small interface and one factory: OSMesa or EGL
+// (backend.h), each opened with dlopen when the first context is made, so that commands which do
+// not render never load Mesa and LLVM. Rendering goes to framebuffer objects: no context has a
+// window or a drawable of its own that is drawn into.
 #pragma once
 
 #include <future>
 #include <memory>
+#include <optional>
+#include <string>
+
+#include "gl/backend.h"
 
 namespace urdfsnap::gl {
 
 class GlContext {
  public:
   virtual ~GlContext() = default;
-  // Makes this context current on the calling thread.
+  // Makes this context current on the calling thread (and the GL function table its backend's).
   virtual void MakeCurrent() = 0;
+  // kOsMesa or kEgl, never kAuto.
+  virtual Backend backend() const = 0;
+  // One line naming the backend, GL_RENDERER and GL_VERSION, e.g. "EGL (surfaceless), llvmpipe
+  // (LLVM 15.0.6, 256 bits), OpenGL 4.5 core, Mesa 22.3.6".
+  virtual const std::string& description() const = 0;
 };
 
-// An OpenGL 3.3 core-profile context from OSMesa. Throws urdfsnap::Error when Mesa cannot make one.
-std::unique_ptr<GlContext> CreateOsMesaContext();
+// An OpenGL 3.3 core-profile context from the backend ResolveBackend(requested) names: nullopt
+// means "not given" (URDFSNAP_GL_BACKEND, else auto). Auto tries the compiled-in backends in
+// order (OSMesa, then EGL) and takes the first that makes a context. Throws urdfsnap::Error when
+// URDFSNAP_GL_BACKEND is not a backend's name, when the backend asked for is not compiled in, or
+// when no context can be made; the message then starts "cannot make an OpenGL context" and says
+// what each backend tried reported.
+std::unique_ptr<GlContext> CreateGlContext(std::optional<Backend> requested);
 
-// Starts loading libOSMesa (and LLVM behind it, ~0.1 s) on a background thread, so that a command
-// can read its model meanwhile; CreateOsMesaContext waits for it. A failure is reported by
-// CreateOsMesaContext. Keep the returned future until the command ends, also when it fails:
-// its destructor waits for the load, and a process must not exit while dlopen runs constructors.
-[[nodiscard]] std::future<void> StartLoadingGl();
+// Starts loading the library of the backend CreateGlContext(requested) would use first (OSMesa
+// or libEGL with its display, and Mesa's LLVM behind either, ~0.1 s) on a background thread, so
+// that a command can read its model meanwhile; CreateGlContext waits for it. Failures are left
+// for CreateGlContext to report. Keep the returned future until the command ends, also when it
+// fails: its destructor waits for the load, and a process must not exit while dlopen runs
+// constructors.
+[[nodiscard]] std::future<void> StartLoadingGl(std::optional<Backend> requested = std::nullopt);
+
+// For `urdfsnap --version`: the compiled-in backends and what CreateGlContext(nullopt) makes on
+// this machine, e.g. "GL backends compiled in: osmesa, egl\nGL backend auto on this machine:
+// osmesa: OSMesa, llvmpipe (...)". Makes (and drops) a context to find out: about 0.1 s, the
+// cost of loading Mesa. Never throws: a failure is part of the text.
+std::string DescribeGlBackends();
 
 }  // namespace urdfsnap::gl

@@ -65,9 +65,9 @@ class GpuCache {
 }  // namespace
 
 struct Renderer::Impl {
-  explicit Impl(int samples)
+  Impl(int samples, std::optional<Backend> backend)
       : samples(samples),
-        context(CreateOsMesaContext()),
+        context(CreateGlContext(backend)),
         lit("lit.vert", "lit.frag"),
         line("line.vert", "line.frag"),
         text("text.vert", "text.frag"),
@@ -76,6 +76,13 @@ struct Renderer::Impl {
     glGenBuffers(1, &stream_buffer);
   }
   ~Impl() {
+    // this context's objects are deleted in it (the members below too), not in whichever
+    // context another Renderer made current last
+    try {
+      context->MakeCurrent();
+    } catch (const Error&) {
+      // nothing to delete them in: they go with the context
+    }
     glDeleteBuffers(1, &stream_buffer);
     glDeleteVertexArrays(1, &stream_array);
   }
@@ -263,9 +270,14 @@ struct Renderer::Impl {
   GpuCache<scene::TextureImage, GpuTexture> textures;
 };
 
-Renderer::Renderer(int samples) : impl_(std::make_unique<Impl>(samples)) {}
+Renderer::Renderer(int samples, std::optional<Backend> backend)
+    : impl_(std::make_unique<Impl>(samples, backend)) {}
 
 Renderer::~Renderer() = default;
+
+Backend Renderer::backend() const { return impl_->context->backend(); }
+
+const std::string& Renderer::description() const { return impl_->context->description(); }
 
 image::Frame Renderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width,
                               int height, const image::FrameOutputs& outputs) {

@@ -6,7 +6,10 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <string>
 
+#include "gl/backend.h"
 #include "image/image.h"
 #include "scene/orbit_view.h"
 #include "scene/scene.h"
@@ -16,8 +19,9 @@ namespace urdfsnap::gl {
 class Renderer {
  public:
   // samples: multisampling per pixel, 4 as RViz requests (render_system.cpp L272-275); 0 = off.
-  // Throws urdfsnap::Error when no GL context can be made.
-  explicit Renderer(int samples = 4);
+  // backend: the GL backend asked for, nullopt when none is (then URDFSNAP_GL_BACKEND, else
+  // auto; see CreateGlContext). Throws urdfsnap::Error when no GL context can be made.
+  explicit Renderer(int samples = 4, std::optional<Backend> backend = std::nullopt);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -28,6 +32,10 @@ class Renderer {
   // render the size, or a draw item's link index does not fit a 16-bit label.
   image::Frame Render(const scene::Scene& scene, const scene::OrbitView& view, int width, int height,
                       const image::FrameOutputs& outputs = {});
+
+  // The backend of the context (kOsMesa or kEgl) and its one-line description (GlContext's).
+  Backend backend() const;
+  const std::string& description() const;
 
  private:
   struct Impl;

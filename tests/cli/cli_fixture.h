@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/gl_required.h"  // URDFSNAP_REQUIRE_GL() for the tests that render
 #include "support/temp_folder.h"
 
 namespace urdfsnap::cli_test {

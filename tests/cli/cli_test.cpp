@@ -21,6 +21,7 @@ using urdfsnap::cli_test::Result;
 using urdfsnap::cli_test::RunUrdfsnap;
 
 TEST_F(CliTest, RendersThePngAtTheRequestedSize) {
+  URDFSNAP_REQUIRE_GL();
   const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("a.png") + " --size 320x200 -j link_01__link_02=0.5");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(r.output, "");
@@ -32,6 +33,7 @@ TEST_F(CliTest, RendersThePngAtTheRequestedSize) {
 }
 
 TEST_F(CliTest, DepthAndLabelsComeFromTheSameViewBesideTheColourImage) {
+  URDFSNAP_REQUIRE_GL();
   const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("c.png") + " --size 160x120 --fit --depth " +
                                Path("d.png") + " --labels " + Path("l.png"));
   ASSERT_EQ(r.status, 0) << r.output;
@@ -82,6 +84,7 @@ TEST_F(CliTest, UnknownJointIsAnErrorListingTheMovableJoints) {
 }
 
 TEST_F(CliTest, ValueOutsideTheLimitsIsClampedWithAWarning) {
+  URDFSNAP_REQUIRE_GL();
   const Result r = RunUrdfsnap("render " + kMrm + " -o " + Path("a.png") + " -j link_01__link_02=5");
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("urdfsnap: warning: "), std::string::npos) << r.output;
@@ -149,6 +152,7 @@ TEST_F(CliTest, MissingModelIsAnError) {
 }
 
 TEST_F(CliTest, JointFileSetsThePose) {
+  URDFSNAP_REQUIRE_GL();
   const std::string yaml = Write("pose.yaml", "link_01__link_02: 0.5\n");
   const std::string json =
       Write("pose.json", R"({"name": ["link_01__link_02"], "position": [0.5]})");
@@ -161,6 +165,7 @@ TEST_F(CliTest, JointFileSetsThePose) {
 }
 
 TEST_F(CliTest, XacroModelRendersExactlyLikeItsUrdf) {
+  URDFSNAP_REQUIRE_GL();
   const std::string xacro = (kSource / "models/mrm_description/urdf/mrm.xacro").string();
   const Result x = RunUrdfsnap("render " + xacro + " -o " + Path("x.png") + " -j link_02__link_03=0.7");
   ASSERT_EQ(x.status, 0) << x.output;

@@ -15,8 +15,14 @@ const std::string kMixedPose =
     " -j base_link__link_01=1.2 -j link_01__link_02=-0.6 -j link_02__link_03=1.1"
     " -j link_03__link_04=0.9 -j link_04__link_05=0.4";
 
+// every test renders
 class DiffTest : public CliTest {
  protected:
+  void SetUp() override {
+    CliTest::SetUp();
+    URDFSNAP_REQUIRE_GL();
+  }
+
   // Renders mrm in the mixed pose (plus `extra` options) to `name` and returns its path.
   std::string Render(const std::string& name, const std::string& extra = "",
                      const std::string& environment = "") {

@@ -36,6 +36,7 @@ class DocsTest : public CliTest {
 };
 
 TEST_F(DocsTest, WritesThePageAndTwoRunsAreByteIdentical) {
+  URDFSNAP_REQUIRE_GL();
   const Result first = RunUrdfsnap("docs " + model_ + " -o " + Path("page"));
   ASSERT_EQ(first.status, 0) << first.output;
   const Result second = RunUrdfsnap("docs " + model_ + " -o " + Path("again"));
@@ -62,6 +63,7 @@ TEST_F(DocsTest, WritesThePageAndTwoRunsAreByteIdentical) {
 }
 
 TEST_F(DocsTest, CheckPassesOnAFreshPageAndFailsAfterALimitChanges) {
+  URDFSNAP_REQUIRE_GL();
   ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);
   const Result fresh = RunUrdfsnap("docs " + model_ + " --check " + Path("page"));
   EXPECT_EQ(fresh.status, 0) << fresh.output;
@@ -89,6 +91,7 @@ TEST_F(DocsTest, CheckPassesOnAFreshPageAndFailsAfterALimitChanges) {
 }
 
 TEST_F(DocsTest, CheckFindsMissingExtraAndUndecodableFiles) {
+  URDFSNAP_REQUIRE_GL();
   ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);
   fs::remove(Path("page/images/tf.png"));
   Write("page/notes.txt", "mine");
@@ -105,6 +108,7 @@ TEST_F(DocsTest, CheckFindsMissingExtraAndUndecodableFiles) {
 }
 
 TEST_F(DocsTest, ReplacesAnOlderPageAsAWhole) {
+  URDFSNAP_REQUIRE_GL();
   ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);
   Write("page/joints/gone.png", "left over from an older robot");
   const Result r = RunUrdfsnap("docs " + model_ + " -o " + Path("page") + " --joints 'link_01*'");

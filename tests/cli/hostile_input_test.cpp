@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "support/gl_required.h"
 #include "support/temp_folder.h"
 #include "urdfsnap_process.h"
 
@@ -30,6 +31,8 @@ struct HostileCase {
   std::string arguments;
   // text the error message must contain (the culprit: a file:line, name, value or option)
   std::string culprit;
+  // whether the command gets as far as rendering (so needs a GL context) before it fails
+  bool renders = false;
 };
 
 // Two links joined by `joint`, which starts on line 4.
@@ -337,10 +340,10 @@ std::vector<HostileCase> Cases() {
        "regression-no-failure-reason.png: cannot decode PNG: corrupt image data"},
       // outputs that cannot be written
       {"output_folder_missing", robot(kGoodRobot), "render " + kModel + " -o {dir}/no/such/out.png",
-       "no/such/out.png: cannot write"},
+       "no/such/out.png: cannot write", true},
       {"output_under_a_file", robot(kGoodRobot), "render " + kModel + " -o {dir}/robot.urdf/out.png",
-       "robot.urdf/out.png: cannot write: Not a directory"},
-      {"output_is_a_folder", robot(kGoodRobot), "render " + kModel + " -o {dir}", "cannot write"},
+       "robot.urdf/out.png: cannot write: Not a directory", true},
+      {"output_is_a_folder", robot(kGoodRobot), "render " + kModel + " -o {dir}", "cannot write", true},
       {"stdout_full", xacro(Xacro("<link name=\"a\"/>")), "xacro {dir}/robot.xacro > /dev/full",
        "cannot write to standard output"},
       {"info_stdout_full", robot(kGoodRobot), "info " + kModel + " > /dev/full",
@@ -384,6 +387,7 @@ int ErrorLines(const std::string& err) {
 
 TEST_P(HostileInputTest, EndsWithOneLocatedErrorAndLeavesTheOutputAlone) {
   const HostileCase& c = GetParam();
+  if (c.renders) URDFSNAP_REQUIRE_GL();
   const urdfsnap::test::TempFolder folder("hostile_" + c.name);
   const fs::path& dir = folder.path();
   for (const auto& [name, bytes] : c.files) std::ofstream(dir / name, std::ios::binary) << bytes;

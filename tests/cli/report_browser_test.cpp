@@ -35,6 +35,7 @@ class ReportBrowserTest : public CliTest {
       if (ci && std::string(ci) == "true") FAIL() << "no chromium on PATH (scripts/deps.sh installs it)";
       GTEST_SKIP() << "no chromium on PATH (scripts/deps.sh installs it; in CI this is a failure)";
     }
+    URDFSNAP_REQUIRE_GL();
     // the elbow golden against the arm moved by 0.1 rad: a failing case with all three images
     fs::copy_file(kSource / "tests/golden/mrm_elbow.png", Path("elbow.png"));
     Write("suite.yaml", "cases:\n  - name: elbow\n    model: " + kMrm +

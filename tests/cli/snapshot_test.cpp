@@ -20,6 +20,7 @@ bool Contains(const std::string& text, const std::string& part) {
 using SnapshotTest = CliTest;
 
 TEST_F(SnapshotTest, MissingGoldenFailsCheckAndUpdateCreatesIt) {
+  URDFSNAP_REQUIRE_GL();
   const std::string suite = Write("suite.yaml", "cases:\n  - name: home\n    model: " + kMrm +
                                                     "\n    golden: goldens/home.png\n");
   Result r = RunUrdfsnap("snapshot check " + suite);
@@ -46,6 +47,7 @@ TEST_F(SnapshotTest, MissingGoldenFailsCheckAndUpdateCreatesIt) {
 
 // The machinery's reason to exist: mrm_elbow's golden against the arm moved by 0.01 rad.
 TEST_F(SnapshotTest, JointMovedByOneHundredthOfARadianFailsWithAReport) {
+  URDFSNAP_REQUIRE_GL();
   fs::copy_file(kSource / "tests/golden/mrm_elbow.png", Path("elbow.png"));
   const std::string suite =
       Write("suite.yaml", "defaults:\n  model: " + kMrm +
@@ -96,6 +98,7 @@ TEST_F(SnapshotTest, SuiteErrorsNameTheFileAndLine) {
 
 // A case that cannot be rendered is reported at its line; the other cases still run.
 TEST_F(SnapshotTest, CaseErrorsAreStatusTwoAfterTheOtherCases) {
+  URDFSNAP_REQUIRE_GL();
   const std::string suite = Write(
       "suite.yaml", "defaults:\n  model: " + kMrm +
                         "\ncases:\n  - name: bad_value\n    yaw: abc\n  - name: bad_joint\n"
@@ -111,6 +114,7 @@ TEST_F(SnapshotTest, CaseErrorsAreStatusTwoAfterTheOtherCases) {
 // One process for the whole suite must render each case exactly as `render` does alone, and
 // llvmpipe's thread count must not change a byte.
 TEST_F(SnapshotTest, SuiteOutputIsByteIdenticalToRenderAndAcrossThreadCounts) {
+  URDFSNAP_REQUIRE_GL();
   const std::string xacro = (kSource / "models/mrm_description/urdf/mrm.xacro").string();
   const std::string rviz = (kSource / "tests/data/mrm.rviz").string();
   struct View {

@@ -7,6 +7,7 @@
 
 #include "gl/renderer.h"
 #include "front_view.h"
+#include "renderer_fixture.h"
 #include "scene/grid.h"
 #include "scene/primitive_meshes.h"
 
@@ -29,16 +30,12 @@ DrawItem Box(int link, const Eigen::Vector3d& centre, const Eigen::Vector3d& siz
 float DepthAt(const image::Frame& frame, int x, int y) { return frame.depth.metres[y * kWidth + x]; }
 int LabelAt(const image::Frame& frame, int x, int y) { return frame.labels.labels[y * kWidth + x]; }
 
-class FrameOutputsTest : public ::testing::Test {
+class FrameOutputsTest : public RendererFixture {
  protected:
-  static void SetUpTestSuite() { renderer_ = new Renderer(4); }
-  static void TearDownTestSuite() { delete renderer_; }
   image::Frame Render(const Scene& scene) {
     return renderer_->Render(scene, FrontView(), kWidth, kHeight, {true, true, true});
   }
-  static Renderer* renderer_;
 };
-Renderer* FrameOutputsTest::renderer_ = nullptr;
 
 TEST_F(FrameOutputsTest, FaceFacingTheCameraHasItsDistanceAndLinkOffTheRobotNothing) {
   Scene scene;

@@ -2,6 +2,9 @@
 // facing the camera, row order of the read-back, and the grid's blended line colour.
 #include "gl/renderer.h"
 
+#include <cstdlib>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +16,7 @@
 #include "front_view.h"
 #include "scene/grid.h"
 #include "scene/primitive_meshes.h"
+#include "renderer_fixture.h"
 
 namespace urdfsnap::gl {
 namespace {
@@ -35,13 +39,17 @@ std::shared_ptr<const geometry::TriangleMesh> UpperTriangle() {
   return std::make_shared<const geometry::TriangleMesh>(mesh);
 }
 
-class RendererTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { renderer_ = new Renderer(4); }
-  static void TearDownTestSuite() { delete renderer_; }
-  static Renderer* renderer_;
-};
-Renderer* RendererTest::renderer_ = nullptr;
+using RendererTest = RendererFixture;
+
+TEST_F(RendererTest, RunsOnTheBackendAskedForAndSaysWhichGl) {
+  const char* asked = std::getenv("URDFSNAP_GL_BACKEND");
+  if (asked && *asked && std::string(asked) != "auto") {
+    EXPECT_EQ(BackendName(renderer_->backend()), asked);
+  }
+  const std::string prefix = renderer_->backend() == Backend::kEgl ? "EGL (" : "OSMesa, ";
+  EXPECT_EQ(renderer_->description().rfind(prefix, 0), 0u) << renderer_->description();
+  EXPECT_NE(renderer_->description().find(", OpenGL "), std::string::npos) << renderer_->description();
+}
 
 TEST_F(RendererTest, EmptySceneIsTheBackgroundEverywhere) {
   Scene scene;

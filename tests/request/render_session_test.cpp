@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "support/gl_required.h"
 #include "support/temp_folder.h"
 
 namespace urdfsnap::request {
@@ -55,6 +56,7 @@ int RobotPixels(const image::LabelImage& labels) {
 }
 
 TEST(RenderSession, SaysWhichFilesAModelReadAndReadsThemAgainAfterForgetting) {
+  URDFSNAP_REQUIRE_GL();
   const test::TempFolder folder("render_session");
   WriteRobot(folder);
   const std::string model = folder.Path("urdf/robot.urdf.xacro");
@@ -78,6 +80,7 @@ TEST(RenderSession, SaysWhichFilesAModelReadAndReadsThemAgainAfterForgetting) {
 }
 
 TEST(RenderSession, KeepsOnlyTheMostRecentlyUsedModels) {
+  URDFSNAP_REQUIRE_GL();
   const test::TempFolder folder("render_session_lru");
   RenderSession session;
   Warnings warnings;

@@ -10,6 +10,7 @@
 
 #include "cli/urdfsnap_process.h"
 #include "serve_process.h"
+#include "support/gl_required.h"
 #include "support/temp_folder.h"
 
 namespace urdfsnap::serve_test {
@@ -33,6 +34,7 @@ std::string RenderError(const std::string& arguments) {
 
 class ServeApiTest : public ::testing::Test {
  protected:
+  void SetUp() override { URDFSNAP_REQUIRE_GL(); }
   test::TempFolder folder_{"serve_api"};
 };
 

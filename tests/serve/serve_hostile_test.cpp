@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "serve_process.h"
+#include "support/gl_required.h"
 #include "support/temp_folder.h"
 
 namespace urdfsnap::serve_test {
@@ -20,6 +21,7 @@ const std::string kMrm = std::string(URDFSNAP_SOURCE_DIR) + "/models/mrm_descrip
 class ServeHostileTest : public ::testing::Test {
  protected:
   void SetUp() override {
+    URDFSNAP_REQUIRE_GL();
     server_.emplace(kMrm + " --port 0");
     ASSERT_TRUE(server_->started()) << server_->Stderr();
   }

@@ -11,6 +11,7 @@
 
 #include "cli/urdfsnap_process.h"
 #include "serve_process.h"
+#include "support/gl_required.h"
 #include "support/temp_folder.h"
 
 namespace urdfsnap::serve_test {
@@ -48,6 +49,7 @@ std::string Tetrahedron(double s) {
 
 class ServeReloadTest : public ::testing::Test {
  protected:
+  void SetUp() override { URDFSNAP_REQUIRE_GL(); }
   // Polls /api/status until the model's generation passes `after`; returns the status.
   nlohmann::json WaitForGeneration(httplib::Client& client, int after) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# CI's EGL-only stage (scripts/test.sh runs it when CI=true): builds urdfsnap without OSMesa
+# (-DURDFSNAP_WITH_OSMESA=OFF, as on distributions whose Mesa, 25.1 on, has no OSMesa) into
+# build-egl/ and runs the whole test suite there, every image drawn through EGL. No benchmarks.
+# usage: scripts/test-egl-only.sh [ctest args...]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$root/build-egl
+"$root/scripts/deps.sh"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DURDFSNAP_WITH_OSMESA=OFF \
+  -DURDFSNAP_BUILD_BENCH=OFF >/dev/null
+cmake --build "$build" -j "$(nproc)" >/dev/null
+(cd "$build" && ctest --output-on-failure -j "$(nproc)" "$@")
