@@ -3,14 +3,16 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <string>
 
 #include "cli/command.h"
 #include "common/error.h"
+#include "common/version.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"urdfsnap: RViz-like PNG images of URDF/xacro robots, headless", "urdfsnap"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "urdfsnap 0.1.0");
+  app.set_version_flag("--version", std::string("urdfsnap ") + urdfsnap::Version());
   app.add_flag("--strict", urdfsnap::cli::StrictWarnings(),
                "treat warnings as errors: print the warning as an error, write nothing, exit 2 "
                "(before or after the command)");
