@@ -2,6 +2,7 @@
 // with an exit status other than 0 (urdfsnap::Error ends with status 2; see main.cpp).
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include <CLI/CLI.hpp>
@@ -32,6 +33,9 @@ void PrintWarningsBeforeError(const Warnings& warnings);
 // a full disk).
 void WriteToStdout(std::string_view text);
 
+// One line per snapshot case on stdout, flushed (CI logs show progress): "FAILED   NAME: MESSAGE".
+void PrintCaseLine(const char* word, const std::string& name, const std::string& message);
+
 // Each subcommand file defines one of these; main.cpp calls them all.
 void AddRenderCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);
@@ -40,5 +44,7 @@ void AddDiffCommand(CLI::App& app);
 void AddSnapshotCommand(CLI::App& app);
 void AddServeCommand(CLI::App& app);
 void AddDocsCommand(CLI::App& app);
+// `snapshot merge`, added to the snapshot command by AddSnapshotCommand.
+void AddSnapshotMergeCommand(CLI::App& snapshot);
 
 }  // namespace urdfsnap::cli

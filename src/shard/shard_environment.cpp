@@ -108,7 +108,7 @@ ShardChoice ChooseShard(const std::optional<std::string>& flag, bool no_shard,
                         const EnvironmentLookup& lookup) {
   if (flag) {
     const Shard shard = ParseShard(*flag, "--shard '" + *flag + "'");
-    return ShardChoice{shard, "--shard " + ShardText(shard)};
+    return ShardChoice{shard, "--shard"};
   }
   if (!no_shard) {
     if (auto choice = ShardFromEnvironment(lookup)) return *choice;

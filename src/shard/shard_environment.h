@@ -22,7 +22,7 @@ namespace urdfsnap::shard {
 // The shard a process takes and where it came from.
 struct ShardChoice {
   Shard shard;         // 1/1 when not sharded
-  std::string source;  // "--shard 2/4", "GitLab CI_NODE_INDEX=2 CI_NODE_TOTAL=4", ...; "" when not sharded
+  std::string source;  // "--shard", "GitLab CI_NODE_INDEX=2 CI_NODE_TOTAL=4", ...; "" when not sharded
 
   bool sharded() const { return !source.empty(); }
 };
