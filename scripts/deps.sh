@@ -14,7 +14,7 @@ packages=(
   libcpp-httplib-dev chromium nodejs
   libzstd-dev liblz4-dev
   libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev libavutil-dev libwebp-dev ffmpeg
-  python3-jsonschema help2man dpkg-dev
+  python3-jsonschema python3-yaml help2man dpkg-dev
 )
 # npm only for the test tooling, and only when no npm is on the PATH (NodeSource's nodejs package
 # brings its own, which Debian's npm package would conflict with)
