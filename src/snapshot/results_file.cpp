@@ -70,14 +70,23 @@ class FieldReader {
   }
 
   const Json& Member(const Json& object, const char* key, const std::string& place) const {
-    const std::string here = place.empty() ? key : place + "." + key;
-    if (!object.is_object() || !object.contains(key)) throw Bad(here, "missing");
+    if (!object.is_object()) throw Bad(place, "expected an object, got " + Short(object));
+    if (!object.contains(key)) throw Bad(Place(place, key), "missing");
     return object[key];
+  }
+
+  // A value in a message about a value of the wrong kind: a scalar as JSON text, cut short; a
+  // list or object by its kind only (dumping one nested a million deep would recurse as deep).
+  static std::string Short(const Json& value) {
+    if (value.is_array()) return "a list";
+    if (value.is_object()) return "an object";
+    const std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+    return text.size() <= 40 ? text : text.substr(0, 37) + "...";
   }
 
   std::string Text(const Json& object, const char* key, const std::string& place) const {
     const Json& value = Member(object, key, place);
-    if (!value.is_string()) throw Bad(Place(place, key), "expected a string, got " + value.dump());
+    if (!value.is_string()) throw Bad(Place(place, key), "expected a string, got " + Short(value));
     return value.get<std::string>();
   }
 
@@ -85,14 +94,14 @@ class FieldReader {
     const Json& value = Member(object, key, place);
     if (!value.is_number_integer() || value.get<long long>() < low || value.get<long long>() > high) {
       throw Bad(Place(place, key), "expected a whole number from " + std::to_string(low) + " to " +
-                                       std::to_string(high) + ", got " + value.dump());
+                                       std::to_string(high) + ", got " + Short(value));
     }
     return static_cast<int>(value.get<long long>());
   }
 
   double Number(const Json& object, const char* key, const std::string& place) const {
     const Json& value = Member(object, key, place);
-    if (!value.is_number()) throw Bad(Place(place, key), "expected a number, got " + value.dump());
+    if (!value.is_number()) throw Bad(Place(place, key), "expected a number, got " + Short(value));
     return value.get<double>();
   }
 
@@ -124,7 +133,6 @@ image::DiffStats ReadFigures(const FieldReader& in, const Json& f, const std::st
 }
 
 CaseRecord ReadCase(const FieldReader& in, const Json& c, const std::string& place) {
-  if (!c.is_object()) throw in.Bad(place, "expected an object");
   CaseRecord r;
   r.name = in.Text(c, "name", place);
   if (!IsCaseName(r.name)) throw in.Bad(place + ".name", "'" + r.name + "' is not a case name");
