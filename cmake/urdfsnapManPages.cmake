@@ -1,10 +1,10 @@
 # Man pages made from the binary's own --help by help2man (so they never drift from it): urdfsnap(1)
 # and one page per command, urdfsnap-render(1), urdfsnap-snapshot-check(1), ... gzipped and
 # installed into share/man/man1. On by default when help2man is installed (scripts/deps.sh
-# installs it); the Debian package needs them. A new command adds a line here;
-# scripts/test-package.sh checks that every command `urdfsnap --help` lists has its page.
+# installs it), except in sanitizer builds; the Debian package needs them. A new command adds a
+# line here; scripts/test-package.sh checks that every command `urdfsnap --help` lists has a page.
 find_program(URDFSNAP_HELP2MAN help2man)
-if(URDFSNAP_HELP2MAN)
+if(URDFSNAP_HELP2MAN AND NOT URDFSNAP_SANITIZE)
   set(man_default ON)
 else()
   set(man_default OFF)
