@@ -19,21 +19,23 @@ while [ $# -gt 0 ]; do
     *) echo "package.sh: unknown argument '$1' (usage: package.sh [--build-dir DIR] [--out DIR])" >&2; exit 2 ;;
   esac
 done
+# the build's own dependencies are scripts/deps.sh's; these are the packaging tools
 for tool in cpack dpkg-shlibdeps help2man; do
   command -v "$tool" >/dev/null || { echo "package.sh: $tool is missing (scripts/deps.sh installs it)" >&2; exit 2; }
 done
-if [ -z "$build" ]; then
-  "$root/scripts/deps.sh"
-  build="$root/build-package"
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DURDFSNAP_BUILD_TESTS=OFF \
-    -DURDFSNAP_BUILD_BENCH=OFF -DURDFSNAP_MAN_PAGES=ON >/dev/null
-  cmake --build "$build" -j "$(nproc)" >/dev/null
-fi
-grep -q '^URDFSNAP_MAN_PAGES:BOOL=ON' "$build/CMakeCache.txt" ||
-  { echo "package.sh: $build is configured without man pages (-DURDFSNAP_MAN_PAGES=ON)" >&2; exit 2; }
 # CPack stages the install in a scratch folder; only the .deb is kept
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_package.XXXXXX")
 trap 'rm -rf "$scratch"' EXIT
+if [ -z "$build" ]; then
+  build="$root/build-package"
+  echo "package.sh: building $build (Release)" >&2
+  { cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DURDFSNAP_BUILD_TESTS=OFF \
+      -DURDFSNAP_BUILD_BENCH=OFF -DURDFSNAP_MAN_PAGES=ON &&
+    cmake --build "$build" -j "$(nproc)"; } >"$scratch/build.log" 2>&1 ||
+    { cat "$scratch/build.log" >&2; exit 1; }
+fi
+grep -q '^URDFSNAP_MAN_PAGES:BOOL=ON' "$build/CMakeCache.txt" ||
+  { echo "package.sh: $build is configured without man pages (-DURDFSNAP_MAN_PAGES=ON)" >&2; exit 2; }
 (cd "$build" && cpack -G DEB -B "$scratch" >"$scratch/cpack.log" 2>&1) ||
   { cat "$scratch/cpack.log" >&2; exit 1; }
 deb=$(ls "$scratch"/urdfsnap_*.deb)
