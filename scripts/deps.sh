@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages urdfsnap needs to build, test and package, only those that are
-# missing (chromium, ffmpeg's command-line tools, nodejs/npm and python3-jsonschema are for the
-# tests only; help2man and dpkg-dev for scripts/package.sh).
+# missing (chromium, ffmpeg's command-line tools, nodejs/npm, python3-jsonschema and python3-yaml
+# are for the tests only; help2man and dpkg-dev for scripts/package.sh).
 # Idempotent and quiet when everything is already there. Needs root (apt-get).
 # usage: scripts/deps.sh [--sanitizers]   (--sanitizers: also clang and libFuzzer, for the
 # sanitizer build and scripts/fuzz.sh; the normal build does not need them)
