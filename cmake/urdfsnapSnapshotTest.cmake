@@ -6,7 +6,10 @@
 # current source folder. On failure the HTML report (default: <binary dir>/NAME-report/index.html)
 # shows expected, actual and diff images; JUnit XML goes to FILE (default:
 # <binary dir>/NAME.junit.xml). Labels default to "snapshot". LAUNCHER runs the check through a
-# command, e.g. `LAUNCHER ${CMAKE_COMMAND} -E env URDFSNAP_GL_BACKEND=egl` for a GL backend.
+# command, e.g. `LAUNCHER ${CMAKE_COMMAND} -E env URDFSNAP_GL_BACKEND=egl` for a GL backend. The test
+# checks the whole suite (--no-shard) even inside a CI job that shards (GitLab parallel:, a Slurm
+# array): to split a suite over workers, run `urdfsnap snapshot check --shard` and `snapshot merge`
+# directly.
 # After an intended change, rewrite the goldens with `urdfsnap snapshot update SUITE`.
 #
 # Works in urdfsnap's own build and, through find_package(urdfsnap), in any project: it runs the
@@ -30,6 +33,7 @@ function(urdfsnap_add_snapshot_test name suite)
     set(ARG_LABELS snapshot)
   endif()
   add_test(NAME ${name}
-    COMMAND ${ARG_LAUNCHER} $<TARGET_FILE:urdfsnap::urdfsnap> snapshot check "${suite}" --report "${ARG_REPORT_DIR}" --junit "${ARG_JUNIT}")
+    COMMAND ${ARG_LAUNCHER} $<TARGET_FILE:urdfsnap::urdfsnap> snapshot check "${suite}" --no-shard
+      --report "${ARG_REPORT_DIR}" --junit "${ARG_JUNIT}")
   set_tests_properties(${name} PROPERTIES LABELS "${ARG_LABELS}")
 endfunction()

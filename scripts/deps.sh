@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages urdfsnap needs to build and test, only those that are missing
-# (chromium, ffmpeg's command-line tools and nodejs/npm are for the tests only).
+# Installs the Debian packages urdfsnap needs to build, test and package, only those that are
+# missing (chromium, ffmpeg's command-line tools, nodejs/npm, python3-jsonschema and python3-yaml
+# are for the tests only; help2man and dpkg-dev for scripts/package.sh).
 # Idempotent and quiet when everything is already there. Needs root (apt-get).
 # usage: scripts/deps.sh [--sanitizers]   (--sanitizers: also clang and libFuzzer, for the
 # sanitizer build and scripts/fuzz.sh; the normal build does not need them)
@@ -16,6 +17,7 @@ packages=(
   libzstd-dev liblz4-dev
   libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev libavutil-dev libwebp-dev ffmpeg
   chromium  # the browser tests (the HTML report, serve's page), headless; CI fails them without it
+  python3-jsonschema python3-yaml help2man dpkg-dev
 )
 # npm only for the test tooling, and only when no npm is on the PATH (NodeSource's nodejs package
 # brings its own, which Debian's npm package would conflict with)

@@ -2,6 +2,7 @@
 // with an exit status other than 0 (urdfsnap::Error ends with status 2; see main.cpp).
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include <CLI/CLI.hpp>
@@ -37,6 +38,9 @@ void WriteToStdout(std::string_view text);
 // option's name). CLI::Range alone lets NaN through: it compares false both ways.
 CLI::Validator FiniteNumber();
 
+// One line per snapshot case on stdout, flushed (CI logs show progress): "FAILED   NAME: MESSAGE".
+void PrintCaseLine(const char* word, const std::string& name, const std::string& message);
+
 // Each subcommand file defines one of these; main.cpp calls them all.
 void AddRenderCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);
@@ -45,5 +49,7 @@ void AddDiffCommand(CLI::App& app);
 void AddSnapshotCommand(CLI::App& app);
 void AddServeCommand(CLI::App& app);
 void AddDocsCommand(CLI::App& app);
+// `snapshot merge`, added to the snapshot command by AddSnapshotCommand.
+void AddSnapshotMergeCommand(CLI::App& snapshot);
 
 }  // namespace urdfsnap::cli

@@ -40,4 +40,9 @@ void WriteToStdout(std::string_view text) {
   }
 }
 
+void PrintCaseLine(const char* word, const std::string& name, const std::string& message) {
+  std::printf("%-8s %s: %s\n", word, name.c_str(), message.c_str());
+  std::fflush(stdout);
+}
+
 }  // namespace urdfsnap::cli

@@ -9,6 +9,7 @@
 
 #include "cli/command.h"
 #include "common/error.h"
+#include "common/version.h"
 #include "gl/gl_context.h"
 
 namespace {
@@ -67,7 +68,7 @@ int main(int argc, char** argv) {
   CLI::App app{"urdfsnap: RViz-like PNG images of URDF/xacro robots, headless", "urdfsnap"};
   app.require_subcommand(1);
   // the GL lines make a context to say what it is (about 0.1 s: Mesa loads), hence a function
-  app.set_version_flag("--version", [] { return "urdfsnap 0.1.0\n" + urdfsnap::gl::DescribeGlBackends(); },
+  app.set_version_flag("--version", [] { return "urdfsnap " + std::string(urdfsnap::Version()) + "\n" + urdfsnap::gl::DescribeGlBackends(); },
                        "print the version, the GL backends compiled in and the one used here, and exit");
   app.add_flag("--strict", urdfsnap::cli::StrictWarnings(),
                "treat warnings as errors: print the warning as an error, write nothing, exit 2 "

@@ -1,17 +1,25 @@
-// `urdfsnap snapshot check|update SUITE.yaml`: every case of a suite rendered in one process (one
-// GL context, each model loaded once), compared with its golden image, reported; or the goldens
-// (re)written after an intended change.
+// `urdfsnap snapshot check|update SUITE.yaml`: the cases of a suite (or of one shard of it)
+// rendered in one process (one GL context, each model loaded once), compared with their golden
+// images and reported; or the goldens (re)written after an intended change. `snapshot merge` is in
+// snapshot_merge_command.cpp.
+//
+// A check keeps one small record per case: each case's report images are written as soon as it
+// is checked and then let go, so a suite's memory does not grow with its number of cases.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <set>
 
 #include "cli/command.h"
+#include "cli/shard_options.h"
 #include "common/error.h"
+#include "common/version.h"
 #include "image/png_writer.h"
 #include "gl/gl_context.h"
 #include "snapshot/case_check.h"
+#include "snapshot/case_selection.h"
+#include "snapshot/report_images.h"
 #include "snapshot/reports.h"
+#include "snapshot/results_file.h"
 
 namespace urdfsnap::cli {
 
@@ -19,15 +27,11 @@ namespace {
 
 struct SnapshotOptions {
   std::string suite;
-  std::string report_dir, junit;        // check
-  std::vector<std::string> case_names;  // update
-  bool force = false;                   // update
+  std::string report_dir, junit, results;  // check
+  std::vector<std::string> case_names;     // update
+  bool force = false;                      // update
+  ShardOptions sharding;
 };
-
-void PrintResult(const char* word, const std::string& name, const std::string& message) {
-  std::printf("%-8s %s: %s\n", word, name.c_str(), message.c_str());
-  std::fflush(stdout);
-}
 
 // The suite format in a few lines, with the option keys taken from the table `render` uses.
 std::string SuiteFormatHelp() {
@@ -47,35 +51,57 @@ std::string SuiteFormatHelp() {
          "  and render's options without the dashes:" + keys + "\n";
 }
 
-// Exit status of a run: 2 when a case could not be rendered (bad input), 1 when one differs.
-int ExitStatus(const std::vector<snapshot::CaseResult>& results) {
-  int status = 0;
-  for (const auto& r : results) {
-    if (r.status == snapshot::CaseStatus::kError) return 2;
-    if (r.status != snapshot::CaseStatus::kPassed) status = 1;
-  }
-  return status;
+// The suite's cases this run takes (named ones, of this shard), with the shard line on stderr.
+struct Selection {
+  snapshot::Suite suite;
+  shard::ShardChoice shard;
+  std::vector<const snapshot::SnapshotCase*> cases;
+};
+
+Selection Select(const SnapshotOptions& o, const std::vector<std::string>& names) {
+  Selection s{snapshot::ReadSuite(o.suite), o.sharding.Choose(), {}};
+  s.cases = snapshot::SelectCases(s.suite, names, s.shard.shard);
+  PrintShardLine(s.shard, s.cases.size(), names.empty() ? s.suite.cases.size() : names.size(),
+                 names.empty() ? "cases" : "named cases");
+  return s;
+}
+
+void WriteOutputs(const SnapshotOptions& o, const Selection& s,
+                  const std::vector<snapshot::CaseRecord>& records) {
+  if (!o.report_dir.empty()) snapshot::WriteHtmlReport(o.report_dir, s.suite.path, records);
+  if (!o.junit.empty()) snapshot::WriteJunitReport(o.junit, s.suite.path, records);
+  if (o.results.empty()) return;
+  snapshot::RunResults results;
+  results.suite = {s.suite.path, s.suite.digest, static_cast<int>(s.suite.cases.size())};
+  results.urdfsnap_version = Version();
+  results.shard = s.shard.shard;
+  results.shard_source = s.shard.source;
+  results.report_dir = o.report_dir;
+  results.cases = records;
+  snapshot::WriteResults(o.results, results);
 }
 
 void Check(const SnapshotOptions& o) {
-  const snapshot::Suite suite = snapshot::ReadSuite(o.suite);
+  const Selection s = Select(o, {});
+  if (!o.report_dir.empty()) std::filesystem::create_directories(o.report_dir);
   const auto gl_loading = gl::StartLoadingGl();  // overlaps Mesa with the first model
   request::RenderSession session;
   Warnings warnings;
-  std::vector<snapshot::CaseResult> results;
-  for (const snapshot::SnapshotCase& c : suite.cases) {
-    results.push_back(snapshot::CheckCase(session, suite, c, warnings));
-    const snapshot::CaseResult& r = results.back();
-    PrintResult(snapshot::StatusWord(r.status), c.name, r.message);
+  std::vector<snapshot::CaseRecord> records;
+  records.reserve(s.cases.size());
+  for (const snapshot::SnapshotCase* c : s.cases) {
+    snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, warnings);
+    if (!o.report_dir.empty()) snapshot::WriteReportImages(o.report_dir, r);
+    PrintCaseLine(snapshot::StatusWord(r.record.status), c->name, r.record.message);
+    records.push_back(std::move(r.record));  // the images go with r
   }
   PrintWarnings(warnings);
-  if (!o.report_dir.empty()) snapshot::WriteHtmlReport(o.report_dir, suite, results);
-  if (!o.junit.empty()) snapshot::WriteJunitReport(o.junit, suite, results);
-  std::printf("%s\n", snapshot::Summary(results).c_str());
+  WriteOutputs(o, s, records);
+  std::printf("%s\n", snapshot::Summary(records).c_str());
   if (!o.report_dir.empty()) {
     std::printf("report: %s\n", (std::filesystem::path(o.report_dir) / "index.html").c_str());
   }
-  const int status = ExitStatus(results);
+  const int status = snapshot::ExitStatus(records);
   if (status == 1) {
     std::printf("after an intended change: urdfsnap snapshot update %s\n", o.suite.c_str());
   }
@@ -83,48 +109,34 @@ void Check(const SnapshotOptions& o) {
   if (status != 0) throw CommandExit{status};
 }
 
-// The cases named on the command line (all when none is), in suite order.
-std::vector<const snapshot::SnapshotCase*> Selected(const snapshot::Suite& suite,
-                                                    const std::vector<std::string>& names) {
-  std::set<std::string> wanted(names.begin(), names.end());
-  std::vector<const snapshot::SnapshotCase*> selected;
-  std::string known;
-  for (const snapshot::SnapshotCase& c : suite.cases) {
-    known += (known.empty() ? "" : ", ") + c.name;
-    if (names.empty() || wanted.erase(c.name)) selected.push_back(&c);
-  }
-  if (!wanted.empty()) {
-    throw Error(suite.path + ": no case named '" + *wanted.begin() + "' (cases: " + known + ")");
-  }
-  return selected;
-}
-
 void Update(const SnapshotOptions& o) {
-  const snapshot::Suite suite = snapshot::ReadSuite(o.suite);
-  const auto selected = Selected(suite, o.case_names);
+  const Selection s = Select(o, o.case_names);
   const auto gl_loading = gl::StartLoadingGl();
   request::RenderSession session;
   Warnings warnings;
-  std::vector<snapshot::CaseResult> results;
+  std::vector<snapshot::CaseRecord> records;
   int written = 0;
-  for (const snapshot::SnapshotCase* c : selected) {
-    results.push_back(snapshot::CheckCase(session, suite, *c, warnings));
-    snapshot::CaseResult& r = results.back();
-    if (r.status == snapshot::CaseStatus::kError || (r.status == snapshot::CaseStatus::kPassed && !o.force)) {
-      PrintResult(r.status == snapshot::CaseStatus::kError ? "ERROR" : "same", c->name, r.message);
-      continue;
+  for (const snapshot::SnapshotCase* c : s.cases) {
+    snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, warnings);
+    snapshot::CaseRecord& record = r.record;
+    if (record.status == snapshot::CaseStatus::kError ||
+        (record.status == snapshot::CaseStatus::kPassed && !o.force)) {
+      PrintCaseLine(record.status == snapshot::CaseStatus::kError ? "ERROR" : "same", c->name,
+                    record.message);
+    } else {
+      const auto folder = std::filesystem::path(c->golden).parent_path();
+      if (!folder.empty()) std::filesystem::create_directories(folder);
+      image::WritePng(r.actual, c->golden);
+      PrintCaseLine("wrote", c->name, c->golden + " (was " + snapshot::StatusWord(record.status) + ")");
+      record.status = snapshot::CaseStatus::kPassed;
+      ++written;
     }
-    const auto folder = std::filesystem::path(c->golden).parent_path();
-    if (!folder.empty()) std::filesystem::create_directories(folder);
-    image::WritePng(r.actual, c->golden);
-    PrintResult("wrote", c->name, c->golden + " (was " + snapshot::StatusWord(r.status) + ")");
-    r.status = snapshot::CaseStatus::kPassed;
-    ++written;
+    records.push_back(std::move(record));
   }
   PrintWarnings(warnings);
-  std::printf("%d of %zu goldens written; look at each before committing it\n", written, selected.size());
+  std::printf("%d of %zu goldens written; look at each before committing it\n", written, s.cases.size());
   std::fflush(stdout);
-  if (const int status = ExitStatus(results); status != 0) throw CommandExit{status};
+  if (const int status = snapshot::ExitStatus(records); status != 0) throw CommandExit{status};
 }
 
 }  // namespace
@@ -142,13 +154,19 @@ void AddSnapshotCommand(CLI::App& app) {
   check->add_option("--report", o->report_dir,
                     "write index.html with expected, actual and diff images of failing cases here");
   check->add_option("--junit", o->junit, "write JUnit XML for CI systems to this file");
+  check->add_option("--results", o->results,
+                    "write every case's verdict and figures as JSON to this file, for "
+                    "`snapshot merge` (format: docs/snapshot-results.md)");
+  o->sharding.AddOptions(*check, "cases");
   check->callback([o] { Check(*o); });
   CLI::App* update = cmd->add_subcommand(
       "update", "(Re)write the golden images of cases that are missing or no longer match");
   update->add_option("SUITE", o->suite, "the suite file (YAML)")->required();
   update->add_option("CASE", o->case_names, "only these cases (default: all)");
   update->add_flag("--force", o->force, "rewrite goldens that still match as well");
+  o->sharding.AddOptions(*update, "cases");
   update->callback([o] { Update(*o); });
+  AddSnapshotMergeCommand(*cmd);
 }
 
 }  // namespace urdfsnap::cli

@@ -2,11 +2,11 @@
 // list of top-level entries (in file order) and then interpreted as a {name: value} map or a JointState.
 #include <algorithm>
 
-#include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include "common/error.h"
 #include "common/file_reading.h"
+#include "common/json_text.h"
 #include "model/joint_values.h"
 #include "common/number_text.h"
 
@@ -83,11 +83,6 @@ std::vector<Entry> ReadYamlEntries(const std::string& text, const std::string& p
   return entries;
 }
 
-int LineAt(const std::string& text, size_t offset) {
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + std::min(offset, text.size()),
-                                         '\n'));
-}
-
 // nlohmann_json keeps no positions in its values, so a key's line is found in the text: the
 // first "key" followed by a colon.
 int LineOfJsonKey(const std::string& text, const std::string& key) {
@@ -105,22 +100,7 @@ Scalar ScalarFromJson(const nlohmann::ordered_json& value, int line) {
 }
 
 std::vector<Entry> ReadJsonEntries(const std::string& text, const std::string& path) {
-  nlohmann::ordered_json root;
-  try {
-    root = nlohmann::ordered_json::parse(text);
-  } catch (const nlohmann::json::out_of_range& e) {
-    // a number beyond a double ("1e999"; found by fuzzing: this escaped without the file)
-    const std::string what = e.what();
-    const size_t bracket = what.find("] ");
-    throw Error(SourceLocation{path, 0},
-                "bad JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
-  } catch (const nlohmann::json::parse_error& e) {
-    // what() reads "[json.exception.parse_error.101] parse error at line L, column C: ..."
-    const std::string what = e.what();
-    const size_t colon = what.find(": ");
-    throw Error(SourceLocation{path, LineAt(text, e.byte > 0 ? e.byte - 1 : 0)},
-                "bad JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
-  }
+  const nlohmann::ordered_json root = ParseJson(text, path);
   if (!root.is_object()) {
     throw Error(SourceLocation{path, 1},
                 "expected an object of joint names to values, or \"name\" and \"position\" "

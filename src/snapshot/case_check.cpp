@@ -19,26 +19,27 @@ std::string Located(const Suite& suite, const SnapshotCase& c, const std::string
 }
 
 void Compare(const SnapshotCase& c, CaseResult& result) {
+  CaseRecord& record = result.record;
   if (!std::filesystem::exists(c.golden)) {
-    result.status = CaseStatus::kMissing;
-    result.message = "no golden image " + c.golden;
+    record.status = CaseStatus::kMissing;
+    record.message = "no golden image " + c.golden;
     return;
   }
   result.expected = image::ReadPng(c.golden);
   if (result.expected.width != result.actual.width || result.expected.height != result.actual.height) {
-    result.status = CaseStatus::kFailed;
-    result.message = "size differs: golden " + c.golden + " is " + image::SizeText(result.expected) +
+    record.status = CaseStatus::kFailed;
+    record.message = "size differs: golden " + c.golden + " is " + image::SizeText(result.expected) +
                      ", the render is " + image::SizeText(result.actual);
     return;
   }
   const int delta = c.tolerance.max_delta;
-  const image::DiffStats stats = image::CompareImages(result.expected, result.actual, delta);
-  result.message = image::DescribeDiff(stats, c.tolerance);
-  if (image::WithinTolerance(stats, c.tolerance)) {
-    result.status = CaseStatus::kPassed;
+  record.figures = image::CompareImages(result.expected, result.actual, delta);
+  record.message = image::DescribeDiff(*record.figures, c.tolerance);
+  if (image::WithinTolerance(*record.figures, c.tolerance)) {
+    record.status = CaseStatus::kPassed;
     return;
   }
-  result.status = CaseStatus::kFailed;
+  record.status = CaseStatus::kFailed;
   result.diff = image::MakeDiffImage(result.expected, result.actual, delta);
 }
 
@@ -48,27 +49,22 @@ CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const 
                      Warnings& warnings) {
   const auto start = std::chrono::steady_clock::now();
   CaseResult result;
-  result.snapshot_case = &c;
+  CaseRecord& record = result.record;
+  record.name = c.name;
+  record.index = c.index;
+  record.line = c.line;
+  record.golden = c.golden;
+  record.tolerance = c.tolerance;
   try {
     result.actual = session.Render(
         c.request, [&](std::string_view name) { return OptionLocation(suite, c, name); }, warnings).colour;
     Compare(c, result);
   } catch (const Error& e) {
-    result.status = CaseStatus::kError;
-    result.message = Located(suite, c, e.what());
+    record.status = CaseStatus::kError;
+    record.message = Located(suite, c, e.what());
   }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
-}
-
-const char* StatusWord(CaseStatus status) {
-  switch (status) {
-    case CaseStatus::kPassed: return "ok";
-    case CaseStatus::kFailed: return "FAILED";
-    case CaseStatus::kMissing: return "MISSING";
-    case CaseStatus::kError: return "ERROR";
-  }
-  return "ERROR";
 }
 
 }  // namespace urdfsnap::snapshot

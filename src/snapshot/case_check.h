@@ -1,29 +1,19 @@
 // Checking one snapshot case: render it in a shared session, compare it with its golden image
-// under the case's tolerance, and keep the images a report shows.
+// under the case's tolerance, and hold the images a report shows until they are written.
 #pragma once
-
-#include <string>
 
 #include "common/warnings.h"
 #include "image/image.h"
-#include "image/image_diff.h"
 #include "request/render_session.h"
+#include "snapshot/case_record.h"
 #include "snapshot/suite_file.h"
 
 namespace urdfsnap::snapshot {
 
-enum class CaseStatus {
-  kPassed,
-  kFailed,   // the render differs from the golden beyond the tolerance (or in size)
-  kMissing,  // there is no golden image yet
-  kError,    // the case could not be rendered or the golden could not be read
-};
-
+// A case just checked: its record, and its images until the report has them (then dropped, so
+// that a suite's memory does not grow with its cases).
 struct CaseResult {
-  const SnapshotCase* snapshot_case = nullptr;
-  CaseStatus status = CaseStatus::kError;
-  std::string message;   // the figures or the error, one line
-  double seconds = 0;    // rendering and comparing
+  CaseRecord record;
   image::Image expected;  // empty unless the golden was read
   image::Image actual;    // empty when rendering failed
   image::Image diff;      // set for kFailed cases of equal size
@@ -33,8 +23,5 @@ struct CaseResult {
 // they become a kError result whose message names the suite file and line.
 CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const SnapshotCase& c,
                      Warnings& warnings);
-
-// "ok", "FAILED", "MISSING" or "ERROR".
-const char* StatusWord(CaseStatus status);
 
 }  // namespace urdfsnap::snapshot

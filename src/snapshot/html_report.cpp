@@ -1,10 +1,9 @@
-// WriteHtmlReport: index.html with inline CSS and JavaScript and the PNGs beside it. The swipe
-// view stacks the actual image over the expected one and clips it at the slider position.
+// WriteHtmlReport: index.html with inline CSS and JavaScript, referring to the PNGs beside it. The
+// swipe view stacks the actual image over the expected one and clips it at the slider position.
 #include <filesystem>
 #include <sstream>
 
 #include "common/atomic_file.h"
-#include "image/png_writer.h"
 #include "snapshot/markup_text.h"
 #include "snapshot/reports.h"
 
@@ -68,38 +67,32 @@ for (const view of document.querySelectorAll('.swipe')) {
 
 std::string Figure(const std::string& file, const std::string& caption) {
   return "<figure><img src=\"" + EscapeMarkup(file) + "\" alt=\"" + EscapeMarkup(caption) +
-         "\"><figcaption>" + EscapeMarkup(caption) + "</figcaption></figure>\n";
+         "\" loading=\"lazy\"><figcaption>" + EscapeMarkup(caption) + "</figcaption></figure>\n";
 }
 
-// The images of one case that did not pass, written beside index.html, and its section.
-std::string CaseSection(const fs::path& dir, const CaseResult& r) {
-  const SnapshotCase& c = *r.snapshot_case;
-  const std::string expected = c.name + ".expected.png", actual = c.name + ".actual.png",
-                    diff = c.name + ".diff.png";
+// The section of one case that did not pass: its figures and the images it has.
+std::string CaseSection(const CaseRecord& r) {
+  const ReportImages& images = r.images;
   std::ostringstream html;
-  html << "<section id=\"" << EscapeMarkup(c.name) << "\">\n<h2>" << EscapeMarkup(c.name)
-       << " <span class=\"" << StatusWord(r.status) << "\">" << StatusWord(r.status)
-       << "</span></h2>\n<p class=\"figures\">" << EscapeMarkup(r.message) << "</p>\n";
+  html << "<section id=\"" << EscapeMarkup(r.name) << "\">\n<h2>" << EscapeMarkup(r.name)
+       << " <span class=\"" << StatusWord(r.status) << "\">" << StatusWord(r.status) << "</span>"
+       << (r.shard.empty() ? "" : " <small>shard " + EscapeMarkup(r.shard) + "</small>")
+       << "</h2>\n<p class=\"figures\">" << EscapeMarkup(r.message) << "</p>\n";
   html << "<div class=\"trio\">\n";
-  if (!r.expected.rgb.empty()) {
-    image::WritePng(r.expected, (dir / expected).string());
-    html << Figure(expected, "expected: " + c.golden);
+  if (!images.expected.empty()) html << Figure(images.expected, "expected: " + r.golden);
+  if (!images.actual.empty()) {
+    html << Figure(images.actual, r.status == CaseStatus::kMissing
+                                      ? "actual (no golden yet: urdfsnap snapshot update creates it)"
+                                      : "actual");
   }
-  if (!r.actual.rgb.empty()) {
-    image::WritePng(r.actual, (dir / actual).string());
-    html << Figure(actual, r.status == CaseStatus::kMissing
-                               ? "actual (no golden yet: urdfsnap snapshot update creates it)"
-                               : "actual");
-  }
-  if (!r.diff.rgb.empty()) {
-    image::WritePng(r.diff, (dir / diff).string());
-    html << Figure(diff, "diff: magenta over the delta, yellow changed less, over the dimmed expected image");
+  if (!images.diff.empty()) {
+    html << Figure(images.diff, "diff: magenta over the delta, yellow changed less, over the dimmed expected image");
   }
   html << "</div>\n";
-  if (!r.expected.rgb.empty() && !r.actual.rgb.empty() && !r.diff.rgb.empty()) {
+  if (!images.expected.empty() && !images.actual.empty() && !images.diff.empty()) {
     html << "<h3>Swipe: expected on the left, actual on the right</h3>\n<div class=\"swipe\">"
-         << "<img class=\"expected\" src=\"" << EscapeMarkup(expected) << "\" alt=\"expected\">"
-         << "<img class=\"actual\" src=\"" << EscapeMarkup(actual) << "\" alt=\"actual\">"
+         << "<img class=\"expected\" src=\"" << EscapeMarkup(images.expected) << "\" alt=\"expected\" loading=\"lazy\">"
+         << "<img class=\"actual\" src=\"" << EscapeMarkup(images.actual) << "\" alt=\"actual\" loading=\"lazy\">"
          << "<div class=\"line\"></div><span class=\"tag\" style=\"left:6px\">expected</span>"
          << "<span class=\"tag\" style=\"right:6px\">actual</span></div>\n"
          << "<input class=\"slider\" type=\"range\" min=\"0\" max=\"100\" value=\"50\" "
@@ -109,27 +102,40 @@ std::string CaseSection(const fs::path& dir, const CaseResult& r) {
   return html.str();
 }
 
+bool FromShards(const std::vector<CaseRecord>& records) {
+  for (const CaseRecord& r : records) {
+    if (!r.shard.empty()) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
-void WriteHtmlReport(const std::string& dir, const Suite& suite, const std::vector<CaseResult>& results) {
+void WriteHtmlReport(const std::string& dir, const std::string& suite_path,
+                     const std::vector<CaseRecord>& records) {
   fs::create_directories(dir);
-  std::ostringstream html;
-  html << kHead << "<h1>Snapshot report: " << EscapeMarkup(suite.path) << "</h1>\n<p>"
-       << EscapeMarkup(Summary(results)) << "</p>\n<table>\n<tr><th>case</th><th>status</th>"
-       << "<th>figures</th></tr>\n";
-  for (const CaseResult& r : results) {
-    const std::string name = EscapeMarkup(r.snapshot_case->name);
+  const bool shards = FromShards(records);
+  // written row by row: a report of thousands of cases is never held whole in memory
+  AtomicFile html((fs::path(dir) / "index.html").string());
+  html.Write(kHead);
+  html.Write("<h1>Snapshot report: " + EscapeMarkup(suite_path) + "</h1>\n<p>" +
+             EscapeMarkup(Summary(records)) + "</p>\n<table>\n<tr><th>case</th><th>status</th>" +
+             (shards ? "<th>shard</th>" : "") + "<th>figures</th></tr>\n");
+  for (const CaseRecord& r : records) {
+    const std::string name = EscapeMarkup(r.name);
     const bool passed = r.status == CaseStatus::kPassed;
-    html << "<tr><td>" << (passed ? name : "<a href=\"#" + name + "\">" + name + "</a>")
-         << "</td><td class=\"" << StatusWord(r.status) << "\">" << StatusWord(r.status)
-         << "</td><td class=\"figures\">" << EscapeMarkup(r.message) << "</td></tr>\n";
+    html.Write("<tr><td>" + (passed ? name : "<a href=\"#" + name + "\">" + name + "</a>") +
+               "</td><td class=\"" + StatusWord(r.status) + "\">" + StatusWord(r.status) + "</td>" +
+               (shards ? "<td>" + EscapeMarkup(r.shard) + "</td>" : "") + "<td class=\"figures\">" +
+               EscapeMarkup(r.message) + "</td></tr>\n");
   }
-  html << "</table>\n";
-  for (const CaseResult& r : results) {
-    if (r.status != CaseStatus::kPassed) html << CaseSection(dir, r);
+  html.Write("</table>\n");
+  for (const CaseRecord& r : records) {
+    if (r.status != CaseStatus::kPassed) html.Write(CaseSection(r));
   }
-  html << kScript << "</body>\n</html>\n";
-  WriteFileAtomically((fs::path(dir) / "index.html").string(), html.str());
+  html.Write(kScript);
+  html.Write("</body>\n</html>\n");
+  html.Commit();
 }
 
 }  // namespace urdfsnap::snapshot

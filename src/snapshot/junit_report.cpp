@@ -1,8 +1,7 @@
-// WriteJunitReport and the one-line summary: the JUnit XML that CI systems (GitLab, Jenkins,
-// GitHub test-report actions) display as a test list.
+// WriteJunitReport, the one-line summary and the exit status: the JUnit XML that CI systems
+// (GitLab, Jenkins, GitHub test-report actions) display as a test list.
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 
 #include "common/atomic_file.h"
 #include "snapshot/markup_text.h"
@@ -17,9 +16,9 @@ struct Counts {
   double seconds = 0;
 };
 
-Counts Count(const std::vector<CaseResult>& results) {
+Counts Count(const std::vector<CaseRecord>& records) {
   Counts counts;
-  for (const CaseResult& r : results) {
+  for (const CaseRecord& r : records) {
     counts.seconds += r.seconds;
     switch (r.status) {
       case CaseStatus::kPassed: ++counts.passed; break;
@@ -39,41 +38,55 @@ std::string Seconds(double seconds) {
 
 }  // namespace
 
-std::string Summary(const std::vector<CaseResult>& results) {
-  const Counts n = Count(results);
-  return std::to_string(results.size()) + " cases: " + std::to_string(n.passed) + " passed, " +
+std::string Summary(const std::vector<CaseRecord>& records) {
+  const Counts n = Count(records);
+  return std::to_string(records.size()) + " cases: " + std::to_string(n.passed) + " passed, " +
          std::to_string(n.failed) + " failed, " + std::to_string(n.missing) + " missing, " +
          std::to_string(n.errors) + " errors";
 }
 
-void WriteJunitReport(const std::string& path, const Suite& suite,
-                      const std::vector<CaseResult>& results) {
-  const Counts n = Count(results);
-  const std::string name = EscapeMarkup(std::filesystem::path(suite.path).stem().string());
-  const std::string counts = "tests=\"" + std::to_string(results.size()) + "\" failures=\"" +
+int ExitStatus(const std::vector<CaseRecord>& records) {
+  const Counts n = Count(records);
+  if (n.errors > 0) return 2;
+  return n.failed + n.missing > 0 ? 1 : 0;
+}
+
+void WriteJunitReport(const std::string& path, const std::string& suite_path,
+                      const std::vector<CaseRecord>& records) {
+  const Counts n = Count(records);
+  const std::string name = EscapeMarkup(std::filesystem::path(suite_path).stem().string());
+  const std::string file = EscapeMarkup(suite_path);
+  const std::string counts = "tests=\"" + std::to_string(records.size()) + "\" failures=\"" +
                              std::to_string(n.failed + n.missing) + "\" errors=\"" +
                              std::to_string(n.errors) + "\" time=\"" + Seconds(n.seconds) + "\"";
-  std::ostringstream xml;
-  xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites " << counts << ">\n"
-      << "  <testsuite name=\"" << name << "\" " << counts << " skipped=\"0\" file=\""
-      << EscapeMarkup(suite.path) << "\">\n";
-  for (const CaseResult& r : results) {
-    const SnapshotCase& c = *r.snapshot_case;
-    xml << "    <testcase classname=\"urdfsnap." << name << "\" name=\"" << EscapeMarkup(c.name)
-        << "\" file=\"" << EscapeMarkup(suite.path) << "\" line=\"" << c.line << "\" time=\""
-        << Seconds(r.seconds) << "\"";
-    if (r.status == CaseStatus::kPassed) {
-      xml << "/>\n";
+  // written case by case: the XML of thousands of cases is never held whole in memory
+  AtomicFile xml(path);
+  xml.Write("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites " + counts + ">\n  <testsuite name=\"" +
+            name + "\" " + counts + " skipped=\"0\" file=\"" + file + "\">\n");
+  for (const CaseRecord& r : records) {
+    std::string testcase = "    <testcase classname=\"urdfsnap." + name + "\" name=\"" + EscapeMarkup(r.name) +
+                           "\" file=\"" + file + "\" line=\"" + std::to_string(r.line) + "\" time=\"" +
+                           Seconds(r.seconds) + "\"";
+    if (r.status == CaseStatus::kPassed && r.shard.empty()) {
+      xml.Write(testcase + "/>\n");
       continue;
     }
-    const char* element = r.status == CaseStatus::kError ? "error" : "failure";
-    const std::string message = EscapeMarkup(r.message);
-    xml << ">\n      <" << element << " type=\"" << StatusWord(r.status) << "\" message=\""
-        << message << "\">" << message << "\ngolden: " << EscapeMarkup(c.golden) << "</"
-        << element << ">\n    </testcase>\n";
+    testcase += ">\n";
+    if (!r.shard.empty()) {
+      testcase += "      <properties><property name=\"shard\" value=\"" + EscapeMarkup(r.shard) +
+                  "\"/></properties>\n";
+    }
+    if (r.status != CaseStatus::kPassed) {
+      const std::string element = r.status == CaseStatus::kError ? "error" : "failure";
+      const std::string message = EscapeMarkup(r.message);
+      testcase += "      <" + element + " type=\"" + StatusWord(r.status) + "\" message=\"" + message +
+                  "\">" + message + "\ngolden: " + EscapeMarkup(r.golden) +
+                  (r.shard.empty() ? "" : "\nshard: " + EscapeMarkup(r.shard)) + "</" + element + ">\n";
+    }
+    xml.Write(testcase + "    </testcase>\n");
   }
-  xml << "  </testsuite>\n</testsuites>\n";
-  WriteFileAtomically(path, xml.str());
+  xml.Write("  </testsuite>\n</testsuites>\n");
+  xml.Commit();
 }
 
 }  // namespace urdfsnap::snapshot

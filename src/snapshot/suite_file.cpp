@@ -2,13 +2,19 @@
 // error names the suite file and the line of the offending key.
 #include "snapshot/suite_file.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <set>
+#ifdef __GLIBC__
+#include <malloc.h>  // malloc_trim
+#endif
 
 #include <yaml-cpp/yaml.h>
 
 #include "common/error.h"
+#include "common/file_reading.h"
 #include "common/number_text.h"
+#include "common/stable_hash.h"
 
 namespace urdfsnap::snapshot {
 
@@ -18,25 +24,21 @@ namespace fs = std::filesystem;
 
 int LineOf(const YAML::Node& node) { return node.Mark().line + 1; }
 
-bool IsCaseName(const std::string& name) {
-  if (name.empty()) return false;
-  for (char ch : name) {
-    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-' && ch != '.') return false;
-  }
-  return true;
-}
-
 class SuiteReader {
  public:
   explicit SuiteReader(const std::string& path)
       : path_(path), dir_(fs::path(path).parent_path()) {}
 
   Suite Read() {
+    std::string text;
+    try {
+      text = ReadFileBounded(path_);
+    } catch (const FileReadError& e) {
+      throw Error(SourceLocation{path_, 0}, std::string("cannot read the suite file: ") + e.what());
+    }
     YAML::Node root;
     try {
-      root = YAML::LoadFile(path_);
-    } catch (const YAML::BadFile&) {
-      throw Error(SourceLocation{path_, 0}, "cannot read the suite file");
+      root = YAML::Load(text);
     } catch (const YAML::Exception& e) {
       throw Error(SourceLocation{path_, e.mark.line + 1}, "bad YAML: " + e.msg);
     }
@@ -60,10 +62,11 @@ class SuiteReader {
     if (!has_cases || !cases.IsSequence() || cases.size() == 0) {
       throw ErrorAt(has_cases ? cases : root, "expected 'cases:' with a list of cases");
     }
-    Suite suite{path_, {}};
+    Suite suite{path_, StableHashText(text), {}};
     std::set<std::string> names;
     for (const YAML::Node& node : cases) {
       SnapshotCase c = defaults;
+      c.index = static_cast<int>(suite.cases.size());
       c.line = LineOf(node);
       ApplyKeys(node, c, false);
       if (c.name.empty()) throw ErrorAt(node, "the case has no 'name'");
@@ -221,7 +224,28 @@ class SuiteReader {
 
 }  // namespace
 
-Suite ReadSuite(const std::string& path) { return SuiteReader(path).Read(); }
+bool IsCaseName(std::string_view name) {
+  if (name.empty() || name == "." || name == "..") return false;
+  for (char ch : name) {
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-' && ch != '.') return false;
+  }
+  return true;
+}
+
+Suite ReadSuite(const std::string& path) {
+  // yaml-cpp keeps about 400 bytes per node until its document goes, so a 5,000-case suite parses
+  // at about 60 MB, and the cases built among those nodes would pin their pages for the whole run.
+  // So the cases are copied once the tree is gone (the copy packs them together, about 2.6 KB a
+  // case) and the freed pages are handed back: a suite run's memory stays that of its renderer
+  // (bench/suites/suite_memory.py).
+  Suite parsed = SuiteReader(path).Read();
+  Suite packed = parsed;
+  parsed = Suite{};
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+  return packed;
+}
 
 std::string OptionLocation(const Suite& suite, const SnapshotCase& c, std::string_view name) {
   const auto found = c.option_lines.find(std::string(name));

@@ -30,6 +30,7 @@ namespace urdfsnap::snapshot {
 
 struct SnapshotCase {
   std::string name;
+  int index = 0;              // position in the suite, 0-based
   int line = 0;               // of the case in the suite file
   request::RenderRequest request;
   std::string golden;         // path of the golden PNG (relative to the working directory)
@@ -39,12 +40,17 @@ struct SnapshotCase {
 
 struct Suite {
   std::string path;
+  std::string digest;  // StableHashText of the file's bytes: which suite (and revision) results are of
   std::vector<SnapshotCase> cases;
 };
 
 // Reads the suite at `path`. Throws urdfsnap::Error "PATH:LINE: ..." for bad YAML, unknown or
 // repeated keys, values of the wrong kind, a case without a model, bad or repeated case names.
 Suite ReadSuite(const std::string& path);
+
+// True for a usable case name: letters, digits, '_', '-' and '.', not "." or ".." (it names the
+// golden and the report's image files).
+bool IsCaseName(std::string_view name);
 
 // The label for option `name` of `c` in error messages: "suite.yaml:12: yaw".
 std::string OptionLocation(const Suite& suite, const SnapshotCase& c, std::string_view name);

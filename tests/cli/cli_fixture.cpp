@@ -11,8 +11,12 @@
 namespace urdfsnap::cli_test {
 
 Result RunUrdfsnap(const std::string& arguments, const std::string& environment) {
-  const std::string command = (environment.empty() ? "" : "env " + environment + " ") +
-                              std::string(URDFSNAP_BINARY) + " " + arguments + " 2>&1";
+  // a job engine's shard variables around the test run (a GitLab parallel: job, a Slurm array)
+  // must not shard the suites the tests check
+  const std::string command =
+      "env -u CI_NODE_INDEX -u CI_NODE_TOTAL -u SLURM_ARRAY_TASK_ID -u JOB_COMPLETION_INDEX "
+      "-u URDFSNAP_SHARD_COUNT " + environment + " " + std::string(URDFSNAP_BINARY) + " " +
+      arguments + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   std::string output;
   std::array<char, 4096> buffer;

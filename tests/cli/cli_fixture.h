@@ -20,7 +20,8 @@ struct Result {
   std::string output;  // stdout and stderr together
 };
 
-// Runs "urdfsnap ARGUMENTS" through the shell (so "VAR=value" words may come first via `env`).
+// Runs "urdfsnap ARGUMENTS" through the shell with `environment` ("VAR=value" words) added to the
+// test's environment less the job engines' shard variables (CI_NODE_INDEX, SLURM_ARRAY_TASK_ID, ...).
 Result RunUrdfsnap(const std::string& arguments, const std::string& environment = "");
 
 // The bytes of a file ("" when it cannot be read).

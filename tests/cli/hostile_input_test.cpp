@@ -338,6 +338,26 @@ std::vector<HostileCase> Cases() {
        "diff {dir}/a.png " + std::string(URDFSNAP_SOURCE_DIR) +
            "/tests/fuzz/png_reader/regression-no-failure-reason.png --diff {out}",
        "regression-no-failure-reason.png: cannot decode PNG: corrupt image data"},
+      // snapshot suites and results files
+      {"suite_endless", {}, "snapshot check /dev/zero --junit {out}",
+       "/dev/zero: cannot read the suite file: larger than the limit of 64 MiB"},
+      {"shard_huge", {{"suite.yaml", "cases:\n  - {name: a, model: m.urdf}\n"}},
+       "snapshot check {dir}/suite.yaml --shard 1/99999999999999999999 --junit {out}",
+       "--shard '1/99999999999999999999': expected K/N"},
+      {"results_endless", {}, "snapshot merge /dev/zero --junit {out}",
+       "/dev/zero: cannot read the results file: larger than the limit of 64 MiB"},
+      {"results_folder", {}, "snapshot merge {dir} --junit {out}", "cannot read the results file: Is a directory"},
+      {"results_deep_array", {{"r.json", std::string(1000000, '[') + std::string(1000000, ']')}},
+       "snapshot merge {dir}/r.json --junit {out}", "r.json: not a urdfsnap results file"},
+      {"results_deep_field",
+       {{"r.json", "{\"format\":\"urdfsnap-snapshot-results\",\"format_version\":1,\"urdfsnap_version\":"
+                   "\"0\",\"suite\":" + std::string(500000, '[') + std::string(500000, ']') + "}"}},
+       "snapshot merge {dir}/r.json --junit {out}", "r.json: suite: expected an object, got a list"},
+      {"results_truncated", {{"r.json", "{\"format\": \"urdfsnap-snapshot-res"}},
+       "snapshot merge {dir}/r.json --junit {out}", "r.json:1: bad JSON"},
+      {"results_number_overflow",
+       {{"r.json", "{\"format\":\"urdfsnap-snapshot-results\",\"format_version\":1e999}"}},
+       "snapshot merge {dir}/r.json --junit {out}", "r.json: bad JSON"},
       // outputs that cannot be written
       {"output_folder_missing", robot(kGoodRobot), "render " + kModel + " -o {dir}/no/such/out.png",
        "no/such/out.png: cannot write", true},

@@ -1,0 +1,40 @@
+// The words for a case's status, both ways.
+#include "snapshot/case_record.h"
+
+namespace urdfsnap::snapshot {
+
+namespace {
+
+constexpr CaseStatus kStatuses[] = {CaseStatus::kPassed, CaseStatus::kFailed, CaseStatus::kMissing,
+                                    CaseStatus::kError};
+
+}  // namespace
+
+const char* StatusWord(CaseStatus status) {
+  switch (status) {
+    case CaseStatus::kPassed: return "ok";
+    case CaseStatus::kFailed: return "FAILED";
+    case CaseStatus::kMissing: return "MISSING";
+    case CaseStatus::kError: return "ERROR";
+  }
+  return "ERROR";
+}
+
+const char* StatusName(CaseStatus status) {
+  switch (status) {
+    case CaseStatus::kPassed: return "passed";
+    case CaseStatus::kFailed: return "failed";
+    case CaseStatus::kMissing: return "missing";
+    case CaseStatus::kError: return "error";
+  }
+  return "error";
+}
+
+std::optional<CaseStatus> StatusFromName(std::string_view name) {
+  for (const CaseStatus status : kStatuses) {
+    if (name == StatusName(status)) return status;
+  }
+  return std::nullopt;
+}
+
+}  // namespace urdfsnap::snapshot

@@ -1,0 +1,38 @@
+// Joining the results files of a suite's shards into the results of the whole suite, as if it had
+// run unsharded (same cases, same verdicts, suite order), each case saying which shard checked it;
+// and gathering the shards' report images into one report folder.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "snapshot/results_file.h"
+
+namespace urdfsnap::snapshot {
+
+// A results file and what it holds.
+struct ShardFile {
+  std::string path;
+  RunResults results;
+};
+
+struct MergedResults {
+  SuiteIdentity suite;
+  int shard_count = 1;
+  std::vector<CaseRecord> cases;        // in suite order, each with record.shard = "K/N"
+  std::vector<std::string> image_dirs;  // per case: the folder of its report images ("" if none)
+};
+
+// Merges the results of every shard of one split. `version` is this urdfsnap's: results of another
+// version are refused (renders may differ between versions). Throws urdfsnap::Error naming the
+// file(s) for: no files; a file of another suite (digest or case count) or version; files of
+// different shard counts; a shard given twice; a missing shard; a case in a shard that does not
+// own it, given twice, or cases missing.
+MergedResults MergeResults(std::vector<ShardFile> files, const std::string& version);
+
+// Copies the report images of every merged case into `dir` (created if needed; file names stay
+// NAME.expected.png, ...), each atomically. Throws urdfsnap::Error naming an image that a results
+// file lists but that is not there (a partly downloaded artifact).
+void CollectReportImages(const MergedResults& merged, const std::string& dir);
+
+}  // namespace urdfsnap::snapshot

@@ -1,0 +1,67 @@
+#!/usr/bin/env python3
+"""The documented results format is the written one: results files made by the urdfsnap binary
+(an unsharded check, two shards, their merge) validate against docs/snapshot-results.schema.json,
+and the schema is not vacuous (a damaged file fails it).
+
+usage: check_results_schema.py URDFSNAP SCHEMA MODEL
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import jsonschema
+
+
+def run(*args, expect):
+    result = subprocess.run(args, capture_output=True, text=True)
+    if result.returncode not in expect:
+        sys.exit(f"{' '.join(args)} exited {result.returncode}:\n{result.stdout}{result.stderr}")
+
+
+def main():
+    urdfsnap, schema_path, model = (os.path.abspath(p) for p in sys.argv[1:4])
+    with open(schema_path) as f:
+        schema = json.load(f)
+    jsonschema.Draft7Validator.check_schema(schema)
+    validator = jsonschema.Draft7Validator(schema)
+    work = tempfile.mkdtemp(prefix="urdfsnap_results_schema.")
+    try:
+        suite = os.path.join(work, "suite.yaml")
+        with open(suite, "w") as f:
+            f.write(f"defaults:\n  model: {model}\n  size: 160x120\ncases:\n"
+                    "  - name: home\n"
+                    "  - name: drifted\n    joints: {link_01__link_02: 0.8}\n"
+                    "  - name: new_view\n    yaw: 1.0\n"
+                    "  - name: broken\n    joints: {nope: 1}\n")
+        run(urdfsnap, "snapshot", "update", suite, expect={2})
+        os.remove(os.path.join(work, "new_view.png"))
+        shutil.copy(os.path.join(work, "home.png"), os.path.join(work, "drifted.png"))
+        files = []
+        for name, shard in (("whole", []), ("one", ["--shard", "1/2"]), ("two", ["--shard", "2/2"])):
+            files.append(os.path.join(work, name, "results.json"))
+            run(urdfsnap, "snapshot", "check", suite, *shard, "--results", files[-1],
+                "--report", os.path.join(work, name, "report"), expect={0, 1, 2})
+        files.append(os.path.join(work, "merged.json"))
+        run(urdfsnap, "snapshot", "merge", files[1], files[2], "--results", files[-1],
+            "--report", os.path.join(work, "merged_report"), expect={2})
+        statuses = set()
+        for path in files:
+            with open(path) as f:
+                results = json.load(f)
+            validator.validate(results)
+            statuses |= {c["status"] for c in results["cases"]}
+        if statuses != {"passed", "failed", "missing", "error"}:
+            sys.exit(f"expected every status in the files, got {statuses}")
+        results["cases"][0]["status"] = "ok"
+        if validator.is_valid(results):
+            sys.exit("the schema accepts a case with status 'ok'")
+        print(f"{len(files)} results files valid against {schema_path}")
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
