@@ -34,6 +34,7 @@ void WriteToStdout(std::string_view text);
 
 // Each subcommand file defines one of these; main.cpp calls them all.
 void AddRenderCommand(CLI::App& app);
+void AddAnimateCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);
 void AddXacroCommand(CLI::App& app);
 void AddDiffCommand(CLI::App& app);
