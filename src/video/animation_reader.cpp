@@ -22,6 +22,11 @@ namespace {
 
 // Animated WebP files larger than this are refused (docs animations are a few MB at most).
 constexpr std::size_t kMaxWebpBytes = std::size_t{256} << 20;
+// Frames of more pixels than this are refused before a decoder allocates them (8192 x 8192: a
+// hostile header cannot make the reader take gigabytes).
+constexpr std::int64_t kMaxFramePixels = std::int64_t{8192} * 8192;
+
+std::string PixelLimitText() { return "more than urdfsnap's limit of 8192x8192 pixels for an animation frame"; }
 
 class WebpReader final : public AnimationReader {
  public:
@@ -32,6 +37,13 @@ class WebpReader final : public AnimationReader {
       throw Error(path + ": cannot read: " + e.what());
     }
     const WebPData data{reinterpret_cast<const std::uint8_t*>(bytes_.data()), bytes_.size()};
+    // the canvas size from the container, before the decoder allocates the canvas
+    WebPDemuxer* demuxer = WebPDemux(&data);
+    if (!demuxer) throw Error(path + ": not an animated WebP file libwebp can read");
+    const std::int64_t pixels = std::int64_t{WebPDemuxGetI(demuxer, WEBP_FF_CANVAS_WIDTH)} *
+                                WebPDemuxGetI(demuxer, WEBP_FF_CANVAS_HEIGHT);
+    WebPDemuxDelete(demuxer);
+    if (pixels > kMaxFramePixels) throw Error(path + ": a canvas of " + std::to_string(pixels) + " pixels, " + PixelLimitText());
     WebPAnimDecoderOptions options;
     WebPAnimDecoderOptionsInit(&options);
     options.color_mode = MODE_RGBA;
@@ -75,6 +87,11 @@ class FfmpegReader final : public AnimationReader {
     stream_ = CheckAv(av_find_best_stream(format_, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0), path, "no video in it");
     codec_.reset(avcodec_alloc_context3(codec));
     CheckAv(avcodec_parameters_to_context(codec_.get(), format_->streams[stream_]->codecpar), path, "bad stream");
+    if (std::int64_t{codec_->width} * codec_->height > kMaxFramePixels) {
+      throw Error(path + ": frames of " + std::to_string(codec_->width) + "x" + std::to_string(codec_->height) +
+                  " pixels, " + PixelLimitText());
+    }
+    codec_->max_pixels = kMaxFramePixels;   // frames that change size on the way too
     CheckAv(avcodec_open2(codec_.get(), codec, nullptr), path, "cannot open the decoder");
     packet_.reset(av_packet_alloc());
     decoded_.reset(av_frame_alloc());
