@@ -89,7 +89,11 @@ std::string AnimationDifference(const fs::path& committed, const fs::path& fresh
     const bool has_old = expected->Next(old_frame, old_end), has_new = actual->Next(new_frame, new_end);
     if (!has_old || !has_new) {
       if (has_old == has_new) return "";
-      return "frame " + std::to_string(k) + " is " + (has_old ? "no longer there" : "new");
+      // count the longer one's frames to the end
+      int old_count = k + has_old, new_count = k + has_new;
+      while (has_old && expected->Next(old_frame, old_end)) ++old_count;
+      while (has_new && actual->Next(new_frame, new_end)) ++new_count;
+      return std::to_string(old_count) + " frames, now " + std::to_string(new_count);
     }
     const std::string frame = "frame " + std::to_string(k) + ": ";
     if (old_frame.width != new_frame.width || old_frame.height != new_frame.height) {
