@@ -4,12 +4,16 @@
 // input format and bags written by the MCAP project's own writer (the test_bags fixture), depth and
 // label sequences, clamping, the one camera of --fit and turntables, --print-frame, and memory that
 // does not grow with the animation's length. Frames show a posed robot, never a blank picture.
+#include <sys/stat.h>
+
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <numbers>
 #include <regex>
 #include <sstream>
+#include <thread>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -316,6 +320,25 @@ TEST_F(AnimateTest, EveryTextFormatGivesTheFramesOfTheCsvTable) {
     }
     EXPECT_FALSE(fs::exists(Path(folder + "/9.png"))) << name;
   }
+}
+
+TEST_F(AnimateTest, TrajectoryFromAPipeAndTheExampleTrajectories) {
+  // `ros2 topic echo ... | urdfsnap animate --trajectory /dev/stdin`: a pipe is read once
+  const std::string fifo = Path("fifo");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::thread writer([&] { std::ofstream(fifo) << kMrmFormats.at("states.yaml"); });
+  Ok("animate " + mrm_ + " --trajectory /dev/stdin --fps 4" + kView + " -o " + Path("piped/%d.png") + " < " + fifo);
+  writer.join();
+  EXPECT_EQ(ReadBytes(Path("piped/8.png")), Render(mrm_ + kView + MrmJointsAt(2.0)));
+  // the README's example trajectory, as JointTrajectory YAML and as CSV: the same motion
+  const std::string examples = (kSource / "examples/trajectories/").string();
+  Ok("animate " + mrm_ + " --trajectory " + examples + "mrm_wave.yaml --fps 2" + kView + " -o " + Path("yaml/%d.png"));
+  Ok("animate " + mrm_ + " --trajectory " + examples + "mrm_wave.csv --fps 2" + kView + " -o " + Path("csv/%d.png"));
+  for (int k = 0; k <= 8; ++k) {
+    const std::string frame = "/" + std::to_string(k) + ".png";
+    EXPECT_EQ(ReadBytes(Path("yaml" + frame)), ReadBytes(Path("csv" + frame))) << k;
+  }
+  EXPECT_FALSE(fs::exists(Path("yaml/9.png")));
 }
 
 TEST_F(AnimateTest, BagsFromTheMcapWriterGiveTheRecordedMotion) {
