@@ -10,6 +10,9 @@ mrm=$root/models/mrm_description/urdf/mrm.xacro
 "$snap" render "$mrm" -o "$root/docs/images/mrm_pose.png" \
   -j base_link__link_01=0.5 -j link_01__link_02=-0.8 -j link_02__link_03=1.2 -j link_03__link_04=0.3 \
   --yaw 0.6 --pitch 0.35 --fit
+# an animation: mrm playing the example JointTrajectory, one camera fitted to every frame
+"$snap" animate "$mrm" --trajectory "$root/examples/trajectories/mrm_wave.yaml" --fit --fps 15 --size 480x360 \
+  --yaw 0.6 --pitch 0.4 --quiet -o "$root/docs/images/mrm_wave.gif"
 # the depth and link-label images beside the colour image, made viewable (they hold millimetres and
 # link numbers) by a docs-only script that needs Debian's python3-numpy and python3-pil
 for package in python3-numpy python3-pil; do

@@ -14,6 +14,7 @@
 #include "request/model_request.h"
 #include "request/render_request.h"
 #include "request/settings_parsing.h"
+#include "stream/progress_bar.h"
 
 namespace urdfsnap::cli {
 
@@ -24,6 +25,7 @@ struct DocsOptions {
   std::string output, check;
   std::vector<std::string> joint_globs;
   std::string animations;
+  bool quiet = false;
   request::RenderRequest request;   // the view and display options, filled by CLI11 directly
 };
 
@@ -57,9 +59,15 @@ void Run(DocsOptions& o) {
     options.animation_extension = o.animations == "none" ? "" : "." + o.animations;
     const docs::RobotPage page = docs::MakeRobotPage(*loaded.robot, o.request.model.path,
                                                      o.request.model.xacro_args, options, warnings);
+    // a progress bar of pictures and animation frames, on a terminal only
+    stream::ProgressBar bar(docs::PageImageCount(page, look), "images",
+                            o.quiet ? stream::ProgressBar::Display::kNever
+                                    : stream::ProgressBar::Display::kIfTerminal);
+    const docs::Progress progress = [&](std::int64_t done, std::int64_t) { bar.Update(done); };
     if (!o.check.empty()) {
       const docs::ScratchFolder fresh;
-      docs::WritePage(loaded.robot, page, look, fresh.path(), warnings, nullptr);
+      docs::WritePage(loaded.robot, page, look, fresh.path(), warnings, progress);
+      bar.Finish();
       PrintWarnings(warnings);
       if (!std::filesystem::is_directory(o.check)) {
         Report(o.check, {"no page here (" + std::string(docs::kHtmlFile) + " and the rest are missing)"});
@@ -68,7 +76,8 @@ void Run(DocsOptions& o) {
       return;
     }
     docs::PageFolder folder(o.output);
-    docs::WritePage(loaded.robot, page, look, folder.path(), warnings, nullptr);
+    docs::WritePage(loaded.robot, page, look, folder.path(), warnings, progress);
+    bar.Finish();
     PrintWarnings(warnings);
     folder.Commit();
   } catch (const CommandExit&) {
@@ -102,6 +111,7 @@ void AddDocsCommand(CLI::App& app) {
   cmd->add_option("--animations", o->animations,
                   "format of the joint sweeps and the turntable (default " + formats.front() + ")")
       ->check(CLI::IsMember(formats));
+  cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
   AddViewOptions(*cmd, o->request);
   cmd->callback([o] { Run(*o); });
 }

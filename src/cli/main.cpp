@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
   // options the subcommands do not know (--strict) are passed on to this level
   app.fallthrough();
   urdfsnap::cli::AddRenderCommand(app);
+  urdfsnap::cli::AddAnimateCommand(app);
   urdfsnap::cli::AddInfoCommand(app);
   urdfsnap::cli::AddXacroCommand(app);
   urdfsnap::cli::AddDiffCommand(app);

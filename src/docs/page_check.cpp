@@ -6,7 +6,9 @@
 
 #include "common/error.h"
 #include "common/file_reading.h"
+#include "common/number_text.h"
 #include "image/png_reader.h"
+#include "video/animation_reader.h"
 
 namespace urdfsnap::docs {
 
@@ -76,9 +78,41 @@ std::string PictureDifference(const fs::path& committed, const fs::path& fresh, 
   return image::WithinTolerance(stats, tolerance) ? "" : image::DescribeDiff(stats, tolerance);
 }
 
+// "" when the animations have the same frames, each shown as long, and every frame matches within
+// kAnimationTolerance.
+std::string AnimationDifference(const fs::path& committed, const fs::path& fresh) {
+  const auto expected = video::OpenAnimationReader(committed.string());
+  const auto actual = video::OpenAnimationReader(fresh.string());
+  image::Image old_frame, new_frame;
+  double old_end = 0, new_end = 0;
+  for (int k = 0;; ++k) {
+    const bool has_old = expected->Next(old_frame, old_end), has_new = actual->Next(new_frame, new_end);
+    if (!has_old || !has_new) {
+      if (has_old == has_new) return "";
+      // count the longer one's frames to the end
+      int old_count = k + has_old, new_count = k + has_new;
+      while (has_old && expected->Next(old_frame, old_end)) ++old_count;
+      while (has_new && actual->Next(new_frame, new_end)) ++new_count;
+      return std::to_string(old_count) + " frames, now " + std::to_string(new_count);
+    }
+    const std::string frame = "frame " + std::to_string(k) + ": ";
+    if (old_frame.width != new_frame.width || old_frame.height != new_frame.height) {
+      return frame + "size " + image::SizeText(old_frame) + ", now " + image::SizeText(new_frame);
+    }
+    if (old_end != new_end) {
+      return frame + "shown until " + FormatNumber(old_end) + " ms, now " + FormatNumber(new_end) + " ms";
+    }
+    const image::DiffStats stats = image::CompareImages(old_frame, new_frame, kAnimationTolerance.max_delta);
+    if (!image::WithinTolerance(stats, kAnimationTolerance)) {
+      return frame + image::DescribeDiff(stats, kAnimationTolerance);
+    }
+  }
+}
+
 std::string Difference(const fs::path& committed, const fs::path& fresh, const image::DiffTolerance& tolerance) {
   const std::string extension = committed.extension().string();
   if (extension == ".png") return PictureDifference(committed, fresh, tolerance);
+  if (extension == ".gif" || extension == ".webp") return AnimationDifference(committed, fresh);
   if (extension == ".md" || extension == ".html") return TextDifference(Bytes(committed), Bytes(fresh));
   return Bytes(committed) == Bytes(fresh) ? "" : "the bytes differ";
 }

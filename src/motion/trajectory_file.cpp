@@ -48,6 +48,22 @@ Trajectory ReadTrajectory(const std::string& path, const TrajectoryOptions& opti
   if (std::filesystem::is_directory(path, error)) {
     return ReadBagTrajectory(path, options.topic, warnings);  // a rosbag2 folder
   }
+  const auto read_text = [&] {
+    try {
+      return ReadFileBounded(path);
+    } catch (const FileReadError& e) {
+      throw Error(SourceLocation{path, 0}, std::string("cannot read the trajectory: ") + e.what());
+    }
+  };
+  // a pipe (`ros2 topic echo ... | urdfsnap animate --trajectory /dev/stdin`) can be read once:
+  // its text first, the format from that
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
+    const std::string text = read_text();
+    if (DetectTrajectoryFormat(path, text) == TrajectoryFormat::kBag) {
+      throw Error(path + ": a bag must be a file (urdfsnap seeks in it), not a pipe or device");
+    }
+    return ParseTrajectoryText(text, path);
+  }
   char head[256];
   std::ifstream file(path, std::ios::binary);
   file.read(head, sizeof head);
@@ -55,13 +71,7 @@ Trajectory ReadTrajectory(const std::string& path, const TrajectoryOptions& opti
   if (DetectTrajectoryFormat(path, head_text) == TrajectoryFormat::kBag) {
     return ReadBagTrajectory(path, options.topic, warnings);
   }
-  std::string text;
-  try {
-    text = ReadFileBounded(path);
-  } catch (const FileReadError& e) {
-    throw Error(SourceLocation{path, 0}, std::string("cannot read the trajectory: ") + e.what());
-  }
-  return ParseTrajectoryText(text, path);
+  return ParseTrajectoryText(read_text(), path);
 }
 
 }  // namespace urdfsnap::motion

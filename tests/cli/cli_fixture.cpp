@@ -3,6 +3,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -35,7 +36,9 @@ std::string ReadBytes(const std::string& path) {
 
 void CliTest::SetUp() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  folder_.emplace("cli_" + std::string(info->test_suite_name()) + "_" + info->name());
+  std::string name = "cli_" + std::string(info->test_suite_name()) + "_" + info->name();
+  std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests: "Formats/Test", ".../mp4"
+  folder_.emplace(name);
   dir_ = folder_->path();
 }
 

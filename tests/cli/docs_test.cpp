@@ -107,6 +107,36 @@ TEST_F(DocsTest, CheckFindsMissingExtraAndUndecodableFiles) {
   EXPECT_NE(none.output.find("no page here"), std::string::npos) << none.output;
 }
 
+TEST_F(DocsTest, CheckComparesAnimationsByTheirFrames) {
+  for (const std::string format : {"gif", "webp"}) {
+    const std::string page = Path("page_" + format), options = " --animations " + format;
+    ASSERT_EQ(RunUrdfsnap("docs " + model_ + options + " -o " + page).status, 0);
+    const std::string sweep = page + "/joints/link_01__link_02/sweep." + format;
+    const std::string turntable = page + "/images/turntable." + format;
+    ASSERT_TRUE(fs::exists(sweep) && fs::exists(turntable)) << format;
+    // rendered on a CPU without AVX, the GIFs' dithering differs in bytes but not in substance
+    const std::string other_cpu = Path("other_cpu_" + format);
+    ASSERT_EQ(RunUrdfsnap("docs " + model_ + options + " -o " + other_cpu, "GALLIUM_OVERRIDE_CPU_CAPS=sse2").status, 0);
+    if (format == "gif") {
+      EXPECT_NE(ReadBytes(other_cpu + "/images/turntable.gif"), ReadBytes(turntable)) << "no difference to tolerate";
+    }
+    const Result same = RunUrdfsnap("docs " + model_ + options + " --check " + other_cpu);
+    EXPECT_EQ(same.status, 0) << same.output;
+    // another joint's sweep in its place, and a turntable cut short, are stale
+    fs::copy_file(page + "/joints/link_02__link_03/sweep." + format, sweep, fs::copy_options::overwrite_existing);
+    const std::string bytes = ReadBytes(turntable);
+    Write(turntable.substr(dir_.string().size() + 1), bytes.substr(0, bytes.size() / 2));
+    const Result stale = RunUrdfsnap("docs " + model_ + options + " --check " + page);
+    EXPECT_EQ(stale.status, 1) << stale.output;
+    EXPECT_NE(stale.output.find("  joints/link_01__link_02/sweep." + format + ": frame "), std::string::npos)
+        << stale.output;
+    EXPECT_NE(stale.output.find("  images/turntable." + format + ": "), std::string::npos) << stale.output;
+    // a cut GIF holds its first frames; a cut WebP does not read at all
+    const std::string cut = format == "gif" ? " frames, now 48\n" : "not an animated WebP file";
+    EXPECT_NE(stale.output.find(cut), std::string::npos) << stale.output;
+  }
+}
+
 TEST_F(DocsTest, ReplacesAnOlderPageAsAWhole) {
   URDFSNAP_REQUIRE_GL();
   ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);

@@ -27,7 +27,8 @@ struct HostileCase {
   std::string name;
   // files written into the case's folder first: name and bytes
   std::vector<std::pair<std::string, std::string>> files;
-  // the command line after "urdfsnap"; {dir} is the case's folder, {out} its output file
+  // the command line after "urdfsnap"; {dir} is the case's folder, {out} its output file, {clip}
+  // an existing animation (clip.mp4) and {bags} the test bags' folder
   std::string arguments;
   // text the error message must contain (the culprit: a file:line, name, value or option)
   std::string culprit;
@@ -158,6 +159,7 @@ std::string PngClaiming(std::uint32_t width, std::uint32_t height) {
 const std::string kMesh = "<mesh filename=\"mesh.stl\"/>";
 const std::string kModel = "{dir}/robot.urdf";
 const std::string kRender = "render " + kModel + " -o {out} ";
+const std::string kAnimate = "animate " + kModel + " -o {clip} ";
 const std::string kGoodRobot = TwoLinks(
     "<joint name=\"elbow\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
     "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>");
@@ -170,6 +172,10 @@ std::vector<HostileCase> Cases() {
     return std::vector<std::pair<std::string, std::string>>{{"robot.xacro", text}};
   };
   const std::string render_xacro = "render {dir}/robot.xacro -o {out}";
+  // the good robot and a trajectory file
+  const auto plan = [](const std::string& name, const std::string& text) {
+    return std::vector<std::pair<std::string, std::string>>{{"robot.urdf", kGoodRobot}, {name, text}};
+  };
   const auto mesh = [&](const std::string& bytes) {
     return std::vector<std::pair<std::string, std::string>>{{"robot.urdf", OneShape(kMesh)},
                                                             {"mesh.stl", bytes}};
@@ -370,6 +376,103 @@ std::vector<HostileCase> Cases() {
        "cannot write to standard output"},
       {"xacro_output_under_a_file", xacro(Xacro("<link name=\"a\"/>")),
        "xacro {dir}/robot.xacro -o {dir}/robot.xacro/out.urdf", "cannot write: Not a directory"},
+      // animate: trajectories ({bags}: the test bags of the MCAP project's writer), options, outputs
+      {"anim_times_not_increasing", plan("plan.csv", "time,elbow\n0,0\n1,0.5\n1,0.2\n"),
+       kAnimate + "--trajectory {dir}/plan.csv", "plan.csv:4"},
+      {"anim_unknown_joint", plan("plan.csv", "time,elbw\n0,0\n1,1\n"), kAnimate + "--trajectory {dir}/plan.csv",
+       "plan.csv:1: robot 'r' has no joint 'elbw'"},
+      {"anim_nan_position", plan("plan.csv", "time,elbow\n0,0\n1,nan\n"), kAnimate + "--trajectory {dir}/plan.csv",
+       "plan.csv:3"},
+      {"anim_infinite_time", plan("plan.csv", "time,elbow\n0,0\ninf,1\n"), kAnimate + "--trajectory {dir}/plan.csv",
+       "plan.csv:3"},
+      {"anim_empty_table", plan("plan.csv", "time,elbow\n"), kAnimate + "--trajectory {dir}/plan.csv", "plan.csv"},
+      {"anim_empty_yaml", plan("plan.yaml", ""), kAnimate + "--trajectory {dir}/plan.yaml", "plan.yaml"},
+      {"anim_garbage_trajectory", plan("plan.yaml", Bytes(3000, 5)), kAnimate + "--trajectory {dir}/plan.yaml",
+       "plan.yaml"},
+      {"anim_trajectory_time_goes_back",
+       plan("plan.yaml", "joint_names: [elbow]\npoints:\n- {positions: [0], time_from_start: 1}\n"
+                         "- {positions: [1], time_from_start: 0.5}\n"),
+       kAnimate + "--trajectory {dir}/plan.yaml", "plan.yaml:4"},
+      {"anim_joint_states_nan",
+       plan("states.yaml", "header: {stamp: {sec: 1, nanosec: 0}}\nname: [elbow]\nposition: [0]\n---\n"
+                           "header: {stamp: {sec: 2, nanosec: 0}}\nname: [elbow]\nposition: [.nan]\n"),
+       kAnimate + "--trajectory {dir}/states.yaml", "states.yaml:"},
+      {"anim_trajectory_missing", robot(kGoodRobot), kAnimate + "--trajectory {dir}/nothing.csv", "nothing.csv"},
+      {"anim_trajectory_endless", robot(kGoodRobot), kAnimate + "--trajectory /dev/zero", "/dev/zero"},
+      {"anim_bag_without_the_topic", robot(kGoodRobot), kAnimate + "--trajectory {bags}/no_joint_states.mcap",
+       "no_joint_states.mcap"},
+      {"anim_bag_other_topic", robot(kGoodRobot), kAnimate + "--trajectory {bags}/joint_states_zstd.mcap --topic /arm",
+       "'/arm'"},
+      {"anim_bag_wrong_type", robot(kGoodRobot), kAnimate + "--trajectory {bags}/wrong_type.mcap", "wrong_type.mcap"},
+      {"anim_bag_no_messages", robot(kGoodRobot), kAnimate + "--trajectory {bags}/no_messages.mcap", "no_messages.mcap"},
+      {"anim_bag_nan_position", robot(kGoodRobot), kAnimate + "--trajectory {bags}/nan_position.mcap",
+       "nan_position.mcap: message 8"},
+      {"anim_bag_time_goes_back", robot(kGoodRobot), kAnimate + "--trajectory {bags}/time_goes_back.mcap",
+       "time_goes_back.mcap: message 6"},
+      {"anim_bag_length_mismatch", robot(kGoodRobot), kAnimate + "--trajectory {bags}/length_mismatch.mcap",
+       "length_mismatch.mcap: message 4"},
+      {"anim_bag_garbage_message", robot(kGoodRobot), kAnimate + "--trajectory {bags}/garbage_message.mcap",
+       "garbage_message.mcap"},
+      {"anim_bag_joints_not_in_robot", robot(kGoodRobot), kAnimate + "--trajectory {bags}/joint_states_lz4.mcap",
+       "no joint 'shoulder'"},
+      {"anim_bag_corrupt_truncated_half", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_truncated_half.mcap",
+       "corrupt_truncated_half.mcap"},
+      {"anim_bag_corrupt_truncated_header", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_truncated_header.mcap",
+       "corrupt_truncated_header.mcap"},
+      {"anim_bag_corrupt_cut_without_end", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_cut_without_end.mcap",
+       "corrupt_cut_without_end.mcap"},
+      {"anim_bag_corrupt_zstd_data", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_zstd_data.mcap",
+       "corrupt_zstd_data.mcap"},
+      {"anim_bag_corrupt_lz4_data", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_lz4_data.mcap",
+       "corrupt_lz4_data.mcap"},
+      {"anim_bag_corrupt_crc", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_crc.mcap",
+       "corrupt_crc.mcap"},
+      {"anim_bag_corrupt_huge_chunk", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_huge_chunk.mcap",
+       "corrupt_huge_chunk.mcap"},
+      {"anim_bag_corrupt_huge_record", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_huge_record.mcap",
+       "corrupt_huge_record.mcap"},
+      {"anim_bag_corrupt_unknown_compression", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_unknown_compression.mcap",
+       "corrupt_unknown_compression.mcap"},
+      {"anim_bag_corrupt_no_header", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_no_header.mcap",
+       "corrupt_no_header.mcap"},
+      {"anim_bag_corrupt_not_mcap", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_not_mcap.mcap",
+       "corrupt_not_mcap.mcap"},
+      {"anim_bag_corrupt_empty", robot(kGoodRobot), kAnimate + "--trajectory {bags}/corrupt_empty.mcap",
+       "corrupt_empty.mcap"},
+      {"anim_nothing_moves", robot(kGoodRobot), kAnimate, "nothing moves"},
+      {"anim_speed_without_trajectory", robot(kGoodRobot), kAnimate + "--turntable --speed 2", "--speed"},
+      {"anim_unknown_output", robot(kGoodRobot), "animate " + kModel + " --turntable -o {dir}/clip.avi", "clip.avi"},
+      {"anim_png_without_number", robot(kGoodRobot), "animate " + kModel + " --turntable -o {dir}/clip.png",
+       "clip.png"},
+      {"anim_output_unwritable", robot(kGoodRobot), "animate " + kModel + " --turntable -o /proc/clip.mp4",
+       "/proc/clip.mp4"},
+      {"anim_output_under_a_file", robot(kGoodRobot), "animate " + kModel + " --turntable -o {dir}/robot.urdf/c.mp4",
+       "robot.urdf"},
+      {"anim_frames_under_a_file", robot(kGoodRobot),
+       "animate " + kModel + " --turntable -o {dir}/robot.urdf/%05d.png", "robot.urdf"},
+      {"anim_odd_size_mp4", robot(kGoodRobot), kAnimate + "--turntable --size 321x240", "321x240"},
+      {"anim_depth_without_number", robot(kGoodRobot), kAnimate + "--turntable --depth {dir}/d.png", "--depth"},
+      {"anim_depth_jpeg", robot(kGoodRobot), kAnimate + "--turntable --depth {dir}/d/%d.jpg", "--depth"},
+      {"anim_labels_npy", robot(kGoodRobot), kAnimate + "--turntable --labels {dir}/l/%d.npy", "--labels"},
+      {"anim_strict_clamp", plan("plan.csv", "time,elbow\n0,0\n1,5\n"),
+       kAnimate + "--trajectory {dir}/plan.csv --strict", "joint 'elbow'"},
+      {"anim_print_frame_negative", robot(kGoodRobot), "animate " + kModel + " --turntable --print-frame -1",
+       "--print-frame"},
+      {"anim_too_many_frames", robot(kGoodRobot), kAnimate + "--turntable --fps 1000 --duration 1e5", "frames"},
+      {"anim_fps_0", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --fps 0", "frame rate"},
+      {"anim_fps_minus_1", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --fps -1", "frame rate"},
+      {"anim_fps_nan", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --fps nan", "--fps"},
+      {"anim_fps_inf", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --fps inf", "--fps"},
+      {"anim_fps_abc", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --fps abc", "--fps"},
+      {"anim_fps_1e9", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --fps 1e9", "frame rate"},
+      {"anim_speed_0", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--trajectory {dir}/plan.csv --speed 0", "speed"},
+      {"anim_speed_minus_2", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--trajectory {dir}/plan.csv --speed -2", "speed"},
+      {"anim_speed_nan", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--trajectory {dir}/plan.csv --speed nan", "--speed"},
+      {"anim_speed_inf", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--trajectory {dir}/plan.csv --speed inf", "--speed"},
+      {"anim_duration_0", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --duration 0", "duration"},
+      {"anim_duration_minus_1", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --duration -1", "duration"},
+      {"anim_duration_nan", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --duration nan", "--duration"},
+      {"anim_duration_inf", plan("plan.csv", "time,elbow\n0,0\n1,1\n"), kAnimate + "--turntable --duration inf", "--duration"},
   };
 }
 
@@ -411,14 +514,17 @@ TEST_P(HostileInputTest, EndsWithOneLocatedErrorAndLeavesTheOutputAlone) {
   const urdfsnap::test::TempFolder folder("hostile_" + c.name);
   const fs::path& dir = folder.path();
   for (const auto& [name, bytes] : c.files) std::ofstream(dir / name, std::ios::binary) << bytes;
-  const fs::path out = dir / "out.png";
+  const fs::path out = dir / "out.png", clip = dir / "clip.mp4";
   const std::string precious = "an image the user cares about";
   std::ofstream(out, std::ios::binary) << precious;
+  std::ofstream(clip, std::ios::binary) << precious;
   const std::set<std::string> before = Listing(dir);
 
   const bool asan = urdfsnap::test::BuiltWithAddressSanitizer();
   const std::string arguments =
-      Replace(Replace(c.arguments, "{out}", out.string()), "{dir}", dir.string());
+      Replace(Replace(Replace(Replace(c.arguments, "{out}", out.string()), "{clip}", clip.string()), "{dir}",
+                      dir.string()),
+              "{bags}", std::string(URDFSNAP_BINARY_DIR) + "/test-bags");
   const auto run = urdfsnap::test::RunUrdfsnap(arguments, 60, asan ? 0 : 2048);
 
   EXPECT_FALSE(run.timed_out) << "still running after 60 s: urdfsnap " << arguments;
@@ -431,6 +537,7 @@ TEST_P(HostileInputTest, EndsWithOneLocatedErrorAndLeavesTheOutputAlone) {
     EXPECT_LT(run.peak_rss_kb, 1536 * 1024) << "peak memory";
   }
   EXPECT_EQ(ReadAll(out), precious);
+  EXPECT_EQ(ReadAll(clip), precious);
   EXPECT_EQ(Listing(dir), before) << "a file appeared or disappeared";
 }
 

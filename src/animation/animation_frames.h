@@ -1,0 +1,55 @@
+// What each frame of an animation shows: the robot's joint positions (a trajectory sampled at the
+// frame's time through motion::FramePoses) and the camera, one for the whole animation so that the
+// view never jumps: --fit fitted once over every frame, a turntable's yaw turned once around.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "common/warnings.h"
+#include "motion/frame_plan.h"
+#include "motion/frame_poses.h"
+#include "render/render_settings.h"
+#include "render/robot_renderer.h"
+#include "scene/orbit_view.h"
+
+namespace urdfsnap::animation {
+
+// The camera an animation asks for, before fitting.
+struct CameraRequest {
+  scene::OrbitView view;  // the view of frame 0 (before --fit)
+  render::ImageSize size;
+  render::Fit fit = render::Fit::kNone;
+  bool turntable = false;  // the yaw turns once around over the animation
+};
+
+class AnimationFrames {
+ public:
+  // Fits the camera for `robot` over every frame of `plan` (kept by reference, as `poses` is). With
+  // --fit the focal point is the centre of the bounds of all frames (or the given one) and the
+  // distance the least that frames every frame; a fitted turntable takes the least distance that
+  // frames each frame from its own yaw. Poses are made as they are needed and not kept, so fitting
+  // takes time in proportion to the frame count and no memory for it (two poses per frame, four
+  // for a fitted turntable). Warnings of the poses (see FramePoses::At) go to `warnings`.
+  AnimationFrames(const render::RobotRenderer& robot, const motion::FramePlan& plan,
+                  const motion::FramePoses& poses, const CameraRequest& camera, Warnings& warnings);
+
+  std::int64_t count() const { return plan_.frame_count; }
+  const motion::FramePlan& plan() const { return plan_; }
+  render::ImageSize size() const { return size_; }
+
+  // The joint positions of frame `k` (one per robot joint, radians or metres, as
+  // model::ResolveJointPositions gives them).
+  std::vector<double> Positions(std::int64_t k, Warnings& warnings) const;
+  // The camera of frame `k`.
+  scene::OrbitView View(std::int64_t k) const;
+
+ private:
+  const motion::FramePlan& plan_;
+  const motion::FramePoses& poses_;
+  render::ImageSize size_;
+  bool turntable_;
+  scene::OrbitView view_;  // frame 0's, fitted
+};
+
+}  // namespace urdfsnap::animation

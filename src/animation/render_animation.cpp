@@ -1,0 +1,32 @@
+// RenderAnimation: RunPipeline with image::Frame items (colour, and depth and labels when asked).
+#include "animation/render_animation.h"
+
+#include "animation/sequence_outputs.h"
+#include "stream/pipeline.h"
+
+namespace urdfsnap::animation {
+
+void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const AnimationFrames& frames,
+                     FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
+                     Warnings& warnings, std::size_t depth) {
+  const image::FrameOutputs wanted{true, outputs.depth != nullptr, outputs.labels != nullptr};
+  const auto render = [&](std::int64_t i, image::Frame& frame) {
+    const std::int64_t k = range.first + i;
+    frame = robot.Render(gl, frames.Positions(k, warnings), frames.View(k), frames.size(), wanted);
+  };
+  const auto write = [&](std::int64_t i, const image::Frame& frame) {
+    outputs.colour->Write(frame.colour);
+    if (outputs.depth) {
+      outputs.depth->Write(DepthFileBytes(frame.depth, outputs.depth->pattern().pattern()));
+    }
+    if (outputs.labels) outputs.labels->Write(LabelFileBytes(frame.labels));
+    if (progress) progress->Update(i + 1);
+  };
+  stream::RunPipeline<image::Frame>(range.last - range.first, depth, render, write);
+  outputs.colour->Finish();
+  if (outputs.depth) outputs.depth->Finish();
+  if (outputs.labels) outputs.labels->Finish();
+  if (progress) progress->Finish();
+}
+
+}  // namespace urdfsnap::animation

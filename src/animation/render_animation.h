@@ -1,0 +1,43 @@
+// The render/encode loop of an animation: frame k rendered on the calling thread (which owns the
+// GL context) while the frames before it are encoded and written on a worker thread
+// (stream::RunPipeline), into the colour encoder and the depth and label sequences at once. Memory
+// holds a few frames whatever the animation's length.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "animation/animation_frames.h"
+#include "common/warnings.h"
+#include "gl/renderer.h"
+#include "render/robot_renderer.h"
+#include "stream/progress_bar.h"
+#include "video/frame_encoder.h"
+#include "video/frame_files.h"
+
+namespace urdfsnap::animation {
+
+// Frames first, first + 1, ..., last - 1 of an animation.
+struct FrameRange {
+  std::int64_t first = 0;
+  std::int64_t last = 0;
+};
+
+// Where the frames go; depth and labels are optional.
+struct AnimationOutputs {
+  video::FrameEncoder* colour = nullptr;  // required
+  video::FrameFiles* depth = nullptr;     // numbered depth files (.png millimetres or .npy metres)
+  video::FrameFiles* labels = nullptr;    // numbered link-label files (.png)
+};
+
+// Renders the frames of `range` of `frames` with `robot` through `gl` and writes them, in order, to
+// every output; then finishes each output (moving it into place) and `progress`, if given, which
+// counts the range's frames as they are written. At most `depth` rendered frames wait for the
+// writer. Warnings of the poses go to `warnings` (touched on the calling thread only). The first
+// error on either thread stops both and is rethrown; the outputs are then left unfinished, so that
+// their destruction removes what they wrote.
+void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const AnimationFrames& frames,
+                     FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
+                     Warnings& warnings, std::size_t depth = 4);
+
+}  // namespace urdfsnap::animation
