@@ -3,6 +3,7 @@
 #include <pthread.h>
 #include <signal.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <ctime>
@@ -88,8 +89,11 @@ void Run(ServeOptions& o) {
 
   std::jthread signal_waiter([&](std::stop_token stop) {
     const timespec tick{0, 200'000'000};
+    bool signalled = false;  // a signal may come before Run() serves: stop it once it does
     while (!stop.stop_requested()) {
-      if (sigtimedwait(&stop_signals, nullptr, &tick) > 0) return server->Stop();
+      if (signalled && server->Stop()) return;
+      if (signalled) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      else signalled = sigtimedwait(&stop_signals, nullptr, &tick) > 0;
     }
   });
   server->Run();

@@ -246,6 +246,10 @@ void Server::Run() {
   s.http.listen_after_bind();
 }
 
-void Server::Stop() { impl_->http.stop(); }
+bool Server::Stop() {
+  if (!impl_->http.is_running()) return false;
+  impl_->http.stop();
+  return true;
+}
 
 }  // namespace urdfsnap::serve

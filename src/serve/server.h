@@ -51,8 +51,10 @@ class Server {
   int Bind();
   // Serves until Stop(); watches the model's files meanwhile.
   void Run();
-  // Ends Run(): no new connections; requests being answered finish. Thread-safe.
-  void Stop();
+  // Ends Run() (no new connections; requests being answered finish; thread-safe) and returns true
+  // once Run() is serving; before that it does nothing and returns
+  // false (cpp-httplib ignores a stop that comes before its accept loop), so call it until true.
+  bool Stop();
 
  private:
   struct Impl;
