@@ -19,6 +19,7 @@ if(URDFSNAP_MAN_PAGES)
   set(urdfsnap_man_pages
     "urdfsnap||RViz-like images of URDF/xacro robots, headless"
     "urdfsnap-render|render|render a robot pose to a PNG image, as RViz shows it"
+    "urdfsnap-animate|animate|render a trajectory, a bag or a turntable to a video, GIF, WebP or PNG frames"
     "urdfsnap-info|info|print a robot's links, joints and tree"
     "urdfsnap-xacro|xacro|expand a xacro file to URDF"
     "urdfsnap-diff|diff|compare two PNG images with a tolerance"

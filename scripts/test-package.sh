@@ -13,7 +13,7 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "test-package.sh: $*" >&2; exit 1; }
 
 deb=$("$root/scripts/package.sh" --build-dir "$build" --out "$work")
-version=$("$build/urdfsnap" --version | awk '{print $2}')
+version=$("$build/urdfsnap" --version | awk 'NR == 1 {print $2}')
 arch=$(dpkg --print-architecture)
 [ "$(basename "$deb")" = "urdfsnap_${version}_${arch}.deb" ] || fail "package named $(basename "$deb")"
 
@@ -59,7 +59,7 @@ done
 for page in "$work"/root/usr/share/man/man1/*.gz; do gzip -t "$page"; done
 
 # the unpacked binary renders the reference robot as the goldens were made
-[ "$("$binary" --version)" = "urdfsnap $version" ] || fail "--version: $("$binary" --version)"
+[ "$("$binary" --version | head -n 1)" = "urdfsnap $version" ] || fail "--version: $("$binary" --version)"
 "$binary" render "$root/models/mrm_description/urdf/mrm.urdf" -o "$work/mrm.png"
 "$binary" diff "$root/tests/golden/mrm_zero.png" "$work/mrm.png" >/dev/null ||
   fail "the packaged binary's render of mrm differs from tests/golden/mrm_zero.png"

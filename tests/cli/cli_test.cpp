@@ -123,17 +123,17 @@ TEST_F(CliTest, UnknownOrMissingCommandsAreNamed) {
     if (line.rfind("Subcommands:", 0) == 0) listing = true;
     else if (listing && line.rfind("  ", 0) == 0) list += (list.empty() ? "" : ", ") + line.substr(2, line.find(' ', 2) - 2);
   }
-  ASSERT_EQ(list.rfind("render, info, xacro, diff, snapshot", 0), 0u) << list;
+  ASSERT_EQ(list.rfind("render, animate, info, xacro, diff, snapshot", 0), 0u) << list;
   const std::string commands = "(commands: " + list + ")";
   const std::pair<std::string, std::string> cases[] = {
       {"frobnicate", "urdfsnap: error: unknown command 'frobnicate' " + commands},
       {"--strict frobnicate x.urdf", "urdfsnap: error: unknown command 'frobnicate' " + commands},
       {"rendr x.urdf", "urdfsnap: error: unknown command 'rendr' (did you mean 'render'? commands: " + list + ")"},
-      {"snapshot frob", "urdfsnap: error: unknown snapshot command 'frob' (commands: check, update)"},
+      {"snapshot frob", "urdfsnap: error: unknown snapshot command 'frob' (commands: check, update, merge)"},
       {"snapshot chek suite.yaml",
-       "urdfsnap: error: unknown snapshot command 'chek' (did you mean 'check'? commands: check, update)"},
+       "urdfsnap: error: unknown snapshot command 'chek' (did you mean 'check'? commands: check, update, merge)"},
       {"", "urdfsnap: error: no command given (commands: " + list + "; see 'urdfsnap --help')"},
-      {"snapshot", "urdfsnap: error: no snapshot command given (commands: check, update; see 'urdfsnap --help')"},
+      {"snapshot", "urdfsnap: error: no snapshot command given (commands: check, update, merge; see 'urdfsnap --help')"},
       {"-x", "urdfsnap: error: unknown option '-x' and no command " + commands},
   };
   for (const auto& [arguments, message] : cases) {

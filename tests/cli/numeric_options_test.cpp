@@ -91,7 +91,16 @@ const std::vector<CommandOption>& Options() {
         {"snapshot check", "--report", Kind::kText},
         {"snapshot check", "--junit", Kind::kText},
         {"snapshot update", "--help", Kind::kFlag},
+        {"snapshot check", "--shard", Kind::kText},
+        {"snapshot check", "--no-shard", Kind::kFlag},
+        {"snapshot check", "--results", Kind::kText},
         {"snapshot update", "--force", Kind::kFlag},
+        {"snapshot update", "--shard", Kind::kText},
+        {"snapshot update", "--no-shard", Kind::kFlag},
+        {"snapshot merge", "--help", Kind::kFlag},
+        {"snapshot merge", "--report", Kind::kText},
+        {"snapshot merge", "--junit", Kind::kText},
+        {"snapshot merge", "--results", Kind::kText},
         // serve refuses its bad options before it listens (a port of 0 in case it did not)
         {"serve", "--port", Kind::kNumber, "MRM --port {v}"},
         {"serve", "--bind", Kind::kText},
@@ -99,9 +108,22 @@ const std::vector<CommandOption>& Options() {
         {"docs", "--output", Kind::kText},
         {"docs", "--check", Kind::kText},
         {"docs", "--animations", Kind::kText},
+        {"docs", "--quiet", Kind::kFlag},
+        {"animate", "--output", Kind::kText},
+        {"animate", "--trajectory", Kind::kText},
+        {"animate", "--topic", Kind::kText},
+        {"animate", "--fps", Kind::kNumber, "MRM -o OUT.gif --turntable --fps {v}"},
+        {"animate", "--speed", Kind::kNumber, "MRM -o OUT.gif --turntable --speed {v}"},
+        {"animate", "--duration", Kind::kNumber, "MRM -o OUT.gif --turntable --duration {v}"},
+        {"animate", "--print-frame", Kind::kNumber, "MRM -o OUT.gif --turntable --print-frame {v}"},
+        {"animate", "--turntable", Kind::kFlag},
+        {"animate", "--depth", Kind::kText},
+        {"animate", "--labels", Kind::kText},
+        {"animate", "--quiet", Kind::kFlag},
     };
     AddViewOptions(o, "render", "MRM -o OUT");
     AddViewOptions(o, "serve", "MRM --port 0");
+    AddViewOptions(o, "animate", "MRM -o OUT.gif --turntable");
     AddViewOptions(o, "docs", "MRM -o OUT", false);  // its --joints are globs, text
     return o;
   }();
@@ -244,6 +266,7 @@ TEST(NumericOptions, RefuseNanAndInfinitiesNamingTheOption) {
       EXPECT_NE(run.err.find(o.option), std::string::npos) << "the error does not name " << o.option << ":\n" << run.err;
       EXPECT_NE(run.err.find(value), std::string::npos) << "the error does not quote '" << value << "':\n" << run.err;
       EXPECT_FALSE(fs::exists(out)) << arguments;
+      EXPECT_FALSE(fs::exists(out + ".gif")) << arguments;  // animate's
     }
   }
 }
