@@ -26,10 +26,20 @@ struct Descriptor {
   ~Descriptor() { ::close(fd); }
 };
 
+// Standard input's names are read from this process's descriptor 0 itself: opening the name again
+// opens a pipe anew, which waits for a writer forever when the one feeding it has already finished
+// (`cat states.yaml | urdfsnap animate --trajectory /dev/stdin`).
+int OpenForReading(const std::string& path) {
+  if (path == "/dev/stdin" || path == "/dev/fd/0" || path == "/proc/self/fd/0") {
+    return ::fcntl(STDIN_FILENO, F_DUPFD_CLOEXEC, 0);
+  }
+  return ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+}
+
 }  // namespace
 
 std::string ReadFileBounded(const std::string& path, std::size_t max_bytes) {
-  const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  const Descriptor file{OpenForReading(path)};
   if (file.fd < 0) ThrowSystemError(errno);
   // a regular file says how large it is: refuse it unread, or read it in one go (one byte more,
   // to see the end); anything else grows in chunks
