@@ -13,6 +13,7 @@
 #include "animation/sequence_outputs.h"
 #include "bag/joint_state_bag.h"
 #include "cli/command.h"
+#include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "common/atomic_file.h"
@@ -48,6 +49,7 @@ struct AnimateOptions {
   std::string print_frame;    // a frame number: print its render options instead of writing
   bool quiet = false;
   RenderOptions render;
+  GlOptions gl_options;
 };
 
 std::optional<double> OptionalNumber(const std::string& text, const std::string& option) {
@@ -92,7 +94,8 @@ void PrintNewWarnings(const Warnings& printed, const Warnings& later) {
 }
 
 void Run(AnimateOptions& o) {
-  const auto gl_loading = gl::StartLoadingGl();  // overlaps loading Mesa with reading the model
+  const gl::BackendChoice backend = o.gl_options.Choice();
+  const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
   request::RenderRequest& r = o.render.request;
   r.model = o.model.ToRequest();
   o.render.ParseJointWords();
@@ -157,7 +160,7 @@ void Run(AnimateOptions& o) {
     }
     PrintWarnings(warnings);   // --strict ends here, before any frame
 
-    gl::Renderer gl(settings.samples);
+    gl::Renderer gl(settings.samples, backend);
     stream::ProgressBar bar(plan.frame_count, "frames",
                             o.quiet ? stream::ProgressBar::Display::kNever
                                     : stream::ProgressBar::Display::kIfTerminal);
@@ -212,6 +215,7 @@ void AddAnimateCommand(CLI::App& app) {
                   "options, without --fit) draw frame K byte for byte: the view and every joint");
   cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
   o->render.AddOptions(*cmd);
+  o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
 }
 

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/view_options.h"
 #include "common/error.h"
@@ -27,6 +28,7 @@ struct DocsOptions {
   std::string animations;
   bool quiet = false;
   request::RenderRequest request;   // the view and display options, filled by CLI11 directly
+  GlOptions gl_options;
 };
 
 // Prints what --check found and ends with status 1 when the page is stale.
@@ -41,7 +43,8 @@ void Report(const std::string& folder, const std::vector<std::string>& differenc
 }
 
 void Run(DocsOptions& o) {
-  const auto gl_loading = gl::StartLoadingGl();   // overlaps loading Mesa with reading the model
+  const gl::BackendChoice backend = o.gl_options.Choice();
+  const auto gl_loading = gl::StartLoadingGl(backend.backend);   // overlaps loading Mesa with reading the model
   if (o.output.empty() == o.check.empty()) {
     throw Error("docs: give -o DIR to write a page, or --check DIR to compare a committed page with a fresh one");
   }
@@ -50,6 +53,7 @@ void Run(DocsOptions& o) {
   try {
     const request::LoadedModel loaded = request::LoadModel(o.request.model, warnings);
     docs::PageLook look;
+    look.backend = backend;
     look.settings = request::ParseRenderSettings(
         o.request, [](std::string_view name) { return "--" + std::string(name); }, warnings);
     docs::PageOptions options;
@@ -113,6 +117,7 @@ void AddDocsCommand(CLI::App& app) {
       ->check(CLI::IsMember(formats));
   cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
   AddViewOptions(*cmd, o->request);
+  o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "image/png_writer.h"
@@ -20,6 +21,7 @@ struct RenderCommandOptions {
   std::string output;
   std::string depth, labels;  // optional depth and link-label image files
   RenderOptions render;
+  GlOptions gl_options;
 };
 
 std::string DefaultOutput(const std::string& model_path) {
@@ -29,13 +31,14 @@ std::string DefaultOutput(const std::string& model_path) {
 }
 
 void Run(RenderCommandOptions& o) {
-  const auto gl_loading = gl::StartLoadingGl();  // overlaps loading Mesa with reading the model
+  const gl::BackendChoice backend = o.gl_options.Choice();
+  const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
   o.render.request.model = o.model.ToRequest();
   o.render.ParseJointWords();
   if (!o.depth.empty()) render::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) render::CheckLabelsPath(o.labels, "--labels");
   Warnings warnings;
-  request::RenderSession session;
+  request::RenderSession session(backend);
   image::Frame frame;
   std::shared_ptr<const model::Robot> robot;
   try {
@@ -71,6 +74,7 @@ void AddRenderCommand(CLI::App& app) {
                   "nearest at each pixel, in `info`'s link order, 0 off the robot) and FILE.json "
                   "(value -> link name) (default: none)");
   o->render.AddOptions(*cmd);
+  o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
 }
 

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "cli/command.h"
+#include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "common/error.h"
@@ -25,6 +26,7 @@ namespace {
 struct ServeOptions {
   ModelSource model;
   RenderOptions render;
+  GlOptions gl_options;
   std::string bind = "127.0.0.1";
   int port = 8765;
   std::string max_size = "4096x4096";
@@ -60,8 +62,9 @@ void LogReload(const serve::ModelState& state, const std::string& model) {
 void Run(ServeOptions& o) {
   const sigset_t stop_signals = BlockStopSignals();
   std::signal(SIGPIPE, SIG_IGN);  // a client that goes away mid-response is not our end
-  const auto gl_loading = gl::StartLoadingGl();
   serve::ServerOptions options;
+  options.backend = o.gl_options.Choice();
+  const auto gl_loading = gl::StartLoadingGl(options.backend.backend);
   options.base = o.render.request;
   options.base.model = o.model.ToRequest();
   o.render.ParseJointWords();
@@ -114,6 +117,7 @@ void AddServeCommand(CLI::App& app) {
                   "lets anyone who can reach it see the model)");
   cmd->add_option("--max-size", o->max_size, "largest image a request may ask for (default 4096x4096)");
   o->render.AddOptions(*cmd);
+  o->gl_options.AddOptions(*cmd);
   cmd->footer(
       "\nThe options after MODEL set the page's initial view and pose. Over SSH:\n"
       "  ssh -L 8765:127.0.0.1:8765 HOST urdfsnap serve MODEL   then open http://localhost:8765/\n"

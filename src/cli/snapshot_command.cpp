@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "cli/gl_options.h"
 #include "cli/shard_options.h"
 #include "common/error.h"
 #include "common/version.h"
@@ -31,6 +32,7 @@ struct SnapshotOptions {
   std::vector<std::string> case_names;     // update
   bool force = false;                      // update
   ShardOptions sharding;
+  GlOptions gl_options;
 };
 
 // The suite format in a few lines, with the option keys taken from the table `render` uses.
@@ -84,8 +86,9 @@ void WriteOutputs(const SnapshotOptions& o, const Selection& s,
 void Check(const SnapshotOptions& o) {
   const Selection s = Select(o, {});
   if (!o.report_dir.empty()) std::filesystem::create_directories(o.report_dir);
-  const auto gl_loading = gl::StartLoadingGl();  // overlaps Mesa with the first model
-  request::RenderSession session;
+  const gl::BackendChoice backend = o.gl_options.Choice();
+  const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps Mesa with the first model
+  request::RenderSession session(backend);
   Warnings warnings;
   std::vector<snapshot::CaseRecord> records;
   records.reserve(s.cases.size());
@@ -111,8 +114,9 @@ void Check(const SnapshotOptions& o) {
 
 void Update(const SnapshotOptions& o) {
   const Selection s = Select(o, o.case_names);
-  const auto gl_loading = gl::StartLoadingGl();
-  request::RenderSession session;
+  const gl::BackendChoice backend = o.gl_options.Choice();
+  const auto gl_loading = gl::StartLoadingGl(backend.backend);
+  request::RenderSession session(backend);
   Warnings warnings;
   std::vector<snapshot::CaseRecord> records;
   int written = 0;
@@ -158,6 +162,7 @@ void AddSnapshotCommand(CLI::App& app) {
                     "write every case's verdict and figures as JSON to this file, for "
                     "`snapshot merge` (format: docs/snapshot-results.md)");
   o->sharding.AddOptions(*check, "cases");
+  o->gl_options.AddOptions(*check);
   check->callback([o] { Check(*o); });
   CLI::App* update = cmd->add_subcommand(
       "update", "(Re)write the golden images of cases that are missing or no longer match");
@@ -165,6 +170,7 @@ void AddSnapshotCommand(CLI::App& app) {
   update->add_option("CASE", o->case_names, "only these cases (default: all)");
   update->add_flag("--force", o->force, "rewrite goldens that still match as well");
   o->sharding.AddOptions(*update, "cases");
+  o->gl_options.AddOptions(*update);
   update->callback([o] { Update(*o); });
   AddSnapshotMergeCommand(*cmd);
 }

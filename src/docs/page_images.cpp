@@ -24,7 +24,7 @@ class PageRenderer {
   PageRenderer(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
                const std::filesystem::path& folder, Warnings& warnings, const Progress& progress)
       : robot_(robot), page_(page), look_(look), folder_(folder), warnings_(warnings), progress_(progress),
-        total_(PageImageCount(page, look)), gl_(look.settings.samples),
+        total_(PageImageCount(page, look)), gl_(look.settings.samples, look.backend),
         fit_(look.settings.fit == render::Fit::kNone ? render::Fit::kFit : look.settings.fit) {}
 
   void Views() {

@@ -12,6 +12,7 @@
 
 #include "common/warnings.h"
 #include "docs/page_model.h"
+#include "gl/backend.h"
 #include "model/robot.h"
 #include "render/render_settings.h"
 
@@ -26,6 +27,7 @@ struct PageLook {
   double tf_alpha = 0.3;       // multiplies the robot's alpha in the TF view, so frames inside show
   int turntable_frames = 48;   // one turn of the camera's yaw
   double fps = 12;             // of every animation
+  gl::BackendChoice backend;   // the GL backend that draws them ({}: URDFSNAP_GL_BACKEND, else auto)
 };
 
 // Called after each picture or animation frame: how many are done of how many in all.

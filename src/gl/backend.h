@@ -3,6 +3,7 @@
 // for (URDFSNAP_GL_BACKEND, else auto). No GL here: the command line and the typed core include it.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,6 +15,22 @@ enum class Backend {
   kAuto,    // OSMesa when it loads and makes a context, else EGL
   kOsMesa,  // Mesa's off-screen library (libOSMesa, llvmpipe); gone from Mesa 25.1 on
   kEgl,     // libEGL: a GPU through EGL's device platform, else Mesa's surfaceless llvmpipe
+};
+
+// What a caller of the typed core asks of the backend factory for the GL contexts it makes (one per
+// gl::Renderer; RenderSession, animate's and docs' renderers and the live view's pass it on).
+struct BackendChoice {
+  BackendChoice() = default;
+  // Renderer(4, {Backend::kEgl}): that backend, nobody to tell
+  BackendChoice(std::optional<Backend> backend) : backend(backend) {}  // NOLINT(google-explicit-constructor)
+
+  // the backend asked for; nullopt: URDFSNAP_GL_BACKEND when set, else auto
+  std::optional<Backend> backend;
+  // who asked for `backend`, for the reason a context gives (GlContext::reason), e.g.
+  // "--gl-backend"; empty: "requested"
+  std::string asked_by;
+  // called with GlContext::Summary() of each context made, as soon as it is made (--verbose)
+  std::function<void(const std::string& summary)> on_context;
 };
 
 // The environment variable read when no backend is requested.

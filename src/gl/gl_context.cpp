@@ -4,6 +4,7 @@
 
 #include "gl/gl_api.h"
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -59,19 +60,34 @@ const std::vector<Backend>& CompiledInBackends() {
   return backends;
 }
 
-std::unique_ptr<GlContext> CreateGlContext(std::optional<Backend> requested) {
+std::unique_ptr<GlContext> CreateGlContext(std::optional<Backend> requested, const std::string& asked_by) {
   const Backend backend = ResolveBackend(requested);
-  std::string failures;
+  const std::string name(BackendName(backend));
+  // who asked: the caller, URDFSNAP_GL_BACKEND or nobody (auto)
+  const char* variable = std::getenv(kBackendVariable);
+  std::string reason = name;
+  if (requested) {
+    reason = (asked_by.empty() ? "requested" : asked_by) + " " + name;
+  } else if (variable && *variable) {
+    reason = std::string(kBackendVariable) + "=" + name;
+  }
+  std::string failures, skipped;
   for (const BackendEntry* entry : Candidates(backend)) {
     try {
-      return entry->create();
+      std::unique_ptr<GlContext> context = entry->create();
+      context->reason_ = reason + skipped;
+      return context;
     } catch (const Error& e) {
-      if (!failures.empty()) failures += "; ";
-      failures += std::string(BackendName(entry->backend)) + ": " + e.what();
+      const std::string entry_name(BackendName(entry->backend));
+      failures += (failures.empty() ? "" : "; ") + entry_name + ": " + e.what();
+      skipped += (skipped.empty() ? ": " : "; ") + entry_name + " failed: " + e.what();
     }
   }
-  throw Error("cannot make an OpenGL context (GL backend " + std::string(BackendName(backend)) +
-              "): " + failures);
+  throw Error("cannot make an OpenGL context (GL backend " + name + "): " + failures);
+}
+
+std::string GlContext::Summary() const {
+  return std::string(BackendName(backend())) + " (" + reason_ + "): " + description();
 }
 
 std::future<void> StartLoadingGl(std::optional<Backend> requested) {
@@ -92,20 +108,10 @@ std::future<void> StartLoadingGl(std::optional<Backend> requested) {
 }
 
 std::string DescribeGlBackends() {
-  std::string text = "GL backends compiled in: " + CompiledInBackendNames() +
-                     " (auto takes the first that makes a context)\nGL backend here: ";
+  const std::string text = "GL backends compiled in: " + CompiledInBackendNames() +
+                           " (auto takes the first that makes a context)\nGL backend here: ";
   try {
-    const Backend backend = ResolveBackend(std::nullopt);
-    const std::string asked = backend == Backend::kAuto
-                                  ? "auto"
-                                  : std::string(kBackendVariable) + "=" + std::string(BackendName(backend));
-    try {
-      const std::unique_ptr<GlContext> context = CreateGlContext(backend);
-      return text + std::string(BackendName(context->backend())) + " (" + asked + "): " +
-             context->description();
-    } catch (const Error& e) {
-      return text + "none (" + asked + "): " + e.what();
-    }
+    return text + CreateGlContext(std::nullopt)->Summary();
   } catch (const Error& e) {
     return text + "none: " + e.what();
   }

@@ -13,6 +13,17 @@
 
 namespace urdfsnap::gl {
 
+class GlContext;
+
+// An OpenGL 3.3 core-profile context from the backend ResolveBackend(requested) names: nullopt
+// means "not given" (URDFSNAP_GL_BACKEND, else auto). Auto tries the compiled-in backends in
+// order (OSMesa, then EGL) and takes the first that makes a context. `asked_by` names who gave
+// `requested` in the context's reason (BackendChoice::asked_by). Throws urdfsnap::Error when
+// URDFSNAP_GL_BACKEND is not a backend's name, when the backend asked for is not compiled in, or
+// when no context can be made; the message then starts "cannot make an OpenGL context" and says
+// what each backend tried reported.
+std::unique_ptr<GlContext> CreateGlContext(std::optional<Backend> requested, const std::string& asked_by = "");
+
 class GlContext {
  public:
   virtual ~GlContext() = default;
@@ -23,15 +34,17 @@ class GlContext {
   // One line naming the backend, GL_RENDERER and GL_VERSION, e.g. "EGL (surfaceless), llvmpipe
   // (LLVM 15.0.6, 256 bits), OpenGL 4.5 core, Mesa 22.3.6".
   virtual const std::string& description() const = 0;
-};
+  // Why the factory took this backend: who asked for it ("--gl-backend egl", "requested osmesa",
+  // "URDFSNAP_GL_BACKEND=egl", "auto") and, for auto, what the backends before it reported, e.g.
+  // "auto: osmesa failed: cannot load libOSMesa.so.8: ...".
+  const std::string& reason() const { return reason_; }
+  // "<backend> (<reason>): <description>", the line --verbose and --version print.
+  std::string Summary() const;
 
-// An OpenGL 3.3 core-profile context from the backend ResolveBackend(requested) names: nullopt
-// means "not given" (URDFSNAP_GL_BACKEND, else auto). Auto tries the compiled-in backends in
-// order (OSMesa, then EGL) and takes the first that makes a context. Throws urdfsnap::Error when
-// URDFSNAP_GL_BACKEND is not a backend's name, when the backend asked for is not compiled in, or
-// when no context can be made; the message then starts "cannot make an OpenGL context" and says
-// what each backend tried reported.
-std::unique_ptr<GlContext> CreateGlContext(std::optional<Backend> requested);
+ private:
+  friend std::unique_ptr<GlContext> CreateGlContext(std::optional<Backend>, const std::string&);
+  std::string reason_;
+};
 
 // Starts loading the library of the backend CreateGlContext(requested) would use first (OSMesa
 // or libEGL with its display, and Mesa's LLVM behind either, ~0.1 s) on a background thread, so

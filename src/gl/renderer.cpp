@@ -65,9 +65,9 @@ class GpuCache {
 }  // namespace
 
 struct Renderer::Impl {
-  Impl(int samples, std::optional<Backend> backend)
+  Impl(int samples, const BackendChoice& backend)
       : samples(samples),
-        context(CreateGlContext(backend)),
+        context(CreateGlContext(backend.backend, backend.asked_by)),
         lit("lit.vert", "lit.frag"),
         line("line.vert", "line.frag"),
         text("text.vert", "text.frag"),
@@ -270,14 +270,18 @@ struct Renderer::Impl {
   GpuCache<scene::TextureImage, GpuTexture> textures;
 };
 
-Renderer::Renderer(int samples, std::optional<Backend> backend)
-    : impl_(std::make_unique<Impl>(samples, backend)) {}
+Renderer::Renderer(int samples, const BackendChoice& backend)
+    : impl_(std::make_unique<Impl>(samples, backend)) {
+  if (backend.on_context) backend.on_context(Summary());
+}
 
 Renderer::~Renderer() = default;
 
 Backend Renderer::backend() const { return impl_->context->backend(); }
 
 const std::string& Renderer::description() const { return impl_->context->description(); }
+
+std::string Renderer::Summary() const { return impl_->context->Summary(); }
 
 image::Frame Renderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width,
                               int height, const image::FrameOutputs& outputs) {

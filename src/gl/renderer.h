@@ -6,7 +6,6 @@
 #pragma once
 
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "gl/backend.h"
@@ -19,9 +18,10 @@ namespace urdfsnap::gl {
 class Renderer {
  public:
   // samples: multisampling per pixel, 4 as RViz requests (render_system.cpp L272-275); 0 = off.
-  // backend: the GL backend asked for, nullopt when none is (then URDFSNAP_GL_BACKEND, else
-  // auto; see CreateGlContext). Throws urdfsnap::Error when no GL context can be made.
-  explicit Renderer(int samples = 4, std::optional<Backend> backend = std::nullopt);
+  // backend: the GL backend asked for ({} when none is: URDFSNAP_GL_BACKEND, else auto; see
+  // CreateGlContext), and whom to tell which one the context uses. Throws urdfsnap::Error when no
+  // GL context can be made.
+  explicit Renderer(int samples = 4, const BackendChoice& backend = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -33,9 +33,11 @@ class Renderer {
   image::Frame Render(const scene::Scene& scene, const scene::OrbitView& view, int width, int height,
                       const image::FrameOutputs& outputs = {});
 
-  // The backend of the context (kOsMesa or kEgl) and its one-line description (GlContext's).
+  // The backend of the context (kOsMesa or kEgl), its one-line description and the line saying
+  // which backend was taken and why (GlContext's).
   Backend backend() const;
   const std::string& description() const;
+  std::string Summary() const;
 
  private:
   struct Impl;

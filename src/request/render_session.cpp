@@ -3,6 +3,7 @@
 #include "request/render_session.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "common/error.h"
 #include "model/joint_values.h"
@@ -34,7 +35,7 @@ Entry& PushFront(std::list<Entry>& entries, Entry entry, size_t capacity) {
 
 }  // namespace
 
-RenderSession::RenderSession() = default;
+RenderSession::RenderSession(gl::BackendChoice backend) : backend_(std::move(backend)) {}
 RenderSession::~RenderSession() = default;
 
 const RenderSession::Model& RenderSession::LoadedModelFor(const ModelRequest& request) {
@@ -60,7 +61,7 @@ const RenderSession::Robot& RenderSession::RobotFor(const ModelRequest& request,
 
 gl::Renderer& RenderSession::RendererFor(int samples) {
   std::unique_ptr<gl::Renderer>& renderer = renderers_[samples];
-  if (!renderer) renderer = std::make_unique<gl::Renderer>(samples);
+  if (!renderer) renderer = std::make_unique<gl::Renderer>(samples, backend_);
   return *renderer;
 }
 

@@ -24,7 +24,8 @@ namespace urdfsnap::request {
 
 class RenderSession {
  public:
-  RenderSession();
+  // backend: the GL backend of the contexts the session makes ({}: URDFSNAP_GL_BACKEND, else auto).
+  explicit RenderSession(gl::BackendChoice backend = {});
   ~RenderSession();
   RenderSession(const RenderSession&) = delete;
   RenderSession& operator=(const RenderSession&) = delete;
@@ -82,6 +83,7 @@ class RenderSession {
 
   std::list<Model> models_;   // most recently used first
   std::list<Robot> robots_;   // most recently used first
+  const gl::BackendChoice backend_;
   std::map<int, std::unique_ptr<gl::Renderer>> renderers_;
 };
 

@@ -13,7 +13,8 @@ std::string CommandLineLabel(std::string_view name) { return "--" + std::string(
 
 }  // namespace
 
-FrameSource::FrameSource() : session_(std::make_unique<request::RenderSession>()) {}
+FrameSource::FrameSource(const gl::BackendChoice& backend)
+    : session_(std::make_unique<request::RenderSession>(backend)) {}
 FrameSource::~FrameSource() = default;
 
 std::string FrameSource::RenderPng(const request::RenderRequest& request, Warnings& warnings) {

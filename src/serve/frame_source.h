@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/warnings.h"
+#include "gl/backend.h"
 #include "model/robot.h"
 #include "render/render_settings.h"
 #include "request/render_request.h"
@@ -28,7 +29,8 @@ struct WatchedModel {
 // Renders frames one at a time; not thread-safe (the server lets one thread render at a time).
 class FrameSource {
  public:
-  FrameSource();
+  // backend: the GL backend of the session's contexts ({}: URDFSNAP_GL_BACKEND, else auto).
+  explicit FrameSource(const gl::BackendChoice& backend = {});
   ~FrameSource();
   FrameSource(const FrameSource&) = delete;
   FrameSource& operator=(const FrameSource&) = delete;

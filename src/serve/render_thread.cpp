@@ -1,10 +1,12 @@
 // A job queue with one worker.
 #include "serve/render_thread.h"
 
+#include <utility>
+
 namespace urdfsnap::serve {
 
-RenderThread::RenderThread(size_t max_waiting)
-    : max_waiting_(max_waiting), thread_([this] { Loop(); }) {}
+RenderThread::RenderThread(size_t max_waiting, gl::BackendChoice backend)
+    : max_waiting_(max_waiting), backend_(std::move(backend)), thread_([this] { Loop(); }) {}
 
 RenderThread::~RenderThread() {
   {
@@ -44,7 +46,7 @@ void RenderThread::Run(Job job) {
 }
 
 void RenderThread::Loop() {
-  FrameSource frames;  // made, used and destroyed on this thread
+  FrameSource frames(backend_);  // made, used and destroyed on this thread
   for (;;) {
     std::unique_lock lock(mutex_);
     wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <thread>
 
+#include "gl/backend.h"
 #include "serve/frame_source.h"
 
 namespace urdfsnap::serve {
@@ -19,7 +20,8 @@ class RenderThread {
  public:
   using Job = std::function<void(FrameSource&)>;
 
-  explicit RenderThread(size_t max_waiting);
+  // backend: the GL backend of the FrameSource's contexts.
+  RenderThread(size_t max_waiting, gl::BackendChoice backend);
   // Finishes the job being run and the waiting ones, then ends the thread.
   ~RenderThread();
   RenderThread(const RenderThread&) = delete;
@@ -36,6 +38,7 @@ class RenderThread {
   void Loop();
 
   const size_t max_waiting_;
+  const gl::BackendChoice backend_;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<std::pair<Job, std::promise<void>>> jobs_;

@@ -72,7 +72,7 @@ struct Server::Impl {
   httplib::Server http;
 
   // one frame at a time, a bounded number waiting (last: it ends first, before what it uses)
-  RenderThread renderer{static_cast<size_t>(options.max_waiting_renders)};
+  RenderThread renderer{static_cast<size_t>(options.max_waiting_renders), options.backend};
 
   // (re)loads the model and checks that its initial view renders, between two frames
   std::shared_ptr<const ModelState> Reload() {

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "common/warnings.h"
+#include "gl/backend.h"
 #include "render/render_settings.h"
 #include "request/render_request.h"
 #include "serve/live_model.h"
@@ -30,6 +31,8 @@ struct ServerOptions {
   int max_waiting_renders = 8;   // requests that wait for the renderer; more get 503
   int threads = 16;              // connections served at once (keep-alive ones included)
   std::chrono::milliseconds watch_interval{250};  // how often the model's files are looked at
+  // the GL backend of the one renderer, made with the first frame
+  gl::BackendChoice backend;
   // called after each reload of the model (not the first load), from the watching thread
   std::function<void(const ModelState&)> on_reload;
 };

@@ -36,6 +36,22 @@ TEST_P(GlContextTest, MakesACoreContextThatSaysWhatItIs) {
   context->MakeCurrent();
 }
 
+TEST_P(GlContextTest, SaysWhoAskedForItAndTellsTheRendererChoiceOnce) {
+  URDFSNAP_REQUIRE_GL_BACKEND(GetParam());
+  const std::string name(BackendName(GetParam()));
+  EXPECT_EQ(CreateGlContext(GetParam())->reason(), "requested " + name);
+  const std::unique_ptr<GlContext> context = CreateGlContext(GetParam(), "--gl-backend");
+  EXPECT_EQ(context->reason(), "--gl-backend " + name);
+  EXPECT_EQ(context->Summary(), name + " (--gl-backend " + name + "): " + context->description());
+  std::vector<std::string> told;
+  BackendChoice choice(GetParam());
+  choice.asked_by = "--gl-backend";
+  choice.on_context = [&](const std::string& summary) { told.push_back(summary); };
+  const Renderer renderer(0, choice);
+  EXPECT_EQ(told, std::vector<std::string>{renderer.Summary()});
+  EXPECT_EQ(renderer.Summary(), context->Summary());
+}
+
 INSTANTIATE_TEST_SUITE_P(CompiledIn, GlContextTest, ::testing::ValuesIn(CompiledInBackends()),
                          [](const auto& info) { return std::string(BackendName(info.param)); });
 
@@ -70,8 +86,8 @@ TEST(GlContextFactoryTest, BackendsTakeTurnsInOneProcess) {
   URDFSNAP_REQUIRE_GL_BACKEND(Backend::kEgl);
   // each backend draws its own colour: a call that reached the other backend's context would
   // show up as the other colour (or as the background)
-  Renderer osmesa(4, Backend::kOsMesa);
-  Renderer egl(4, Backend::kEgl);
+  Renderer osmesa(4, {Backend::kOsMesa});
+  Renderer egl(4, {Backend::kEgl});
   const scene::Scene red = BoxFacingTheCamera({1, 0, 0}), blue = BoxFacingTheCamera({0, 0, 1});
   for (int round = 0; round < 3; ++round) {
     for (Renderer* renderer : {&osmesa, &egl, &egl, &osmesa}) {

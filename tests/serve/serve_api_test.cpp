@@ -1,7 +1,9 @@
 // The HTTP API against the binary: frames byte for byte what `urdfsnap render` writes, render's
 // error lines for bad values, the joint table and initial view, and the server's start and stop.
 #include <signal.h>
+#include <stdlib.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 
@@ -9,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/urdfsnap_process.h"
+#include "gl/backend.h"
 #include "serve_process.h"
 #include "support/gl_required.h"
 #include "support/temp_folder.h"
@@ -104,6 +107,40 @@ TEST_F(ServeApiTest, FramesAreWhatRenderWritesByteForByte) {
   const std::string png = folder_.Path("meshbot.png");
   ASSERT_EQ(test::RunUrdfsnap("render " + kMeshbot + " --fit --yaw 2 --collision --size 500x400 --tf -o " + png).status, 0);
   EXPECT_TRUE(frame->body == ReadFile(png));
+}
+
+TEST_F(ServeApiTest, GlBackendOptionMakesTheOneRendererAndVerboseSaysSoOnce) {
+  for (const gl::Backend backend : gl::CompiledInBackends()) {
+    URDFSNAP_REQUIRE_GL_BACKEND(backend);
+    const std::string name(gl::BackendName(backend));
+    SCOPED_TRACE(name);
+    // the variable (which the server inherits) names another backend: the option wins
+    const char* was = std::getenv(gl::kBackendVariable);
+    const std::string saved = was ? was : "";
+    setenv(gl::kBackendVariable, backend == gl::Backend::kEgl ? "osmesa" : "egl", 1);
+    ServeProcess server("--gl-backend " + name + " --verbose " + kMrmXacro + " --port 0");
+    was ? setenv(gl::kBackendVariable, saved.c_str(), 1) : unsetenv(gl::kBackendVariable);
+    ASSERT_TRUE(server.started()) << server.first_line() << server.Stderr();
+    const std::string line = "urdfsnap: GL backend " + name + " (--gl-backend " + name + "): ";
+    // said when the context was made, for the initial view, before the address was printed
+    EXPECT_EQ(server.Stderr().rfind(line, 0), 0u) << server.Stderr();
+    auto client = server.Client();
+    int n = 0;
+    for (const View& view : MadeUpViews(5)) {
+      const auto frame = client->Get("/render.png?" + view.query);
+      ASSERT_TRUE(frame);
+      ASSERT_EQ(frame->status, 200) << frame->body;
+      const std::string png = folder_.Path(name + std::to_string(n++) + ".png");
+      const test::ProcessResult r =
+          test::RunUrdfsnap("render " + kMrmXacro + view.arguments + " --gl-backend " + name + " -o " + png);
+      ASSERT_EQ(r.status, 0) << r.err;
+      EXPECT_TRUE(frame->body == ReadFile(png)) << "the frame differs from render's " << png;
+    }
+    // one renderer for every frame (no-aa's too, whose context is another): one line
+    EXPECT_EQ(server.Stop(SIGTERM), 0);
+    const std::string err = server.Stderr();
+    EXPECT_EQ(err.find(line), err.rfind(line)) << err;
+  }
 }
 
 TEST_F(ServeApiTest, BadValuesAnswerRendersErrorLine) {
