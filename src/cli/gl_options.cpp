@@ -1,5 +1,5 @@
-// GlOptions: the option's check (the factory's own message for a name it does not know), its help,
-// and the --verbose line.
+// GlOptions: the option's check (the factory's own messages for a name it does not know or a
+// backend this build lacks), its help, and the --verbose line.
 #include "cli/gl_options.h"
 
 #include <cstdio>
@@ -26,7 +26,7 @@ void GlOptions::AddOptions(CLI::App& command) {
       ->check(CLI::Validator(
           [](std::string& name) -> std::string {
             try {
-              gl::ParseBackend(name);
+              gl::CheckCompiledIn(gl::ParseBackend(name));
               return "";
             } catch (const Error& e) {
               return e.what();

@@ -12,7 +12,7 @@
 namespace urdfsnap::cli {
 
 struct GlOptions {
-  std::string backend;   // --gl-backend NAME, checked by gl::ParseBackend; "" when not given
+  std::string backend;   // --gl-backend NAME, checked by gl::ParseBackend and gl::CheckCompiledIn; "" when not given
   bool verbose = false;  // --verbose
 
   // Adds --gl-backend and --verbose to `command`.

@@ -46,6 +46,11 @@ Backend ParseBackend(std::string_view name);
 // The concrete backends this build has, in auto's order of preference (OSMesa first).
 const std::vector<Backend>& CompiledInBackends();
 
+// Throws urdfsnap::Error naming the compiled-in backends when `backend` is kOsMesa or kEgl and
+// this build lacks it ("GL backend 'osmesa' is not compiled into this urdfsnap (built with
+// URDFSNAP_WITH_OSMESA=OFF); compiled in: egl").
+void CheckCompiledIn(Backend backend);
+
 // "osmesa, egl": the compiled-in backends' names, for messages and help texts.
 std::string CompiledInBackendNames();
 

@@ -4,6 +4,7 @@
 
 #include "gl/gl_api.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -41,10 +42,11 @@ std::vector<const BackendEntry*> Candidates(Backend backend) {
     if (backend == Backend::kAuto || entry.backend == backend) candidates.push_back(&entry);
   }
   if (candidates.empty()) {
-    const char* option = backend == Backend::kOsMesa ? "URDFSNAP_WITH_OSMESA" : "URDFSNAP_WITH_EGL";
-    throw Error("cannot make an OpenGL context: GL backend '" + std::string(BackendName(backend)) +
-                "' is not compiled into this urdfsnap (built with " + option +
-                "=OFF); compiled in: " + CompiledInBackendNames());
+    try {
+      CheckCompiledIn(backend);
+    } catch (const Error& e) {
+      throw Error(std::string("cannot make an OpenGL context: ") + e.what());
+    }
   }
   return candidates;
 }
@@ -58,6 +60,16 @@ const std::vector<Backend>& CompiledInBackends() {
     return list;
   }();
   return backends;
+}
+
+void CheckCompiledIn(Backend backend) {
+  const std::vector<Backend>& compiled_in = CompiledInBackends();
+  if (backend == Backend::kAuto || std::find(compiled_in.begin(), compiled_in.end(), backend) != compiled_in.end()) {
+    return;
+  }
+  const char* option = backend == Backend::kOsMesa ? "URDFSNAP_WITH_OSMESA" : "URDFSNAP_WITH_EGL";
+  throw Error("GL backend '" + std::string(BackendName(backend)) + "' is not compiled into this urdfsnap (built with " +
+              option + "=OFF); compiled in: " + CompiledInBackendNames());
 }
 
 std::unique_ptr<GlContext> CreateGlContext(std::optional<Backend> requested, const std::string& asked_by) {

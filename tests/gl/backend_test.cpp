@@ -78,17 +78,20 @@ TEST(BackendTest, BadEnvironmentValueNamesTheVariable) {
 
 TEST(BackendTest, BackendNotCompiledInIsAClearError) {
   int missing = 0;
+  EXPECT_EQ(ErrorOf([] { CheckCompiledIn(Backend::kAuto); }), "");
   for (Backend backend : {Backend::kOsMesa, Backend::kEgl}) {
     if (std::find(CompiledInBackends().begin(), CompiledInBackends().end(), backend) !=
         CompiledInBackends().end()) {
+      EXPECT_EQ(ErrorOf([&] { CheckCompiledIn(backend); }), "");
       continue;
     }
     ++missing;
     const std::string option = backend == Backend::kOsMesa ? "URDFSNAP_WITH_OSMESA" : "URDFSNAP_WITH_EGL";
-    EXPECT_EQ(ErrorOf([&] { CreateGlContext(backend); }),
-              "cannot make an OpenGL context: GL backend '" + std::string(BackendName(backend)) +
-                  "' is not compiled into this urdfsnap (built with " + option +
-                  "=OFF); compiled in: " + CompiledInBackendNames());
+    const std::string message = "GL backend '" + std::string(BackendName(backend)) +
+                                "' is not compiled into this urdfsnap (built with " + option +
+                                "=OFF); compiled in: " + CompiledInBackendNames();
+    EXPECT_EQ(ErrorOf([&] { CheckCompiledIn(backend); }), message);
+    EXPECT_EQ(ErrorOf([&] { CreateGlContext(backend); }), "cannot make an OpenGL context: " + message);
   }
   if (missing == 0) GTEST_SKIP() << "every backend is compiled into this build";
 }
