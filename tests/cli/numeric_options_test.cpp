@@ -125,6 +125,11 @@ const std::vector<CommandOption>& Options() {
     AddViewOptions(o, "serve", "MRM --port 0");
     AddViewOptions(o, "animate", "MRM -o OUT.gif --turntable");
     AddViewOptions(o, "docs", "MRM -o OUT", false);  // its --joints are globs, text
+    // every command that renders: the GL backend (a name) and the line saying which was taken
+    for (const char* command : {"render", "serve", "animate", "docs", "snapshot check", "snapshot update"}) {
+      o.push_back({command, "--gl-backend", Kind::kText});
+      o.push_back({command, "--verbose", Kind::kFlag});
+    }
     return o;
   }();
   return options;
