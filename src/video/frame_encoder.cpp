@@ -57,6 +57,11 @@ std::unique_ptr<FrameEncoder> OpenFrameEncoder(const std::string& path,
   if (!std::isfinite(settings.fps) || settings.fps <= 0) {
     throw Error(path + ": the frame rate must be a positive number of frames per second");
   }
+  if (settings.first_frame != 0 && format != OutputFormat::kPngSequence) {
+    throw Error(path + ": " + OutputFormatName(format) + " is one file of the whole animation; only a "
+                "frame sequence (such as frames/%05d.png) can start at frame " +
+                std::to_string(settings.first_frame));
+  }
   switch (format) {
     case OutputFormat::kMp4:
     case OutputFormat::kWebm:

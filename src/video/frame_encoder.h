@@ -5,6 +5,7 @@
 // moves the result into place only when finished, so an error never leaves a partial output.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -33,6 +34,9 @@ struct EncoderSettings {
   int width = 0;  // pixels, as the frames will be
   int height = 0;
   double fps = 30;  // frames per second, > 0
+  // The number of the first frame written: a PNG sequence's first file is named with it (a shard
+  // of a sequence, --shard). A video is one file of every frame, so it only starts at 0.
+  std::int64_t first_frame = 0;
 };
 
 class FrameEncoder {
@@ -51,7 +55,7 @@ class FrameEncoder {
 // Opens the encoder for `path` (see OutputFormatOf), creating its temporary output at once so that
 // an unwritable place is reported before any frame is made. Throws Error for an unknown format, a
 // size the format cannot hold (odd sides for MP4's 4:2:0 chroma, WebP's 16383 pixels), a bad
-// frame rate, or an output that cannot be written. Advice that is no error (GIF frame delays
+// frame rate, a video starting past frame 0, or an output that cannot be written. Advice that is no error (GIF frame delays
 // browsers do not honour) goes to `warnings`.
 std::unique_ptr<FrameEncoder> OpenFrameEncoder(const std::string& path,
                                                const EncoderSettings& settings, Warnings& warnings);

@@ -8,19 +8,19 @@
 
 namespace urdfsnap::video {
 
-FrameFiles::FrameFiles(const std::string& pattern) : pattern_(pattern) {
-  AtomicFile probe(pattern_.Name(0));  // created and removed: the place is writable
+FrameFiles::FrameFiles(const std::string& pattern, std::int64_t first) : pattern_(pattern), first_(first) {
+  AtomicFile probe(pattern_.Name(first_));  // created and removed: the place is writable
 }
 
 FrameFiles::~FrameFiles() {
   if (finished_) return;
-  for (std::int64_t number = 0; number < count_; ++number) {
+  for (std::int64_t number = first_; number < first_ + count_; ++number) {
     ::unlink(pattern_.Name(number).c_str());
   }
 }
 
 void FrameFiles::Write(std::string_view bytes) {
-  WriteFileAtomically(pattern_.Name(count_), bytes);
+  WriteFileAtomically(pattern_.Name(first_ + count_), bytes);
   ++count_;
 }
 

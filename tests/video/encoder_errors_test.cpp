@@ -78,6 +78,30 @@ TEST_F(EncoderErrorsTest, AnExistingOutputStaysUntilTheNewOneIsComplete) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(file), {}), "an older animation");
 }
 
+TEST_F(EncoderErrorsTest, OnlyAFrameSequenceStartsPastFrameZero) {
+  for (const char* name : {"robot.mp4", "robot.webm", "robot.gif", "robot.webp"}) {
+    EXPECT_THAT(Open(name, {64, 48, 10, 7}),
+                HasSubstr("file of the whole animation; only a frame sequence (such as "
+                          "frames/%05d.png) can start at frame 7")) << name;
+  }
+  EXPECT_TRUE(folder_.Listing().empty());
+}
+
+TEST_F(EncoderErrorsTest, AShardOfASequenceIsNumberedFromItsFirstFrameAndRemovedWhenAbandoned) {
+  {
+    const auto encoder = OpenFrameEncoder(folder_.Path("%03d.png"), {64, 48, 10, 7}, warnings_);
+    for (int i = 0; i < 3; ++i) encoder->Write(test::SyntheticFrame(64, 48, i));
+    encoder->Finish();
+  }
+  EXPECT_EQ(folder_.Listing(), (std::vector<std::string>{"007.png", "008.png", "009.png"}));
+  {
+    const auto encoder = OpenFrameEncoder(folder_.Path("%03d.png"), {64, 48, 10, 10}, warnings_);
+    for (int i = 0; i < 2; ++i) encoder->Write(test::SyntheticFrame(64, 48, i));
+  }
+  // the abandoned shard took its own files away and left the finished one's
+  EXPECT_EQ(folder_.Listing(), (std::vector<std::string>{"007.png", "008.png", "009.png"}));
+}
+
 TEST_F(EncoderErrorsTest, FastGifsWarnThatBrowsersSlowThemDown) {
   OpenFrameEncoder(folder_.Path("fast.gif"), {64, 48, 60}, warnings_);
   ASSERT_EQ(warnings_.messages().size(), 1u);
