@@ -7,7 +7,7 @@
 namespace urdfsnap::animation {
 
 void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const AnimationFrames& frames,
-                     FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
+                     shard::FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
                      Warnings& warnings, std::size_t depth) {
   const image::FrameOutputs wanted{true, outputs.depth != nullptr, outputs.labels != nullptr};
   const auto render = [&](std::int64_t i, image::Frame& frame) {
@@ -22,7 +22,7 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const
     if (outputs.labels) outputs.labels->Write(LabelFileBytes(frame.labels));
     if (progress) progress->Update(i + 1);
   };
-  stream::RunPipeline<image::Frame>(range.last - range.first, depth, render, write);
+  stream::RunPipeline<image::Frame>(range.size(), depth, render, write);
   outputs.colour->Finish();
   if (outputs.depth) outputs.depth->Finish();
   if (outputs.labels) outputs.labels->Finish();

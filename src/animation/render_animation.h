@@ -11,17 +11,12 @@
 #include "common/warnings.h"
 #include "gl/renderer.h"
 #include "render/robot_renderer.h"
+#include "shard/shard_assignment.h"
 #include "stream/progress_bar.h"
 #include "video/frame_encoder.h"
 #include "video/frame_files.h"
 
 namespace urdfsnap::animation {
-
-// Frames first, first + 1, ..., last - 1 of an animation.
-struct FrameRange {
-  std::int64_t first = 0;
-  std::int64_t last = 0;
-};
 
 // Where the frames go; depth and labels are optional.
 struct AnimationOutputs {
@@ -30,14 +25,14 @@ struct AnimationOutputs {
   video::FrameFiles* labels = nullptr;    // numbered link-label files (.png)
 };
 
-// Renders the frames of `range` of `frames` with `robot` through `gl` and writes them, in order, to
+// Renders the frames of `range` (the whole animation, or a shard's frames) of `frames` with `robot` through `gl` and writes them, in order, to
 // every output; then finishes each output (moving it into place) and `progress`, if given, which
 // counts the range's frames as they are written. At most `depth` rendered frames wait for the
 // writer. Warnings of the poses go to `warnings` (touched on the calling thread only). The first
 // error on either thread stops both and is rethrown; the outputs are then left unfinished, so that
 // their destruction removes what they wrote.
 void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const AnimationFrames& frames,
-                     FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
+                     shard::FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
                      Warnings& warnings, std::size_t depth = 4);
 
 }  // namespace urdfsnap::animation

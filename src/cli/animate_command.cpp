@@ -16,6 +16,7 @@
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
+#include "cli/shard_options.h"
 #include "common/atomic_file.h"
 #include "common/created_folders.h"
 #include "common/error.h"
@@ -28,6 +29,7 @@
 #include "render/frame_files.h"
 #include "request/render_session.h"
 #include "request/value_parsing.h"
+#include "shard/shard_assignment.h"
 #include "video/frame_encoder.h"
 #include "video/frame_files.h"
 
@@ -48,6 +50,7 @@ struct AnimateOptions {
   std::string depth, labels;  // optional depth and link-label sequences (patterns)
   std::string print_frame;    // a frame number: print its render options instead of writing
   bool quiet = false;
+  ShardOptions sharding;      // a frame sequence's contiguous range of frames
   RenderOptions render;
   GlOptions gl_options;
 };
@@ -83,6 +86,26 @@ std::int64_t FrameNumber(const std::string& text, const motion::FramePlan& plan)
   return static_cast<std::int64_t>(k);
 }
 
+// The shard this run takes. A video is one file of every frame and --print-frame renders nothing,
+// so neither splits: an explicit --shard is then an error, the environment's shard is set aside.
+shard::ShardChoice ChooseShard(const AnimateOptions& o) {
+  if (!o.print_frame.empty()) {
+    if (o.sharding.shard) throw Error("--shard: --print-frame prints one frame's options and renders nothing to split");
+    return {};
+  }
+  const video::OutputFormat format = video::OutputFormatOf(o.output);
+  if (format == video::OutputFormat::kPngSequence) return o.sharding.Choose();
+  return o.sharding.Choose(o.output + " is one " + video::OutputFormatName(format) +
+                           " file of every frame; only a frame sequence (such as -o frames/%05d.png) is split "
+                           "over workers");
+}
+
+// "frames 25 to 49" of a shard's range, for its stderr line.
+std::string RangeText(shard::FrameRange range) {
+  if (range.size() == 0) return "no frames: fewer frames than shards";
+  return "frames " + std::to_string(range.first) + " to " + std::to_string(range.end - 1);
+}
+
 // Prints the warnings of `later` that `printed` does not hold already.
 void PrintNewWarnings(const Warnings& printed, const Warnings& later) {
   Warnings fresh;
@@ -103,7 +126,7 @@ void Run(AnimateOptions& o) {
     throw Error("animate: give the output with -o FILE: .mp4, .webm, .gif, .webp or a pattern such as "
                 "frames/%05d.png");
   }
-  if (!o.output.empty()) video::OutputFormatOf(o.output);
+  const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
 
@@ -143,29 +166,33 @@ void Run(AnimateOptions& o) {
       return;
     }
 
+    const shard::FrameRange range = shard::FramesOfShard(plan.frame_count, choice.shard);
+    PrintShardLine(choice, range.size(), plan.frame_count, "frames", RangeText(range));
+
     // every output opened (and so checked writable) before the first frame
     frames.Positions(0, warnings);  // a pose's warnings are every frame's: print them first
     CreatedFolders folders;
     for (const std::string* file : {&o.output, &o.depth, &o.labels}) {
       if (!file->empty()) folders.MakeParents(*file);
     }
-    const auto encoder = video::OpenFrameEncoder(o.output, {settings.size.width, settings.size.height, plan.fps}, warnings);
+    const auto encoder = video::OpenFrameEncoder(
+        o.output, {settings.size.width, settings.size.height, plan.fps, range.first}, warnings);
     std::optional<video::FrameFiles> depth, labels;
     std::optional<AtomicFile> label_names;
-    if (!o.depth.empty()) depth.emplace(o.depth);
+    if (!o.depth.empty()) depth.emplace(o.depth, range.first);
     if (!o.labels.empty()) {
-      labels.emplace(o.labels);
+      labels.emplace(o.labels, range.first);
       label_names.emplace(animation::LabelNamesPath(o.labels));
       label_names->Write(render::LabelNamesJson(*robot));
     }
     PrintWarnings(warnings);   // --strict ends here, before any frame
 
     gl::Renderer gl(settings.samples, backend);
-    stream::ProgressBar bar(plan.frame_count, "frames",
+    stream::ProgressBar bar(range.size(), "frames",
                             o.quiet ? stream::ProgressBar::Display::kNever
                                     : stream::ProgressBar::Display::kIfTerminal);
     Warnings later;
-    animation::RenderAnimation(renderer, gl, frames, {0, plan.frame_count},
+    animation::RenderAnimation(renderer, gl, frames, range,
                                {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr},
                                &bar, later);
     if (label_names) label_names->Commit();
@@ -187,7 +214,9 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_option("-o,--output", o->output,
                   "file to write, by extension: .mp4 (H.264), .webm (VP9), .gif, .webp (animated) or "
                   "a PNG sequence such as frames/%05d.png (numbered from 0; each frame as `render` "
-                  "writes it); missing folders are made");
+                  "writes it); missing folders are made. A frame sequence splits over workers "
+                  "with --shard: each writes a contiguous range of the files, named as in the whole "
+                  "animation, from the same camera");
   cmd->add_option("--trajectory", o->trajectory,
                   "the motion: a CSV table (time,<joint>,...), a JointTrajectory, MoveIt "
                   "RobotTrajectory/DisplayTrajectory or JointState stream in YAML/JSON (as `ros2 "
@@ -209,11 +238,13 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_option("--labels", o->labels,
                   "also write the link-label image of every frame: a pattern such as "
                   "labels/%05d.png, as `render --labels` writes them, with the link names once in "
-                  "the pattern's name without the number, .json (labels/labels.json)");
+                  "the pattern's name without the number, .json (labels/labels.json; each shard writes "
+                  "the same one)");
   cmd->add_option("--print-frame", o->print_frame,
                   "write nothing; print the options that make `render` (with the same MODEL and "
                   "options, without --fit) draw frame K byte for byte: the view and every joint");
   cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
+  o->sharding.AddOptions(*cmd, "frames of a frame sequence (a video is never split)");
   o->render.AddOptions(*cmd);
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
