@@ -5,11 +5,13 @@
 #include "cli/command.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
+#include "cli/shard_options.h"
 #include "cli/view_options.h"
 #include "common/error.h"
 #include "docs/animation_output.h"
 #include "docs/page_check.h"
 #include "docs/page_folder.h"
+#include "docs/page_shard.h"
 #include "docs/page_writer.h"
 #include "gl/gl_context.h"
 #include "request/model_request.h"
@@ -27,6 +29,7 @@ struct DocsOptions {
   std::vector<std::string> joint_globs;
   std::string animations;
   bool quiet = false;
+  ShardOptions sharding;            // a contiguous part of the page's pictures and animations
   request::RenderRequest request;   // the view and display options, filled by CLI11 directly
   GlOptions gl_options;
 };
@@ -49,6 +52,8 @@ void Run(DocsOptions& o) {
     throw Error("docs: give -o DIR to write a page, or --check DIR to compare a committed page with a fresh one");
   }
   o.request.model = o.model.ToRequest();
+  const shard::ShardChoice choice =
+      o.sharding.Choose(o.check.empty() ? "" : "docs --check compares the whole page with a fresh one");
   Warnings warnings;
   try {
     const request::LoadedModel loaded = request::LoadModel(o.request.model, warnings);
@@ -63,14 +68,19 @@ void Run(DocsOptions& o) {
     options.animation_extension = o.animations == "none" ? "" : "." + o.animations;
     const docs::RobotPage page = docs::MakeRobotPage(*loaded.robot, o.request.model.path,
                                                      o.request.model.xacro_args, options, warnings);
+    const std::vector<docs::PageImage> all = docs::PageImages(page, look);
+    const std::vector<docs::PageImage> files = docs::ShardPageImages(all, choice.shard);
+    PrintShardLine(choice, files.size(), all.size(), "pictures and animations",
+                   std::to_string(docs::ImageCount(files)) + " of " + std::to_string(docs::ImageCount(all)) +
+                       " images, and the page's text");
     // a progress bar of pictures and animation frames, on a terminal only
-    stream::ProgressBar bar(docs::PageImageCount(page, look), "images",
+    stream::ProgressBar bar(docs::ImageCount(files), "images",
                             o.quiet ? stream::ProgressBar::Display::kNever
                                     : stream::ProgressBar::Display::kIfTerminal);
     const docs::Progress progress = [&](std::int64_t done, std::int64_t) { bar.Update(done); };
     if (!o.check.empty()) {
       const docs::ScratchFolder fresh;
-      docs::WritePage(loaded.robot, page, look, fresh.path(), warnings, progress);
+      docs::WritePage(loaded.robot, page, look, files, fresh.path(), warnings, progress);
       bar.Finish();
       PrintWarnings(warnings);
       if (!std::filesystem::is_directory(o.check)) {
@@ -80,7 +90,7 @@ void Run(DocsOptions& o) {
       return;
     }
     docs::PageFolder folder(o.output);
-    docs::WritePage(loaded.robot, page, look, folder.path(), warnings, progress);
+    docs::WritePage(loaded.robot, page, look, files, folder.path(), warnings, progress);
     bar.Finish();
     PrintWarnings(warnings);
     folder.Commit();
@@ -101,7 +111,9 @@ void AddDocsCommand(CLI::App& app) {
   o->model.AddOptions(*cmd);
   cmd->add_option("-o,--output", o->output,
                   "folder to write README.md, index.html and the images into (replaced as a whole; "
-                  "it must be new, empty or a page of urdfsnap docs)");
+                  "it must be new, empty or a page of urdfsnap docs). With --shard K/N, a contiguous "
+                  "run of the pictures and animations and the page's text: the shards' folders "
+                  "copied into one are the page");
   cmd->add_option("--check", o->check,
                   "instead of writing, compare the page in this folder with a fresh one: exit 0 when "
                   "it is up to date, 1 when stale (images within the snapshot tolerances, text exactly)");
@@ -116,6 +128,7 @@ void AddDocsCommand(CLI::App& app) {
                   "format of the joint sweeps and the turntable (default " + formats.front() + ")")
       ->check(CLI::IsMember(formats));
   cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
+  o->sharding.AddOptions(*cmd, "pictures and animations of the page");
   AddViewOptions(*cmd, o->request);
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <numbers>
+#include <set>
 
 #include "docs/animation_output.h"
 #include "gl/renderer.h"
@@ -22,31 +23,40 @@ render::ImageSize SizeOf(PictureSize size) { return {size.width, size.height}; }
 class PageRenderer {
  public:
   PageRenderer(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
-               const std::filesystem::path& folder, Warnings& warnings, const Progress& progress)
+               const std::vector<PageImage>& files, const std::filesystem::path& folder, Warnings& warnings,
+               const Progress& progress)
       : robot_(robot), page_(page), look_(look), folder_(folder), warnings_(warnings), progress_(progress),
-        total_(PageImageCount(page, look)), gl_(look.settings.samples, look.backend),
-        fit_(look.settings.fit == render::Fit::kNone ? render::Fit::kFit : look.settings.fit) {}
+        total_(ImageCount(files)), gl_(look.settings.samples, look.backend),
+        fit_(look.settings.fit == render::Fit::kNone ? render::Fit::kFit : look.settings.fit) {
+    for (const PageImage& file : files) wanted_.insert(file.file);
+  }
 
   void Views() {
     scene::SceneOptions options = look_.settings.scene;
     const render::RobotRenderer visual(robot_, options, warnings_);
-    Still(visual, page_.hero_file);
+    if (Wanted(page_.hero_file)) Still(visual, page_.hero_file);
 
-    if (!page_.collision_file.empty()) {
+    if (Wanted(page_.collision_file)) {
       options.show_visual = false;
       options.show_collision = true;
       Still(render::RobotRenderer(robot_, options, warnings_), page_.collision_file);
     }
 
-    options = look_.settings.scene;
-    options.tf.enabled = true;
-    options.alpha *= look_.tf_alpha;
-    Still(render::RobotRenderer(robot_, options, warnings_), page_.tf_file);
+    if (Wanted(page_.tf_file)) {
+      options = look_.settings.scene;
+      options.tf.enabled = true;
+      options.alpha *= look_.tf_alpha;
+      Still(render::RobotRenderer(robot_, options, warnings_), page_.tf_file);
+    }
 
-    if (!page_.turntable_file.empty()) Turntable(visual);
+    if (Wanted(page_.turntable_file)) Turntable(visual);
   }
 
   void Section(const JointSection& section) {
+    const bool any = Wanted(section.sweep_file) ||
+                     std::any_of(section.pictures.begin(), section.pictures.end(),
+                                 [&](const Picture& picture) { return Wanted(picture.file); });
+    if (!any) return;
     // the links the joint does not move, faded
     scene::SceneOptions options = look_.settings.scene;
     std::vector<bool> moving(robot_->links().size(), false);
@@ -62,15 +72,19 @@ class PageRenderer {
     };
     const scene::OrbitView view = MotionView(faded, moving, stills + static_cast<int>(section.sweep.size()), pose);
     for (int k = 0; k < stills; ++k) {
+      if (!Wanted(section.pictures[k].file)) continue;
       Write(faded.Render(gl_, pose(k), view, SizeOf(page_.joint_size)).colour, section.pictures[k].file);
     }
-    if (!section.sweep_file.empty()) {
+    if (Wanted(section.sweep_file)) {
       Animate(faded, section.sweep_file, static_cast<int>(section.sweep.size()),
               [&](int k) { return pose(stills + k); }, [&](int) { return view; });
     }
   }
 
  private:
+  // Whether `file` is one to make here (never "": a picture the page does not have).
+  bool Wanted(const std::string& file) const { return wanted_.count(file) > 0; }
+
   // The view that fits the moving links in every pose(k), k < count (the whole robot when they have
   // no geometry), so that a small part fills the picture.
   scene::OrbitView MotionView(const render::RobotRenderer& robot, const std::vector<bool>& moving, int count,
@@ -155,24 +169,35 @@ class PageRenderer {
   std::int64_t done_ = 0;
   gl::Renderer gl_;
   const render::Fit fit_;
+  std::set<std::string> wanted_;
 };
 
 }  // namespace
 
-std::int64_t PageImageCount(const RobotPage& page, const PageLook& look) {
-  std::int64_t count = page.collision_file.empty() ? 2 : 3;
-  if (!page.turntable_file.empty()) count += look.turntable_frames;
+std::vector<PageImage> PageImages(const RobotPage& page, const PageLook& look) {
+  std::vector<PageImage> files = {{page.hero_file}};
+  if (!page.collision_file.empty()) files.push_back({page.collision_file});
+  files.push_back({page.tf_file});
+  if (!page.turntable_file.empty()) files.push_back({page.turntable_file, look.turntable_frames});
   for (const JointSection& section : page.sections) {
-    count += static_cast<std::int64_t>(section.pictures.size());
-    if (!section.sweep_file.empty()) count += static_cast<std::int64_t>(section.sweep.size());
+    for (const Picture& picture : section.pictures) files.push_back({picture.file});
+    if (!section.sweep_file.empty()) {
+      files.push_back({section.sweep_file, static_cast<std::int64_t>(section.sweep.size())});
+    }
   }
+  return files;
+}
+
+std::int64_t ImageCount(const std::vector<PageImage>& files) {
+  std::int64_t count = 0;
+  for (const PageImage& file : files) count += file.images;
   return count;
 }
 
 void RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
-                      const PageLook& look, const std::filesystem::path& folder, Warnings& warnings,
-                      const Progress& progress) {
-  PageRenderer renderer(robot, page, look, folder, warnings, progress);
+                      const PageLook& look, const std::vector<PageImage>& files,
+                      const std::filesystem::path& folder, Warnings& warnings, const Progress& progress) {
+  PageRenderer renderer(robot, page, look, files, folder, warnings, progress);
   renderer.Views();
   for (const JointSection& section : page.sections) renderer.Section(section);
 }

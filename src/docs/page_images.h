@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "common/warnings.h"
 #include "docs/page_model.h"
@@ -33,14 +35,27 @@ struct PageLook {
 // Called after each picture or animation frame: how many are done of how many in all.
 using Progress = std::function<void(std::int64_t done, std::int64_t total)>;
 
-// The pictures and animation frames RenderPageImages makes: its progress total.
-std::int64_t PageImageCount(const RobotPage& page, const PageLook& look);
+// A picture or an animation of the page: its file, relative to the page, and the images it takes
+// to make (1 for a picture, its frames for an animation).
+struct PageImage {
+  std::string file;
+  std::int64_t images = 1;
+};
 
-// Renders every picture of `page` (made by MakeRobotPage for `robot`) into `folder`, at the page's
-// relative file names. Throws urdfsnap::Error: files the robot needs that cannot be read (located
-// at the link), no GL context, an image that cannot be written.
+// Every picture and animation of `page`, in the order RenderPageImages makes them: the robot, its
+// collision geometry, TF frames, turntable, then each joint section's pictures and sweep.
+std::vector<PageImage> PageImages(const RobotPage& page, const PageLook& look);
+
+// The pictures and animation frames of `files` together: the progress total of making them.
+std::int64_t ImageCount(const std::vector<PageImage>& files);
+
+// Renders the pictures and animations of `page` (made by MakeRobotPage for `robot`) that `files`
+// lists (PageImages, or a shard's part of them) into `folder`, at the page's relative file names;
+// each camera is fitted as for the whole page, so a picture is the same whichever part it is made
+// in. Throws urdfsnap::Error: files the robot needs that cannot be read (located at the link), no GL
+// context, an image that cannot be written.
 void RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
-                      const PageLook& look, const std::filesystem::path& folder, Warnings& warnings,
-                      const Progress& progress);
+                      const PageLook& look, const std::vector<PageImage>& files,
+                      const std::filesystem::path& folder, Warnings& warnings, const Progress& progress);
 
 }  // namespace urdfsnap::docs

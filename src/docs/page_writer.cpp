@@ -8,8 +8,9 @@
 namespace urdfsnap::docs {
 
 void WritePage(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
-               const std::filesystem::path& folder, Warnings& warnings, const Progress& progress) {
-  RenderPageImages(robot, page, look, folder, warnings, progress);
+               const std::vector<PageImage>& files, const std::filesystem::path& folder, Warnings& warnings,
+               const Progress& progress) {
+  RenderPageImages(robot, page, look, files, folder, warnings, progress);
   WriteFileAtomically((folder / kMarkdownFile).string(), MarkdownPage(page));
   WriteFileAtomically((folder / kHtmlFile).string(), HtmlPage(page));
 }
