@@ -15,8 +15,9 @@ pages=(
   "meshbot models/meshbot_description/urdf/meshbot.urdf"
 )
 status=0
+# --no-shard: whole pages even inside a CI job that shards (GitLab parallel:, a Slurm array)
 for entry in "${pages[@]}"; do
   read -r name model <<<"$entry"
-  "$snap" docs "$root/$model" "$mode" "$root/docs/robots/$name" || status=$?
+  "$snap" docs "$root/$model" --no-shard "$mode" "$root/docs/robots/$name" || status=$?
 done
 exit $status

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "bad_shards.h"
 #include "cli_fixture.h"
 
 namespace urdfsnap::cli_test {
@@ -201,26 +202,7 @@ TEST_F(ShardedSuiteTest, UpdateWritesOnlyItsShardsGoldens) {
 }
 
 TEST_F(ShardedSuiteTest, BadShardsAreOneErrorAndWriteNothing) {
-  struct Case {
-    std::string arguments, environment, message;
-  } cases[] = {
-      {"--shard 0/3", "", "--shard '0/3': the shard index must be from 1 to 3, got 0"},
-      {"--shard 4/3", "", "--shard '4/3': the shard index must be from 1 to 3, got 4"},
-      {"--shard a/b", "", "--shard 'a/b': expected K/N, two whole numbers with 1 <= K <= N (e.g. 2/4)"},
-      {"--shard 3", "", "--shard '3': expected K/N, two whole numbers with 1 <= K <= N (e.g. 2/4)"},
-      {"", "CI_NODE_INDEX=4 CI_NODE_TOTAL=3",
-       "GitLab CI_NODE_INDEX=4 CI_NODE_TOTAL=3: the shard index must be from 1 to 3, got 4"},
-      {"", "SLURM_ARRAY_TASK_ID=9 SLURM_ARRAY_TASK_MIN=5 SLURM_ARRAY_TASK_COUNT=4",
-       "Slurm SLURM_ARRAY_TASK_ID=9 SLURM_ARRAY_TASK_MIN=5 SLURM_ARRAY_TASK_COUNT=4: the shard index "
-       "must be from 1 to 4, got 5"},
-      {"", "JOB_COMPLETION_INDEX=3 URDFSNAP_SHARD_COUNT=3",
-       "Kubernetes JOB_COMPLETION_INDEX=3 URDFSNAP_SHARD_COUNT=3: the shard index must be from 1 to 3, got 4"},
-      {"", "JOB_COMPLETION_INDEX=0",
-       "Kubernetes Indexed Job: JOB_COMPLETION_INDEX=0 is set (0-based), so the shard count must be "
-       "given as URDFSNAP_SHARD_COUNT (the Job's completions), but URDFSNAP_SHARD_COUNT is not set"},
-      {"", "CI_NODE_INDEX=x CI_NODE_TOTAL=3", "environment variable CI_NODE_INDEX=x: expected a whole number"},
-  };
-  for (const Case& c : cases) {
+  for (const BadShard& c : kBadShards) {
     const Result r = RunUrdfsnap("snapshot check " + suite_ + " " + c.arguments + " --results " +
                                      Path("bad.json") + " --junit " + Path("bad.xml"),
                                  c.environment);

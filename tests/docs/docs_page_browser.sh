@@ -27,7 +27,7 @@ status=0
 page() {
   local name=$1; shift
   echo "== $name"
-  "$urdfsnap" docs "$@" -o "$work/$name"
+  "$urdfsnap" docs "$@" --no-shard -o "$work/$name"
   node "$root/tests/node/docs_page_browser.mjs" "$work/$name" "$(movable "$@")" ${shots:+"$shots/$name.png"} || status=1
 }
 page mrm "$root/models/mrm_description/urdf/mrm.xacro"
