@@ -109,6 +109,8 @@ const std::vector<CommandOption>& Options() {
         {"docs", "--check", Kind::kText},
         {"docs", "--animations", Kind::kText},
         {"docs", "--quiet", Kind::kFlag},
+        {"docs", "--shard", Kind::kText},
+        {"docs", "--no-shard", Kind::kFlag},
         {"animate", "--output", Kind::kText},
         {"animate", "--trajectory", Kind::kText},
         {"animate", "--topic", Kind::kText},
@@ -120,6 +122,8 @@ const std::vector<CommandOption>& Options() {
         {"animate", "--depth", Kind::kText},
         {"animate", "--labels", Kind::kText},
         {"animate", "--quiet", Kind::kFlag},
+        {"animate", "--shard", Kind::kText},
+        {"animate", "--no-shard", Kind::kFlag},
     };
     AddViewOptions(o, "render", "MRM -o OUT");
     AddViewOptions(o, "serve", "MRM --port 0");
