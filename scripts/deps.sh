@@ -7,7 +7,7 @@
 # sanitizer build and scripts/fuzz.sh; the normal build does not need them)
 set -euo pipefail
 packages=(
-  cmake g++ make pkg-config
+  cmake g++ make pkg-config ccache
   liburdfdom-dev libeigen3-dev libstb-dev libjpeg-dev zlib1g-dev
   # GL: the core-profile header; OSMesa; EGL with Mesa's vendor library and drivers (llvmpipe)
   libgl-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
