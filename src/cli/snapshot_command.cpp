@@ -13,11 +13,12 @@
 #include "cli/gl_options.h"
 #include "cli/shard_options.h"
 #include "common/error.h"
+#include "common/number_text.h"
 #include "common/version.h"
-#include "image/png_writer.h"
 #include "gl/gl_context.h"
 #include "snapshot/case_check.h"
 #include "snapshot/case_selection.h"
+#include "snapshot/golden_files.h"
 #include "snapshot/report_images.h"
 #include "snapshot/reports.h"
 #include "snapshot/results_file.h"
@@ -50,6 +51,14 @@ std::string SuiteFormatHelp() {
          "      packages: {PKG: DIR}\n"
          "      joints: {JOINT: VALUE} | FILE  rad or m, or a joint file\n"
          "      max-delta / max-fraction / max-mean: as for urdfsnap diff\n"
+         "      depth: true                    also a depth golden NAME.depth.png (16-bit mm);\n"
+         "                                     depth-golden: FILE.png, depth-max-delta: MM (default " +
+         std::to_string(image::DefaultTolerance(image::Gray16Kind::kDepth).max_delta) + "),\n"
+         "                                     depth-max-fraction: F (default " +
+         FormatNumber(image::DefaultTolerance(image::Gray16Kind::kDepth).max_fraction) + ")\n"
+         "      labels: true                   also a link-label golden NAME.labels.png (+ .json);\n"
+         "                                     labels-golden: FILE.png, labels-max-fraction: F (default " +
+         FormatNumber(image::DefaultTolerance(image::Gray16Kind::kLabels).max_fraction) + ")\n"
          "  and render's options without the dashes:" + keys + "\n";
 }
 
@@ -128,17 +137,19 @@ void Update(const SnapshotOptions& o) {
       PrintCaseLine(record.status == snapshot::CaseStatus::kError ? "ERROR" : "same", c->name,
                     record.message);
     } else {
-      const auto folder = std::filesystem::path(c->golden).parent_path();
-      if (!folder.empty()) std::filesystem::create_directories(folder);
-      image::WritePng(r.actual, c->golden);
-      PrintCaseLine("wrote", c->name, c->golden + " (was " + snapshot::StatusWord(record.status) + ")");
+      const auto robot = session.LoadRobot(c->request.model, warnings);
+      std::string files;
+      for (const std::string& file : snapshot::WriteGoldens(*c, r, o.force, *robot)) {
+        files += (files.empty() ? "" : ", ") + file;
+        ++written;
+      }
+      PrintCaseLine("wrote", c->name, files + " (was " + snapshot::StatusWord(record.status) + ")");
       record.status = snapshot::CaseStatus::kPassed;
-      ++written;
     }
     records.push_back(std::move(record));
   }
   PrintWarnings(warnings);
-  std::printf("%d of %zu goldens written; look at each before committing it\n", written, s.cases.size());
+  std::printf("%d goldens of %zu cases written; look at each before committing it\n", written, s.cases.size());
   std::fflush(stdout);
   if (const int status = snapshot::ExitStatus(records); status != 0) throw CommandExit{status};
 }

@@ -60,7 +60,11 @@ inline constexpr int kMaxImageSide = 16384;
 // positive size within kMaxImageSide and rgb holds exactly width * height * 3 bytes.
 void CheckImage(const Image& image, std::string_view role);
 
+// CheckImage's size check alone, for images of other pixel types.
+void CheckImageSize(int width, int height, std::string_view role);
+
 // "640x480".
 std::string SizeText(const Image& image);
+std::string SizeText(int width, int height);
 
 }  // namespace urdfsnap::image

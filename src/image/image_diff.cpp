@@ -40,20 +40,20 @@ DiffStats CompareImages(const Image& expected, const Image& actual, int delta) {
       delta_sum += d;
       stats.max_delta = std::max(stats.max_delta, d);
       if (d <= delta) continue;
-      if (stats.pixels_over++ == 0) {
-        stats.min_x = stats.max_x = x;
-        stats.min_y = stats.max_y = y;
-      }
-      stats.min_x = std::min(stats.min_x, x);
-      stats.max_x = std::max(stats.max_x, x);
-      stats.min_y = std::min(stats.min_y, y);
-      stats.max_y = std::max(stats.max_y, y);
+      ++stats.pixels_over;
+      GrowRegion(stats, x, y);
     }
   }
   const double pixel_count = double(expected.width) * expected.height;
   stats.mean_delta = delta_sum / pixel_count;
   stats.fraction_over = stats.pixels_over / pixel_count;
   return stats;
+}
+
+std::uint8_t DimmedGrey(const std::uint8_t* rgb) {
+  // Rec. 601 luma in 0..255, squeezed into 64..127 so that no grey comes near magenta or yellow
+  const int luma = (77 * rgb[0] + 150 * rgb[1] + 29 * rgb[2]) >> 8;
+  return static_cast<std::uint8_t>(64 + luma / 4);
 }
 
 bool WithinTolerance(const DiffStats& stats, const DiffTolerance& tolerance) {
@@ -89,10 +89,7 @@ Image MakeDiffImage(const Image& expected, const Image& actual, int delta) {
       out[0] = 255, out[1] = 200, out[2] = 0;
       continue;
     }
-    // Rec. 601 luma in 0..255, squeezed into 64..127 so that no grey comes near magenta or yellow
-    const std::uint8_t* in = &expected.rgb[3 * i];
-    const int luma = (77 * in[0] + 150 * in[1] + 29 * in[2]) >> 8;
-    std::fill_n(out, 3, static_cast<std::uint8_t>(64 + luma / 4));
+    std::fill_n(out, 3, DimmedGrey(&expected.rgb[3 * i]));
   }
   return diff;
 }

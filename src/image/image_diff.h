@@ -2,6 +2,7 @@
 // that shows where they differ.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "image/image.h"
@@ -30,6 +31,25 @@ struct DiffTolerance {
   double max_fraction = 0.0001;  // images differ when more than this fraction of pixels changed
   double max_mean = 0.1;         // ... or when the mean pixel delta (0..255) is above this
 };
+
+// Grows the inclusive bounding box (min_x, min_y, max_x, max_y; all -1 while empty) of `stats`, a
+// DiffStats or Gray16DiffStats, by the pixel (x, y).
+template <typename Stats>
+void GrowRegion(Stats& stats, int x, int y) {
+  if (stats.min_x < 0) {
+    stats.min_x = stats.max_x = x;
+    stats.min_y = stats.max_y = y;
+    return;
+  }
+  stats.min_x = x < stats.min_x ? x : stats.min_x;
+  stats.max_x = x > stats.max_x ? x : stats.max_x;
+  stats.min_y = y < stats.min_y ? y : stats.min_y;
+  stats.max_y = y > stats.max_y ? y : stats.max_y;
+}
+
+// The grey (64..127) MakeDiffImage draws an unchanged pixel of colour `rgb` in: its Rec. 601 luma
+// squeezed so that no grey comes near the diff colours.
+std::uint8_t DimmedGrey(const std::uint8_t* rgb);
 
 // True when `stats` (from CompareImages with tolerance.max_delta) are within `tolerance`.
 bool WithinTolerance(const DiffStats& stats, const DiffTolerance& tolerance);

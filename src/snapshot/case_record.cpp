@@ -10,6 +10,29 @@ constexpr CaseStatus kStatuses[] = {CaseStatus::kPassed, CaseStatus::kFailed, Ca
 
 }  // namespace
 
+std::vector<std::string> ReportImageFiles(const CaseRecord& record) {
+  std::vector<const ReportImages*> sets{&record.images};
+  for (const auto* part : {&record.depth, &record.labels}) {
+    if (*part) sets.push_back(&(*part)->images);
+  }
+  std::vector<std::string> files;
+  for (const ReportImages* images : sets) {
+    for (const std::string* file : {&images->expected, &images->actual, &images->diff}) {
+      if (!file->empty()) files.push_back(*file);
+    }
+  }
+  return files;
+}
+
+CaseStatus CombinedStatus(std::initializer_list<CaseStatus> parts) {
+  CaseStatus status = CaseStatus::kPassed;
+  for (const CaseStatus part : parts) {
+    if (part == CaseStatus::kFailed) return part;
+    if (part == CaseStatus::kMissing) status = part;
+  }
+  return status;
+}
+
 const char* StatusWord(CaseStatus status) {
   switch (status) {
     case CaseStatus::kPassed: return "ok";

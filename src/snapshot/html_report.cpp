@@ -1,6 +1,7 @@
 // WriteHtmlReport: index.html with inline CSS and JavaScript, referring to the PNGs beside it. The
 // swipe view stacks the actual image over the expected one and clips it at the slider position.
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "common/atomic_file.h"
@@ -26,6 +27,7 @@ td, th { border-bottom: 1px solid #444; padding: 0.3em 0.8em; text-align: left; 
 .ok { color: #6fcf73; } .FAILED, .MISSING, .ERROR { color: #ff6b6b; font-weight: bold; }
 section { border: 1px solid #444; border-radius: 6px; padding: 0 1em 1em; margin-bottom: 2em; }
 .figures { font-family: monospace; }
+.legend { color: #aaa; font-size: 0.9em; }
 .trio { display: flex; flex-wrap: wrap; gap: 1em; }
 figure { margin: 0; }
 figcaption { color: #aaa; font-size: 0.9em; margin-top: 0.3em; }
@@ -70,27 +72,29 @@ std::string Figure(const std::string& file, const std::string& caption) {
          "\" loading=\"lazy\"><figcaption>" + EscapeMarkup(caption) + "</figcaption></figure>\n";
 }
 
-// The section of one case that did not pass: its figures and the images it has.
-std::string CaseSection(const CaseRecord& r) {
-  const ReportImages& images = r.images;
+// The images of one comparison (colour, depth or labels): the trio, then the swipe view when it
+// has all three. `what` is "" for colour, else "depth" or "labels".
+std::string ImageBlock(const ReportImages& images, const std::string& what, const std::string& golden,
+                       CaseStatus status) {
+  const std::string prefix = what.empty() ? "" : what + " ";
   std::ostringstream html;
-  html << "<section id=\"" << EscapeMarkup(r.name) << "\">\n<h2>" << EscapeMarkup(r.name)
-       << " <span class=\"" << StatusWord(r.status) << "\">" << StatusWord(r.status) << "</span>"
-       << (r.shard.empty() ? "" : " <small>shard " + EscapeMarkup(r.shard) + "</small>")
-       << "</h2>\n<p class=\"figures\">" << EscapeMarkup(r.message) << "</p>\n";
   html << "<div class=\"trio\">\n";
-  if (!images.expected.empty()) html << Figure(images.expected, "expected: " + r.golden);
+  if (!images.expected.empty()) html << Figure(images.expected, prefix + "expected: " + golden);
   if (!images.actual.empty()) {
-    html << Figure(images.actual, r.status == CaseStatus::kMissing
-                                      ? "actual (no golden yet: urdfsnap snapshot update creates it)"
-                                      : "actual");
+    html << Figure(images.actual, prefix + (status == CaseStatus::kMissing
+                                                ? "actual (no golden yet: urdfsnap snapshot update creates it)"
+                                                : "actual"));
   }
   if (!images.diff.empty()) {
-    html << Figure(images.diff, "diff: magenta over the delta, yellow changed less, over the dimmed expected image");
+    html << Figure(images.diff, prefix + (what.empty()
+        ? "diff: magenta over the delta, yellow changed less, over the dimmed expected image"
+        : "diff: magenta over the tolerance, cyan robot in one image only, yellow changed less, over the "
+          "dimmed expected picture"));
   }
   html << "</div>\n";
   if (!images.expected.empty() && !images.actual.empty() && !images.diff.empty()) {
-    html << "<h3>Swipe: expected on the left, actual on the right</h3>\n<div class=\"swipe\">"
+    html << "<h3>Swipe" << (what.empty() ? "" : " (" + what + ")")
+         << ": expected on the left, actual on the right</h3>\n<div class=\"swipe\">"
          << "<img class=\"expected\" src=\"" << EscapeMarkup(images.expected) << "\" alt=\"expected\" loading=\"lazy\">"
          << "<img class=\"actual\" src=\"" << EscapeMarkup(images.actual) << "\" alt=\"actual\" loading=\"lazy\">"
          << "<div class=\"line\"></div><span class=\"tag\" style=\"left:6px\">expected</span>"
@@ -98,6 +102,29 @@ std::string CaseSection(const CaseRecord& r) {
          << "<input class=\"slider\" type=\"range\" min=\"0\" max=\"100\" value=\"50\" "
          << "aria-label=\"swipe between expected and actual\">\n";
   }
+  return html.str();
+}
+
+// The depth or labels part of a case that did not pass: its heading, figures and pictures.
+std::string Gray16Block(const std::optional<Gray16Record>& part, const std::string& what, const char* legend) {
+  if (!part || part->status == CaseStatus::kPassed) return "";
+  return "<h3>" + EscapeMarkup(what) + " <span class=\"" + StatusWord(part->status) + "\">" +
+         StatusWord(part->status) + "</span></h3>\n<p class=\"figures\">" + EscapeMarkup(part->message) +
+         "</p>\n<p class=\"legend\">" + legend + "</p>\n" + ImageBlock(part->images, what, part->golden, part->status);
+}
+
+// The section of one case that did not pass: its figures and the images it has.
+std::string CaseSection(const CaseRecord& r) {
+  std::ostringstream html;
+  html << "<section id=\"" << EscapeMarkup(r.name) << "\">\n<h2>" << EscapeMarkup(r.name)
+       << " <span class=\"" << StatusWord(r.status) << "\">" << StatusWord(r.status) << "</span>"
+       << (r.shard.empty() ? "" : " <small>shard " + EscapeMarkup(r.shard) + "</small>")
+       << "</h2>\n<p class=\"figures\">" << EscapeMarkup(r.message) << "</p>\n";
+  html << ImageBlock(r.images, "", r.golden, r.status);
+  html << Gray16Block(r.depth, "depth",
+                      "Depth in false colour: near yellow, through green and blue, to far purple (expected and "
+                      "actual over the same range); black: no robot.");
+  html << Gray16Block(r.labels, "labels", "One colour per link (the same link, the same colour); black: no robot.");
   html << "</section>\n";
   return html.str();
 }

@@ -36,6 +36,15 @@ std::string Seconds(double seconds) {
   return text;
 }
 
+// "\ndepth golden: PATH (FAILED)\nlabels golden: PATH (ok)" for the case's depth and labels goldens.
+std::string Gray16Goldens(const CaseRecord& r) {
+  std::string text;
+  for (const auto& [what, part] : {std::pair{"depth", &r.depth}, std::pair{"labels", &r.labels}}) {
+    if (*part) text += std::string("\n") + what + " golden: " + EscapeMarkup((*part)->golden) + " (" + StatusWord((*part)->status) + ")";
+  }
+  return text;
+}
+
 }  // namespace
 
 std::string Summary(const std::vector<CaseRecord>& records) {
@@ -80,7 +89,7 @@ void WriteJunitReport(const std::string& path, const std::string& suite_path,
       const std::string element = r.status == CaseStatus::kError ? "error" : "failure";
       const std::string message = EscapeMarkup(r.message);
       testcase += "      <" + element + " type=\"" + StatusWord(r.status) + "\" message=\"" + message +
-                  "\">" + message + "\ngolden: " + EscapeMarkup(r.golden) +
+                  "\">" + message + "\ngolden: " + EscapeMarkup(r.golden) + Gray16Goldens(r) +
                   (r.shard.empty() ? "" : "\nshard: " + EscapeMarkup(r.shard)) + "</" + element + ">\n";
     }
     xml.Write(testcase + "    </testcase>\n");

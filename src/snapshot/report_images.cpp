@@ -18,6 +18,18 @@ std::string WriteOne(const std::string& dir, const std::string& name, const char
   return file;
 }
 
+// The pictures of a depth or labels image that did not pass, as NAME.KIND.expected.png, ...
+void WriteGray16Pictures(const std::string& dir, const std::string& name, const char* kind,
+                         std::optional<Gray16Record>& record, Gray16Result& result) {
+  if (record && record->status != CaseStatus::kPassed) {
+    const std::string prefix = name + "." + kind;
+    record->images.expected = WriteOne(dir, prefix, "expected", result.expected_picture);
+    record->images.actual = WriteOne(dir, prefix, "actual", result.actual_picture);
+    record->images.diff = WriteOne(dir, prefix, "diff", result.diff_picture);
+  }
+  result = Gray16Result{};
+}
+
 }  // namespace
 
 void WriteReportImages(const std::string& dir, CaseResult& result) {
@@ -28,6 +40,8 @@ void WriteReportImages(const std::string& dir, CaseResult& result) {
     record.images.diff = WriteOne(dir, record.name, "diff", result.diff);
   }
   result.expected = result.actual = result.diff = image::Image{};
+  WriteGray16Pictures(dir, record.name, "depth", record.depth, result.depth);
+  WriteGray16Pictures(dir, record.name, "labels", record.labels, result.labels);
 }
 
 }  // namespace urdfsnap::snapshot

@@ -1,5 +1,7 @@
 // The images of a case that did not pass, written into the report folder as soon as the case is
-// checked: NAME.expected.png, NAME.actual.png and NAME.diff.png (those it has).
+// checked: NAME.expected.png, NAME.actual.png and NAME.diff.png (those it has), and for a depth or
+// labels image that did not pass its viewable pictures NAME.depth.expected.png, ...,
+// NAME.labels.diff.png.
 #pragma once
 
 #include <string>

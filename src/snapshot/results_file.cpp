@@ -27,16 +27,49 @@ std::string RelativeToResults(const std::string& report_dir, const std::string& 
   return relative.empty() ? report.string() : relative.string();
 }
 
+// The bounding box of a comparison's pixels over its tolerance, or null when there are none.
+template <typename Stats>
+Json RegionJson(const Stats& f) {
+  if (f.pixels_over == 0) return nullptr;
+  return {{"min_x", f.min_x}, {"min_y", f.min_y}, {"max_x", f.max_x}, {"max_y", f.max_y}};
+}
+
 Json FiguresJson(const image::DiffStats& f) {
   Json figures = {{"max_delta", f.max_delta},
                   {"mean_delta", f.mean_delta},
                   {"pixels_over", f.pixels_over},
                   {"fraction_over", f.fraction_over},
                   {"region", nullptr}};
-  if (f.pixels_over > 0) {
-    figures["region"] = {{"min_x", f.min_x}, {"min_y", f.min_y}, {"max_x", f.max_x}, {"max_y", f.max_y}};
-  }
+  figures["region"] = RegionJson(f);
   return figures;
+}
+
+Json ImagesJson(const ReportImages& images) {
+  Json json = Json::object();
+  for (const auto& [kind, file] : {std::pair{"expected", &images.expected},
+                                   std::pair{"actual", &images.actual}, std::pair{"diff", &images.diff}}) {
+    if (!file->empty()) json[kind] = *file;
+  }
+  return json;
+}
+
+Json Gray16Json(const Gray16Record& r) {
+  Json figures = nullptr;
+  if (r.figures) {
+    const image::Gray16DiffStats& f = *r.figures;
+    figures = {{"max_delta", f.max_delta},
+               {"pixels_over", f.pixels_over},
+               {"pixels_coverage", f.pixels_coverage},
+               {"fraction_over", f.fraction_over},
+               {"region", nullptr}};
+    figures["region"] = RegionJson(f);
+  }
+  return {{"golden", r.golden},
+          {"status", StatusName(r.status)},
+          {"message", r.message},
+          {"tolerance", {{"max_delta", r.tolerance.max_delta}, {"max_fraction", r.tolerance.max_fraction}}},
+          {"figures", figures},
+          {"images", ImagesJson(r.images)}};
 }
 
 Json CaseJson(const CaseRecord& r) {
@@ -51,11 +84,9 @@ Json CaseJson(const CaseRecord& r) {
                            {"max_fraction", r.tolerance.max_fraction},
                            {"max_mean", r.tolerance.max_mean}}},
             {"figures", r.figures ? FiguresJson(*r.figures) : Json(nullptr)},
-            {"images", Json::object()}};
-  for (const auto& [kind, file] : {std::pair{"expected", &r.images.expected},
-                                   std::pair{"actual", &r.images.actual}, std::pair{"diff", &r.images.diff}}) {
-    if (!file->empty()) c["images"][kind] = *file;
-  }
+            {"images", ImagesJson(r.images)}};
+  if (r.depth) c["depth"] = Gray16Json(*r.depth);
+  if (r.labels) c["labels"] = Gray16Json(*r.labels);
   if (!r.shard.empty()) c["shard"] = r.shard;
   return c;
 }
@@ -115,21 +146,73 @@ class FieldReader {
 
 constexpr int kMaxInt = 2'147'483'647;
 
+template <typename Stats>
+void ReadRegion(const FieldReader& in, const Json& f, const std::string& place, Stats& stats) {
+  const Json& region = in.Member(f, "region", place);
+  if (region.is_null()) return;
+  const std::string here = place + ".region";
+  stats.min_x = in.Whole(region, "min_x", here, 0, kMaxInt);
+  stats.min_y = in.Whole(region, "min_y", here, 0, kMaxInt);
+  stats.max_x = in.Whole(region, "max_x", here, 0, kMaxInt);
+  stats.max_y = in.Whole(region, "max_y", here, 0, kMaxInt);
+}
+
 image::DiffStats ReadFigures(const FieldReader& in, const Json& f, const std::string& place) {
   image::DiffStats stats;
   stats.max_delta = in.Whole(f, "max_delta", place, 0, 255);
   stats.mean_delta = in.Number(f, "mean_delta", place);
   stats.pixels_over = in.Whole(f, "pixels_over", place, 0, kMaxInt);
   stats.fraction_over = in.Number(f, "fraction_over", place);
-  const Json& region = in.Member(f, "region", place);
-  if (!region.is_null()) {
-    const std::string here = place + ".region";
-    stats.min_x = in.Whole(region, "min_x", here, 0, kMaxInt);
-    stats.min_y = in.Whole(region, "min_y", here, 0, kMaxInt);
-    stats.max_x = in.Whole(region, "max_x", here, 0, kMaxInt);
-    stats.max_y = in.Whole(region, "max_y", here, 0, kMaxInt);
-  }
+  ReadRegion(in, f, place, stats);
   return stats;
+}
+
+// The report image names of `object` at `place` ("cases[3].images"): file names inside the report
+// folder, never a path out of it.
+ReportImages ReadImages(const FieldReader& in, const Json& images, const std::string& place) {
+  if (!images.is_object()) throw in.Bad(place, "expected an object");
+  ReportImages r;
+  for (const auto& [kind, file] : {std::pair{"expected", &r.expected}, std::pair{"actual", &r.actual},
+                                   std::pair{"diff", &r.diff}}) {
+    if (!images.contains(kind)) continue;
+    *file = in.Text(images, kind, place);
+    if (fs::path(*file).filename() != *file || *file == "." || *file == "..") {
+      throw in.Bad(place + "." + kind, "'" + *file + "' is not a file name");
+    }
+  }
+  return r;
+}
+
+CaseStatus ReadStatus(const FieldReader& in, const Json& c, const std::string& place) {
+  const std::string status = in.Text(c, "status", place);
+  const auto parsed = StatusFromName(status);
+  if (!parsed) throw in.Bad(place + ".status", "expected passed, failed, missing or error, got '" + status + "'");
+  return *parsed;
+}
+
+// A case's "depth" or "labels" object.
+Gray16Record ReadGray16(const FieldReader& in, const Json& g, const std::string& place) {
+  Gray16Record r;
+  r.golden = in.Text(g, "golden", place);
+  r.status = ReadStatus(in, g, place);
+  if (r.status == CaseStatus::kError) throw in.Bad(place + ".status", "expected passed, failed or missing, got 'error'");
+  r.message = in.Text(g, "message", place);
+  const Json& tolerance = in.Member(g, "tolerance", place);
+  r.tolerance.max_delta = in.Whole(tolerance, "max_delta", place + ".tolerance", 0, 65535);
+  r.tolerance.max_fraction = in.Number(tolerance, "max_fraction", place + ".tolerance");
+  const Json& f = in.Member(g, "figures", place);
+  if (!f.is_null()) {
+    const std::string here = place + ".figures";
+    image::Gray16DiffStats stats;
+    stats.max_delta = in.Whole(f, "max_delta", here, 0, 65535);
+    stats.pixels_over = in.Whole(f, "pixels_over", here, 0, kMaxInt);
+    stats.pixels_coverage = in.Whole(f, "pixels_coverage", here, 0, kMaxInt);
+    stats.fraction_over = in.Number(f, "fraction_over", here);
+    ReadRegion(in, f, here, stats);
+    r.figures = stats;
+  }
+  r.images = ReadImages(in, in.Member(g, "images", place), place + ".images");
+  return r;
 }
 
 CaseRecord ReadCase(const FieldReader& in, const Json& c, const std::string& place) {
@@ -138,10 +221,7 @@ CaseRecord ReadCase(const FieldReader& in, const Json& c, const std::string& pla
   if (!IsCaseName(r.name)) throw in.Bad(place + ".name", "'" + r.name + "' is not a case name");
   r.index = in.Whole(c, "index", place, 0, kMaxInt);
   r.line = in.Whole(c, "line", place, 0, kMaxInt);
-  const std::string status = in.Text(c, "status", place);
-  const auto parsed = StatusFromName(status);
-  if (!parsed) throw in.Bad(place + ".status", "expected passed, failed, missing or error, got '" + status + "'");
-  r.status = *parsed;
+  r.status = ReadStatus(in, c, place);
   r.message = in.Text(c, "message", place);
   r.seconds = in.Number(c, "seconds", place);
   r.golden = in.Text(c, "golden", place);
@@ -151,15 +231,9 @@ CaseRecord ReadCase(const FieldReader& in, const Json& c, const std::string& pla
   r.tolerance.max_mean = in.Number(tolerance, "max_mean", place + ".tolerance");
   const Json& figures = in.Member(c, "figures", place);
   if (!figures.is_null()) r.figures = ReadFigures(in, figures, place + ".figures");
-  const Json& images = in.Member(c, "images", place);
-  if (!images.is_object()) throw in.Bad(place + ".images", "expected an object");
-  for (const auto& [kind, file] : {std::pair{"expected", &r.images.expected},
-                                   std::pair{"actual", &r.images.actual}, std::pair{"diff", &r.images.diff}}) {
-    if (!images.contains(kind)) continue;
-    *file = in.Text(images, kind, place + ".images");
-    // a file name inside the report folder, never a path out of it
-    if (fs::path(*file).filename() != *file || *file == "." || *file == "..") throw in.Bad(place + ".images." + kind, "'" + *file + "' is not a file name");
-  }
+  r.images = ReadImages(in, in.Member(c, "images", place), place + ".images");
+  if (c.contains("depth")) r.depth = ReadGray16(in, c["depth"], place + ".depth");
+  if (c.contains("labels")) r.labels = ReadGray16(in, c["labels"], place + ".labels");
   if (c.contains("shard")) r.shard = in.Text(c, "shard", place);
   return r;
 }

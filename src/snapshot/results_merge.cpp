@@ -117,15 +117,14 @@ void CollectReportImages(const MergedResults& merged, const std::string& dir) {
   std::vector<std::pair<fs::path, fs::path>> copies;
   for (std::size_t i = 0; i < merged.cases.size(); ++i) {
     const CaseRecord& r = merged.cases[i];
-    for (const std::string* file : {&r.images.expected, &r.images.actual, &r.images.diff}) {
-      if (file->empty()) continue;
-      const fs::path source = fs::path(merged.image_dirs[i]) / *file;
+    for (const std::string& file : ReportImageFiles(r)) {
+      const fs::path source = fs::path(merged.image_dirs[i]) / file;
       std::error_code error;
       if (!fs::is_regular_file(source, error)) {
         throw Error(source.string() + ": the report image of case '" + r.name + "' (shard " + r.shard +
                     ") is not there; keep each shard's report folder beside its results file");
       }
-      copies.emplace_back(source, fs::path(dir) / *file);
+      copies.emplace_back(source, fs::path(dir) / file);
     }
   }
   fs::create_directories(dir);

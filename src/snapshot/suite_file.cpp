@@ -73,6 +73,11 @@ class SuiteReader {
       if (!names.insert(c.name).second) throw ErrorAt(node, "a second case named '" + c.name + "'");
       if (c.request.model.path.empty()) throw ErrorAt(node, "case '" + c.name + "' has no 'model'");
       if (c.golden.empty()) c.golden = Resolve(c.name + ".png");
+      for (auto [golden, suffix] : {std::pair{&c.depth, ".depth.png"}, std::pair{&c.labels, ".labels.png"}}) {
+        if (golden->wanted && golden->golden.empty()) {
+          golden->golden = fs::path(c.golden).replace_extension(suffix).string();
+        }
+      }
       suite.cases.push_back(std::move(c));
     }
     return suite;
@@ -184,13 +189,30 @@ class SuiteReader {
       c.tolerance.max_fraction = Number(value, key, 0, 1);
     } else if (key == "max-mean") {
       c.tolerance.max_mean = Number(value, key, 0, 255);
-    } else if (!ApplyRenderOption(key, value, r)) {
+    } else if (!ApplyGray16Key(key, value, c) && !ApplyRenderOption(key, value, r)) {
       throw ErrorAt(key_node, KnownKeysHint(key));
     }
   }
 
+  // depth, depth-max-delta, depth-max-fraction, labels, labels-max-fraction (the -golden keys belong
+  // to a case: ApplyKeys).
+  bool ApplyGray16Key(const std::string& key, const YAML::Node& value, SnapshotCase& c) const {
+    if (key == "depth" || key == "labels") {
+      (key == "depth" ? c.depth : c.labels).wanted = Flag(value, key);
+    } else if (key == "depth-max-delta") {
+      c.depth.tolerance.max_delta = static_cast<int>(Number(value, key, 0, 65535));
+    } else if (key == "depth-max-fraction" || key == "labels-max-fraction") {
+      (key == "depth-max-fraction" ? c.depth : c.labels).tolerance.max_fraction = Number(value, key, 0, 1);
+    } else {
+      return false;
+    }
+    return true;
+  }
+
   std::string KnownKeysHint(const std::string& key) const {
-    std::string keys = "name, golden, model, args, packages, xacro-ns, joints, max-delta, max-fraction, max-mean";
+    std::string keys = "name, golden, model, args, packages, xacro-ns, joints, max-delta, max-fraction, max-mean, "
+                       "depth, depth-golden, depth-max-delta, depth-max-fraction, labels, labels-golden, "
+                       "labels-max-fraction";
     for (const auto& option : request::TextOptions()) keys += std::string(", ") + option.name;
     for (const auto& option : request::FlagOptions()) keys += std::string(", ") + option.name;
     return "unknown key '" + key + "' (known: " + keys + ")";
@@ -204,10 +226,14 @@ class SuiteReader {
       const YAML::Node& value = pair.second;
       const std::string key = key_node.Scalar();
       if (!seen.insert(key).second) throw ErrorAt(key_node, "'" + key + "' is given twice");
-      if (key == "name" || key == "golden") {
+      if (key == "name" || key == "golden" || key == "depth-golden" || key == "labels-golden") {
         if (is_defaults) throw ErrorAt(key_node, "'" + key + "' belongs to a case, not to 'defaults'");
         if (key == "golden") {
           c.golden = Resolve(Text(value, key));
+        } else if (key != "name") {
+          Gray16Golden& golden = key == "depth-golden" ? c.depth : c.labels;
+          golden.golden = Resolve(Text(value, key));
+          c.option_lines[key] = LineOf(key_node);
         } else if (c.name = Text(value, key); !IsCaseName(c.name)) {
           throw ErrorAt(value, "case name '" + c.name + "': use letters, digits, '_', '-' and '.'");
         }
@@ -215,6 +241,16 @@ class SuiteReader {
       }
       ApplyKey(key_node, value, c);
       c.option_lines[key] = LineOf(key_node);
+    }
+    // a golden path asks for the image, unless the case says it does not want it
+    for (const char* kind : {"depth", "labels"}) {
+      Gray16Golden& golden = std::string(kind) == "depth" ? c.depth : c.labels;
+      const std::string path_key = std::string(kind) + "-golden";
+      if (!seen.count(path_key)) continue;
+      if (seen.count(kind) && !golden.wanted) {
+        throw ErrorAt(map[path_key], "'" + path_key + "' given with '" + kind + ": false'");
+      }
+      golden.wanted = true;
     }
   }
 

@@ -10,12 +10,16 @@
 //       args: {use_gripper: "true"}            # xacro NAME:=VALUE
 //       fit: true
 //       golden: goldens/reach.png
+//       depth: true                # also goldens/reach.depth.png (16-bit, mm)
+//       labels: true               # also goldens/reach.labels.png (16-bit, 1 + link index)
 //
 // Case keys: name, golden, model, args, packages (PKG: DIR), xacro-ns, joints, every view and
 // display option of `urdfsnap render` under its option name without the dashes (yaw, fit,
-// background, rviz, tf, no-grid, ...), and the tolerance of `urdfsnap diff` (max-delta,
-// max-fraction, max-mean). A case's keys replace those of `defaults`, except that `joints`, `args`
-// and `packages` add to them (a name given in both takes the case's value).
+// background, rviz, tf, no-grid, ...), the tolerance of `urdfsnap diff` (max-delta,
+// max-fraction, max-mean), and the depth and label goldens: depth, depth-golden, depth-max-delta,
+// depth-max-fraction, labels, labels-golden, labels-max-fraction. A case's keys replace those of
+// `defaults`, except that `joints`, `args` and `packages` add to them (a name given in both takes
+// the case's value).
 #pragma once
 
 #include <map>
@@ -23,10 +27,18 @@
 #include <string_view>
 #include <vector>
 
+#include "image/gray16_diff.h"
 #include "image/image_diff.h"
 #include "request/render_request.h"
 
 namespace urdfsnap::snapshot {
+
+// A depth or link-label golden of a case, beside its colour golden.
+struct Gray16Golden {
+  bool wanted = false;         // `depth: true` / `labels: true` (or a `depth-golden:` path)
+  std::string golden;          // its path; default the colour golden's with .depth.png / .labels.png
+  image::Gray16Tolerance tolerance;
+};
 
 struct SnapshotCase {
   std::string name;
@@ -35,6 +47,8 @@ struct SnapshotCase {
   request::RenderRequest request;
   std::string golden;         // path of the golden PNG (relative to the working directory)
   image::DiffTolerance tolerance;
+  Gray16Golden depth{false, "", image::DefaultTolerance(image::Gray16Kind::kDepth)};
+  Gray16Golden labels{false, "", image::DefaultTolerance(image::Gray16Kind::kLabels)};
   std::map<std::string, int> option_lines;  // the line each option was given on
 };
 

@@ -32,13 +32,15 @@ def main():
         suite = os.path.join(work, "suite.yaml")
         with open(suite, "w") as f:
             f.write(f"defaults:\n  model: {model}\n  size: 160x120\ncases:\n"
-                    "  - name: home\n"
-                    "  - name: drifted\n    joints: {link_01__link_02: 0.8}\n"
-                    "  - name: new_view\n    yaw: 1.0\n"
+                    "  - name: home\n    depth: true\n    labels: true\n"
+                    "  - name: drifted\n    joints: {link_01__link_02: 0.8}\n    depth: true\n    labels: true\n"
+                    "  - name: new_view\n    yaw: 1.0\n    labels: true\n"
                     "  - name: broken\n    joints: {nope: 1}\n")
         run(urdfsnap, "snapshot", "update", suite, expect={2})
-        os.remove(os.path.join(work, "new_view.png"))
-        shutil.copy(os.path.join(work, "home.png"), os.path.join(work, "drifted.png"))
+        for kind in (".png", ".labels.png"):
+            os.remove(os.path.join(work, "new_view" + kind))
+        for kind in (".png", ".depth.png", ".labels.png"):
+            shutil.copy(os.path.join(work, "home" + kind), os.path.join(work, "drifted" + kind))
         files = []
         for name, shard in (("whole", []), ("one", ["--shard", "1/2"]), ("two", ["--shard", "2/2"])):
             files.append(os.path.join(work, name, "results.json"))
@@ -47,14 +49,24 @@ def main():
         files.append(os.path.join(work, "merged.json"))
         run(urdfsnap, "snapshot", "merge", files[1], files[2], "--results", files[-1],
             "--report", os.path.join(work, "merged_report"), expect={2})
-        statuses = set()
+        statuses, part_statuses = set(), set()
         for path in files:
             with open(path) as f:
                 results = json.load(f)
             validator.validate(results)
             statuses |= {c["status"] for c in results["cases"]}
+            part_statuses |= {c[part]["status"] for c in results["cases"] for part in ("depth", "labels") if part in c}
         if statuses != {"passed", "failed", "missing", "error"}:
             sys.exit(f"expected every status in the files, got {statuses}")
+        if part_statuses != {"passed", "failed", "missing"}:
+            sys.exit(f"expected every depth/labels status in the files, got {part_statuses}")
+        drifted = next(c for c in results["cases"] if c["name"] == "drifted")
+        if drifted["depth"]["figures"]["max_delta"] <= 0 or "diff" not in drifted["labels"]["images"]:
+            sys.exit(f"expected depth figures and a labels diff image for 'drifted', got {drifted}")
+        drifted["depth"]["figures"]["pixels_coverage"] = -1
+        if validator.is_valid(results):
+            sys.exit("the schema accepts a depth comparison with -1 pixels")
+        drifted["depth"]["figures"]["pixels_coverage"] = 0
         results["cases"][0]["status"] = "ok"
         if validator.is_valid(results):
             sys.exit("the schema accepts a case with status 'ok'")

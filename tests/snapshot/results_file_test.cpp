@@ -29,6 +29,11 @@ CaseRecord FailedCase() {
   r.tolerance = {12, 0.0005, 0.25};
   r.figures = image::DiffStats{96, 0.41, 0.00264, 812, 233, 120, 301, 274};
   r.images = {"reach_forward.expected.png", "reach_forward.actual.png", "reach_forward.diff.png"};
+  r.depth = Gray16Record{"test/snapshots/reach_forward.depth.png", CaseStatus::kFailed, "max delta 466 mm", {3, 0.0002},
+                         image::Gray16DiffStats{466, 2289, 288, 0.00745, 234, 95, 327, 206},
+                         {"reach_forward.depth.expected.png", "reach_forward.depth.actual.png", "reach_forward.depth.diff.png"}};
+  r.labels = Gray16Record{"test/snapshots/reach_forward.labels.png", CaseStatus::kMissing, "no labels golden",
+                          {0, 0}, std::nullopt, {"", "reach_forward.labels.actual.png", ""}};
   return r;
 }
 
@@ -78,6 +83,25 @@ void ExpectSame(const CaseRecord& a, const CaseRecord& b) {
   EXPECT_EQ(a.images.actual, b.images.actual);
   EXPECT_EQ(a.images.diff, b.images.diff);
   EXPECT_EQ(a.shard, b.shard);
+  for (const auto& [x, y] : {std::pair{&a.depth, &b.depth}, std::pair{&a.labels, &b.labels}}) {
+    ASSERT_EQ(x->has_value(), y->has_value());
+    if (!*x) continue;
+    EXPECT_EQ((*x)->golden, (*y)->golden);
+    EXPECT_EQ((*x)->status, (*y)->status);
+    EXPECT_EQ((*x)->message, (*y)->message);
+    EXPECT_EQ((*x)->tolerance.max_delta, (*y)->tolerance.max_delta);
+    EXPECT_EQ((*x)->tolerance.max_fraction, (*y)->tolerance.max_fraction);
+    ASSERT_EQ((*x)->figures.has_value(), (*y)->figures.has_value());
+    if ((*x)->figures) {
+      EXPECT_EQ((*x)->figures->max_delta, (*y)->figures->max_delta);
+      EXPECT_EQ((*x)->figures->pixels_over, (*y)->figures->pixels_over);
+      EXPECT_EQ((*x)->figures->pixels_coverage, (*y)->figures->pixels_coverage);
+      EXPECT_EQ((*x)->figures->fraction_over, (*y)->figures->fraction_over);
+      EXPECT_EQ((*x)->figures->min_y, (*y)->figures->min_y);
+      EXPECT_EQ((*x)->figures->max_x, (*y)->figures->max_x);
+    }
+    EXPECT_EQ(ReportImageFiles(a), ReportImageFiles(b));
+  }
 }
 
 class ResultsFileTest : public ::testing::Test {
@@ -114,6 +138,8 @@ TEST_F(ResultsFileTest, EveryFieldSurvivesAndTheReportFolderStaysBesideTheFile) 
   EXPECT_EQ(read.cases[1].figures->min_x, -1);  // no region
   EXPECT_EQ(read.cases[2].status, CaseStatus::kError);
   EXPECT_FALSE(read.cases[2].figures.has_value());
+  EXPECT_FALSE(read.cases[1].depth.has_value());  // a case without depth and labels goldens
+  EXPECT_EQ(ReportImageFiles(read.cases[0]).size(), 7u);
 }
 
 TEST_F(ResultsFileTest, WithoutAReportTheFolderIsEmpty) {
@@ -143,6 +169,14 @@ TEST_F(ResultsFileTest, DamagedOrForeignFilesNameTheField) {
       {[](auto& j) { j["cases"][0]["images"]["diff"] = "../../etc/passwd"; },
        "cases[0].images.diff: '../../etc/passwd' is not a file name"},
       {[](auto& j) { j["cases"][2].erase("tolerance"); }, "cases[2].tolerance: missing"},
+      {[](auto& j) { j["cases"][0]["depth"]["images"]["diff"] = "/tmp/x.png"; },
+       "cases[0].depth.images.diff: '/tmp/x.png' is not a file name"},
+      {[](auto& j) { j["cases"][0]["depth"]["status"] = "error"; },
+       "cases[0].depth.status: expected passed, failed or missing, got 'error'"},
+      {[](auto& j) { j["cases"][0]["depth"]["figures"]["pixels_coverage"] = -3; },
+       "cases[0].depth.figures.pixels_coverage: expected a whole number from 0 to 2147483647, got -3"},
+      {[](auto& j) { j["cases"][0]["labels"].erase("golden"); }, "cases[0].labels.golden: missing"},
+      {[](auto& j) { j["cases"][0]["labels"] = 1; }, "cases[0].labels: expected an object, got 1"},
   };
   for (const Case& c : cases) {
     nlohmann::json damaged = good;

@@ -30,7 +30,11 @@ ShardFile ShardOf(const std::vector<std::string>& names, shard::Shard shard, con
     r.name = names[i];
     r.index = i;
     r.status = i % 4 == 0 ? CaseStatus::kFailed : CaseStatus::kPassed;
-    if (r.status == CaseStatus::kFailed) r.images.actual = r.name + ".actual.png";
+    if (r.status == CaseStatus::kFailed) {
+      r.images.actual = r.name + ".actual.png";
+      r.depth = Gray16Record{r.name + ".depth.png", CaseStatus::kFailed, "", {}, std::nullopt, {}};
+      r.depth->images.diff = r.name + ".depth.diff.png";
+    }
     file.results.cases.push_back(r);
   }
   return file;
@@ -101,7 +105,7 @@ TEST(ResultsMerge, ReportImagesComeFromEachShardsFolder) {
     fs::create_directories(dir);
     files.push_back(ShardOf(names, {k, 2}, dir.string()));
     for (const CaseRecord& r : files.back().results.cases) {
-      if (!r.images.actual.empty()) std::ofstream(dir / r.images.actual) << "png of " << r.name;
+      for (const std::string& file : ReportImageFiles(r)) std::ofstream(dir / file) << "png of " << file;
     }
   }
   const MergedResults merged = MergeResults(std::move(files), "1.2.3");
@@ -109,16 +113,29 @@ TEST(ResultsMerge, ReportImagesComeFromEachShardsFolder) {
   CollectReportImages(merged, out.string());
   int copied = 0;
   for (const CaseRecord& r : merged.cases) {
-    if (r.images.actual.empty()) continue;
-    std::ifstream in(out / r.images.actual);
-    std::string text;
-    std::getline(in, text);
-    EXPECT_EQ(text, "png of " + r.name);
-    ++copied;
+    for (const std::string& file : ReportImageFiles(r)) {
+      std::ifstream in(out / file);
+      std::string text;
+      std::getline(in, text);
+      EXPECT_EQ(text, "png of " + file);
+      ++copied;
+    }
   }
-  EXPECT_EQ(copied, 3);  // case_0, case_4, case_8
+  EXPECT_EQ(copied, 6);  // case_0, case_4, case_8: colour and depth
   // merging into a shard's own folder leaves its images in place
   CollectReportImages(merged, (folder.path() / "shard1").string());
+  // a depth image that did not come along fails the merge, naming it
+  for (const CaseRecord& r : merged.cases) {
+    if (!r.depth) continue;
+    fs::remove(folder.path() / ("shard" + r.shard.substr(0, 1)) / r.depth->images.diff);
+    try {
+      CollectReportImages(merged, (folder.path() / "again").string());
+      ADD_FAILURE() << "merged without " << r.depth->images.diff;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(r.depth->images.diff), std::string::npos) << e.what();
+    }
+    break;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,21 @@
+// Writing a case's goldens for `snapshot update`: the colour PNG, and the depth (16-bit mm) and
+// labels (16-bit, with the link names in FILE.json beside it) PNGs of cases that have them; only
+// those that are missing or no longer match, unless forced.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model/robot.h"
+#include "snapshot/case_check.h"
+
+namespace urdfsnap::snapshot {
+
+// Writes the goldens of `c` from `result` (a CheckCase result that is not kError) whose own
+// comparison did not pass, or all with `force`, each atomically, creating their folders. `robot`
+// is the case's robot (the labels golden's link names). Returns the paths written. Throws
+// urdfsnap::Error naming a file that cannot be written.
+std::vector<std::string> WriteGoldens(const SnapshotCase& c, const CaseResult& result, bool force,
+                                      const model::Robot& robot);
+
+}  // namespace urdfsnap::snapshot
