@@ -1,7 +1,7 @@
 // The HTML report of a failing snapshot in a real browser (headless Chromium, Debian's `chromium`,
-// which scripts/deps.sh installs): the three images load and the swipe slider moves the clip
-// between expected and actual. Without Chromium the tests fail in CI (CI=true) and are skipped
-// elsewhere.
+// which scripts/deps.sh installs): the three images load, depth and label pictures show in colour
+// (not black), and the swipe slider moves the clip between expected and actual. Without Chromium
+// the tests fail in CI (CI=true) and are skipped elsewhere.
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_fixture.h"
+#include "image/gray16_diff.h"
 #include "image/png_reader.h"
 
 namespace urdfsnap::cli_test {
@@ -96,6 +97,35 @@ TEST_F(ReportBrowserTest, SliderSwipesBetweenExpectedAndActual) {
   const std::string moved = Browse("--dump-dom", Path("report/driven.html"));
   EXPECT_NE(moved.find("style=\"clip-path: inset(0px 0px 0px 20%);\""), std::string::npos) << moved;
   EXPECT_NE(moved.find("class=\"line\" style=\"left: 20%;\""), std::string::npos) << moved;
+}
+
+// Depth and label images hold millimetres and link numbers, which a browser shows black: the
+// report must show its false-colour and per-link pictures instead.
+TEST_F(ReportBrowserTest, ShowsDepthAndLabelPicturesNotBlack) {
+  const std::string goldens = "defaults:\n  model: " + kMrm + "\ncases:\n  - name: d\n    depth: true\n"
+                              "  - name: l\n    labels: true\n";
+  ASSERT_EQ(RunUrdfsnap("snapshot update " + Write("goldens.yaml", goldens)).status, 0);
+  std::string moved = goldens;
+  for (const char* name : {"d\n", "l\n"}) {
+    moved.insert(moved.find(std::string("name: ") + name) + 6 + 2, "    joints: {link_01__link_02: 0.3}\n");
+  }
+  Write("moved.yaml", moved);
+  ASSERT_EQ(RunUrdfsnap("snapshot check " + Path("moved.yaml") + " --report " + Path("depth_report")).status, 1);
+  Browse("--window-size=1300,6000 --screenshot=" + Path("depth_shot.png"), Path("depth_report/index.html"));
+  const image::Image shot = image::ReadPng(Path("depth_shot.png"));
+  // base_link's label colour, as LabelPicture paints label 1
+  const image::Image base = image::LabelPicture(image::Gray16Image{1, 1, {1}});
+  int depth_colours = 0, base_link = 0, magenta = 0;
+  for (size_t i = 0; i < shot.rgb.size(); i += 3) {
+    const int r = shot.rgb[i], g = shot.rgb[i + 1], b = shot.rgb[i + 2];
+    // viridis's green and teal (the grid and the dimmed diff are grey, the robot red)
+    depth_colours += r < 120 && g > r + 40 && b > r && g < 235;
+    base_link += r == base.rgb[0] && g == base.rgb[1] && b == base.rgb[2];
+    magenta += r > 200 && g < 60 && b > 200;
+  }
+  EXPECT_GT(depth_colours, 3000);
+  EXPECT_GT(base_link, 3000);
+  EXPECT_GT(magenta, 1000);
 }
 
 }  // namespace
