@@ -77,16 +77,24 @@ class WebpReader final : public AnimationReader {
   WebPAnimInfo info_{};
 };
 
+// The demuxer's context, closed however the reader ends, also when its constructor throws after
+// opening it (a file whose streams cannot be read, frames too large): avformat_close_input takes
+// the pointer's address, so it has an owner of its own.
+struct FormatContext {
+  AVFormatContext* context = nullptr;
+  ~FormatContext() { avformat_close_input(&context); }
+};
+
 class FfmpegReader final : public AnimationReader {
  public:
   explicit FfmpegReader(const std::string& path) : path_(path) {
     TakeOverFfmpegLog();
-    CheckAv(avformat_open_input(&format_, path.c_str(), nullptr, nullptr), path, "cannot open");
-    CheckAv(avformat_find_stream_info(format_, nullptr), path, "cannot read the stream");
+    CheckAv(avformat_open_input(&format_.context, path.c_str(), nullptr, nullptr), path, "cannot open");
+    CheckAv(avformat_find_stream_info(format_.context, nullptr), path, "cannot read the stream");
     const AVCodec* codec = nullptr;
-    stream_ = CheckAv(av_find_best_stream(format_, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0), path, "no video in it");
+    stream_ = CheckAv(av_find_best_stream(format_.context, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0), path, "no video in it");
     codec_.reset(avcodec_alloc_context3(codec));
-    CheckAv(avcodec_parameters_to_context(codec_.get(), format_->streams[stream_]->codecpar), path, "bad stream");
+    CheckAv(avcodec_parameters_to_context(codec_.get(), format_.context->streams[stream_]->codecpar), path, "bad stream");
     if (std::int64_t{codec_->width} * codec_->height > kMaxFramePixels) {
       throw Error(path + ": frames of " + std::to_string(codec_->width) + "x" + std::to_string(codec_->height) +
                   " pixels, " + PixelLimitText());
@@ -96,10 +104,7 @@ class FfmpegReader final : public AnimationReader {
     packet_.reset(av_packet_alloc());
     decoded_.reset(av_frame_alloc());
   }
-  ~FfmpegReader() override {
-    sws_freeContext(scaler_);
-    avformat_close_input(&format_);
-  }
+  ~FfmpegReader() override { sws_freeContext(scaler_); }
 
   bool Next(image::Image& frame, double& end_ms) override {
     while (true) {
@@ -108,10 +113,10 @@ class FfmpegReader final : public AnimationReader {
       if (received == AVERROR_EOF) return false;
       CheckAv(received == AVERROR(EAGAIN) ? 0 : received, path_, "a frame does not decode");
       // the decoder wants more: the next packet of the stream, or the end
-      int read = av_read_frame(format_, packet_.get());
+      int read = av_read_frame(format_.context, packet_.get());
       while (read == 0 && packet_->stream_index != stream_) {
         av_packet_unref(packet_.get());
-        read = av_read_frame(format_, packet_.get());
+        read = av_read_frame(format_.context, packet_.get());
       }
       if (read == AVERROR_EOF) {
         CheckAv(avcodec_send_packet(codec_.get(), nullptr), path_, "cannot end the stream");
@@ -136,14 +141,14 @@ class FfmpegReader final : public AnimationReader {
     std::uint8_t* planes[1] = {frame.rgb.data()};
     const int strides[1] = {in.width * 3};
     sws_scale(scaler_, in.data, in.linesize, 0, in.height, planes, strides);
-    const AVRational base = format_->streams[stream_]->time_base;
+    const AVRational base = format_.context->streams[stream_]->time_base;
     end_ms = 1000.0 * static_cast<double>(in.best_effort_timestamp + in.pkt_duration) * av_q2d(base);
     av_frame_unref(decoded_.get());
     return true;
   }
 
   std::string path_;
-  AVFormatContext* format_ = nullptr;
+  FormatContext format_;
   int stream_ = -1;
   AvPointer<AVCodecContext> codec_;
   AvPointer<AVPacket> packet_;
