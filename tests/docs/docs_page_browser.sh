@@ -8,12 +8,8 @@ set -euo pipefail
 urdfsnap=$1
 shots=${2:-}
 root=$(cd "$(dirname "$0")/../.." && pwd)
-if [ ! -x /usr/bin/chromium ]; then
-  echo "no /usr/bin/chromium (scripts/deps.sh installs it)"
-  [ "${CI:-}" = true ] && exit 1
-  exit 77
-fi
-"$root/scripts/node-deps.sh"
+. "$root/tests/node/require_browser.sh"
+require_browser "$root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_docs_browser.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
