@@ -248,7 +248,7 @@ TEST_F(SnapshotDepthTest, DiffComparesDepthInMillimetresAndLabels) {
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_TRUE(Contains(r.output, "differ (limit 0%)")) << r.output;
   // colour, depth and labels options that do not go together
-  for (const std::string& bad : {"--labels --max-delta 1", "--depth --max-mean 1", "--depth --labels",
+  for (const std::string bad : {"--labels --max-delta 1", "--depth --max-mean 1", "--depth --labels",
                                  "--max-delta 256", "--depth --max-delta 70000"}) {
     r = RunUrdfsnap("diff " + bad + " " + Path("a.d.png") + " " + Path("b.d.png"));
     EXPECT_EQ(r.status, 2) << bad << ": " << r.output;
