@@ -4,6 +4,7 @@
 // `render` options that make frame K.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -22,6 +23,7 @@
 #include "common/error.h"
 #include "common/number_text.h"
 #include "gl/gl_context.h"
+#include "gl/rasteriser_threads.h"
 #include "model/joint_values.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
@@ -118,6 +120,9 @@ void PrintNewWarnings(const Warnings& printed, const Warnings& later) {
 
 void Run(AnimateOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
+  // the encoder thread keeps a core busy while frames are drawn (before any thread starts)
+  const std::string rasteriser = gl::LeaveCoresToOtherThreads(1);
+  if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
   request::RenderRequest& r = o.render.request;
   r.model = o.model.ToRequest();

@@ -322,6 +322,23 @@ TEST_F(AnimateTest, EveryTextFormatGivesTheFramesOfTheCsvTable) {
   }
 }
 
+TEST_F(AnimateTest, LeavesACoreToTheEncoderAndDrawsTheSameFrames) {
+  // llvmpipe rasterises on the cores the encoder leaves (--verbose says so), unless the user set
+  // LP_NUM_THREADS; the frames are the same byte for byte either way
+  const std::string animate = "animate " + mrm_ + " --trajectory " + csv_ + " --fps 4" + kView + " --verbose -o ";
+  const Result ours = RunUrdfsnap(animate + Path("ours/%d.png"));
+  ASSERT_EQ(ours.status, 0) << ours.output;
+  EXPECT_NE(ours.output.find("urdfsnap: LP_NUM_THREADS="), std::string::npos) << ours.output;
+  EXPECT_NE(ours.output.find(" left to encoding\n"), std::string::npos) << ours.output;
+  const Result users = RunUrdfsnap(animate + Path("users/%d.png"), "LP_NUM_THREADS=4");
+  ASSERT_EQ(users.status, 0) << users.output;
+  EXPECT_EQ(users.output.find("LP_NUM_THREADS"), std::string::npos) << users.output;
+  for (int k = 0; k <= 8; ++k) {
+    const std::string frame = "/" + std::to_string(k) + ".png";
+    EXPECT_EQ(ReadBytes(Path("ours" + frame)), ReadBytes(Path("users" + frame))) << k;
+  }
+}
+
 TEST_F(AnimateTest, TrajectoryFromAPipeAndTheExampleTrajectories) {
   // `ros2 topic echo ... | urdfsnap animate --trajectory /dev/stdin`: a pipe is read once
   const std::string fifo = Path("fifo");
