@@ -11,15 +11,16 @@ struct Counter {
   bool open = false;
   size_t items_left = 0, items_total = 0;
   size_t bytes_left = 0, bytes_total = 0;
+  size_t containers_left = 0, containers_total = 0;
 };
 
 thread_local Counter counter;
 
 }  // namespace
 
-EvaluationBudget::EvaluationBudget(size_t items, size_t bytes) {
+EvaluationBudget::EvaluationBudget(size_t items, size_t bytes, size_t container_items) {
   if (counter.open) return;
-  counter = {true, items, items, bytes, bytes};
+  counter = {true, items, items, bytes, bytes, container_items, container_items};
   owner_ = true;
 }
 
@@ -35,6 +36,16 @@ void EvaluationBudget::Charge(size_t items) {
                     " list items in all (runaway comprehension or range()?)");
   }
   counter.items_left -= items;
+}
+
+void EvaluationBudget::ChargeContainer(size_t items) {
+  if (!counter.open) return;
+  if (items > counter.containers_left) {
+    counter.containers_left = 0;
+    throw EvalError("expressions make lists, tuples and dicts of more than " +
+                    std::to_string(counter.containers_total) + " items in all (runaway comprehension?)");
+  }
+  counter.containers_left -= items;
 }
 
 void CheckListSize(Int n, const char* what) {

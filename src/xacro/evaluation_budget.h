@@ -3,6 +3,8 @@
 // items and one string at most kMaxStringBytes bytes (both checked before they are built), and
 // everything a document's expressions materialise (list items, copies made to iterate,
 // comprehension steps, the bytes of every string built) is charged to one budget per document.
+// The items of every list, tuple and dict made are charged to a second one: the work budget
+// alone let one expression keep a million lists of long strings (1.2 GB, found by fuzzing).
 // Real robot descriptions use a few thousand items and kilobytes of text; Python's xacro has no
 // such limits and would run out of memory.
 #pragma once
@@ -22,6 +24,11 @@ inline constexpr size_t kMaxListItems = size_t{1} << 20;
 // (about 600 MB of values if all were alive at once, about a second of work).
 inline constexpr size_t kEvaluationBudgetItems = size_t{4} << 20;
 
+// The items all lists, tuples and dicts made by one document's expressions may hold in all,
+// however they were made (a method's result, a comprehension's, a conversion's): about 360 MB
+// if all were alive at once, strings of 100 bytes included.
+inline constexpr size_t kContainerBudgetItems = size_t{1} << 20;
+
 // The longest string an expression or a text substitution may build (16 MiB).
 inline constexpr size_t kMaxStringBytes = size_t{16} << 20;
 
@@ -33,13 +40,18 @@ inline constexpr size_t kEvaluationBudgetBytes = size_t{256} << 20;
 // another is open on the thread does nothing: the outer one (a document's) keeps counting.
 class EvaluationBudget {
  public:
-  explicit EvaluationBudget(size_t items = kEvaluationBudgetItems, size_t bytes = kEvaluationBudgetBytes);
+  explicit EvaluationBudget(size_t items = kEvaluationBudgetItems, size_t bytes = kEvaluationBudgetBytes,
+                            size_t container_items = kContainerBudgetItems);
   ~EvaluationBudget();
   EvaluationBudget(const EvaluationBudget&) = delete;
   EvaluationBudget& operator=(const EvaluationBudget&) = delete;
 
   // Charges `items` to the open budget; throws EvalError when it is spent. No-op without one.
   static void Charge(size_t items);
+
+  // Charges the `items` of a list, tuple or dict being made to the open budget; throws EvalError
+  // when it is spent. No-op without one.
+  static void ChargeContainer(size_t items);
 
   // Charges `bytes` of text made (a string derived from another, a yaml file loaded) to the open
   // budget; throws EvalError when it is spent. No-op without one.

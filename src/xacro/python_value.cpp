@@ -61,6 +61,7 @@ Value Value::Str(std::string v) {
 }
 
 Value Value::List(ValueList items) {
+  EvaluationBudget::ChargeContainer(items.size());  // every list and tuple, however it was made
   Value r;
   r.type = Type::kList;
   r.list = std::make_shared<ValueList>(std::move(items));
@@ -74,6 +75,7 @@ Value Value::Tuple(ValueList items) {
 }
 
 Value Value::Dict(std::vector<std::pair<Value, Value>> items) {
+  EvaluationBudget::ChargeContainer(items.size());
   Value r;
   r.type = Type::kDict;
   r.dict = std::make_shared<DictItems>();

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "xacro/builtins.h"
+#include "xacro/evaluation_budget.h"
 #include "xacro/expression_evaluator.h"
 #include "xacro/expression_parser.h"
 
@@ -285,14 +286,22 @@ TEST(Expression, ListsAreBoundedBeforeTheyAreBuilt) {
       {"python.range(-2**126, 2**126)", "range() too large: its length does not fit in 127 bits"},
       {"[c for c in 'a' * 2000000]", "string to iterate too large: 2000000 items (the limit is 1048576)"},
       {"[0] * 2000000", "result of repetition is too large (limit 1048576)"},
-      {"list(python.range(1000000)) + list(python.range(1000000))",
-       "concatenated sequence too large: 2000000 items (the limit is 1048576)"},
       {"[0 for i in python.range(4000) for j in python.range(4000) if 0]",
        "expressions build more than 4194304 list items in all (runaway comprehension or range()?)"},
       {"[list(python.range(1000000)) for i in python.range(10)]",
-       "expressions build more than 4194304 list items in all (runaway comprehension or range()?)"},
+       "expressions make lists, tuples and dicts of more than 1048576 items in all (runaway comprehension?)"},
+      // a million small lists of long strings, each list made by a method (1.2 GB before; found
+      // by fuzzing)
+      {"len([('a b c d ' * 25).split(None, 3) for i in python.range(1000) for j in python.range(1000)])",
+       "expressions make lists, tuples and dicts of more than 1048576 items in all (runaway comprehension?)"},
   };
   for (const auto& c : cases) EXPECT_EQ(EvalFailure(c.expr), c.expected) << c.expr;
+  {
+    // one list's limit, with budget to spare for the two halves
+    const EvaluationBudget roomy(kEvaluationBudgetItems, kEvaluationBudgetBytes, size_t{4} << 20);
+    EXPECT_EQ(EvalFailure("list(python.range(1000000)) + list(python.range(1000000))"),
+              "concatenated sequence too large: 2000000 items (the limit is 1048576)");
+  }
   // what fits is exact
   EXPECT_EQ(Eval("len(python.range(1048576))"), "1048576");
   EXPECT_EQ(Eval("list(python.range(10, 0, -3))"), "[10, 7, 4, 1]");

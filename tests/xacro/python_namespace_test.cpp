@@ -110,7 +110,7 @@ TEST(PythonNamespace, CollectionsStayWithinTheBudget) {
       {"python.tuple(python.enumerate('a' * 2000000))",
        "error: string to iterate too large: 2000000 items (the limit is 1048576)"},
       {"python.set([list(python.range(1000000)) for i in python.range(5)][0])",
-       "error: expressions build more than 4194304 list items in all (runaway comprehension or range()?)"},
+       "error: expressions make lists, tuples and dicts of more than 1048576 items in all (runaway comprehension?)"},
       {"len([python.set(python.range(1000000)) for i in python.range(5)])",
        "error: expressions build more than 4194304 list items in all (runaway comprehension or range()?)"},
       // a range is not built: its length, items and slices are computed
