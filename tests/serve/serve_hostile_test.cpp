@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/urdfsnap_process.h"
 #include "serve_process.h"
 #include "support/gl_required.h"
 #include "support/temp_folder.h"
@@ -142,9 +143,12 @@ TEST_F(ServeHostileTest, FloodFromSeveralClientsKeepsMemoryFlat) {
               seconds, ok, busy, before, after_first, after_second);
   RecordProperty("rss_kb_before", std::to_string(before));
   RecordProperty("rss_kb_after", std::to_string(after_second));
-  // a second flood like the first adds nothing lasting (tolerance: allocator noise)
-  EXPECT_LT(after_second - after_first, 16 * 1024);
-  EXPECT_LT(after_second - before, 64 * 1024);
+  // a second flood like the first adds nothing lasting (tolerance: allocator noise); not under
+  // AddressSanitizer, whose quarantine keeps up to 256 MB of freed memory resident as it fills
+  if (!test::BuiltWithAddressSanitizer()) {
+    EXPECT_LT(after_second - after_first, 16 * 1024);
+    EXPECT_LT(after_second - before, 64 * 1024);
+  }
   ExpectAlive();
 }
 
