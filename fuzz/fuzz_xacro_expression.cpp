@@ -5,6 +5,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "fuzz_evaluation_budget.h"
 #include "xacro/builtins.h"
 #include "xacro/expression_evaluator.h"
 #include "xacro/expression_parser.h"
@@ -33,6 +34,7 @@ class Names : public NameLookup {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static Names names;
+  const auto budget = urdfsnap::fuzz::SmallEvaluationBudget();
   try {
     const ExprPtr expr = ParseExpression(std::string(reinterpret_cast<const char*>(data), size));
     ToStr(Evaluate(*expr, names));

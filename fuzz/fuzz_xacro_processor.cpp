@@ -15,6 +15,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "fuzz_evaluation_budget.h"
 #include "fuzz_work_dir.h"
 #include "xacro/processor.h"
 
@@ -34,8 +35,9 @@ struct Worker {
       w.changed.wait(lock, [&] { return w.busy; });
       urdfsnap::xacro::Options options;
       options.args = {{"arg", "1.5"}};
-      // the same limit code with a smaller budget, so that runaway inputs end in milliseconds
+      // the same limit code with smaller budgets, so that runaway inputs end in milliseconds
       options.max_document_bytes = std::size_t{8} << 20;
+      const auto budget = urdfsnap::fuzz::SmallEvaluationBudget();
       urdfsnap::Warnings warnings;
       try {
         urdfsnap::xacro::Processor(options, warnings).Run(w.path);
