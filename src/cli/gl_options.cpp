@@ -15,7 +15,7 @@ constexpr char kOption[] = "--gl-backend";
 
 }  // namespace
 
-void GlOptions::AddOptions(CLI::App& command) {
+void GlOptions::AddOptions(CLI::App& command, const std::string& verbose_also) {
   command
       .add_option(kOption, backend,
                   "off-screen OpenGL to render with: auto (OSMesa when it loads, else EGL), osmesa or "
@@ -35,7 +35,7 @@ void GlOptions::AddOptions(CLI::App& command) {
           ""));
   command.add_flag("--verbose", verbose,
                    "say on stderr which GL backend was taken and why, with its renderer and OpenGL "
-                   "version (default: off)");
+                   "version" + verbose_also + " (default: off)");
 }
 
 gl::BackendChoice GlOptions::Choice() const {

@@ -15,8 +15,9 @@ struct GlOptions {
   std::string backend;   // --gl-backend NAME, checked by gl::ParseBackend and gl::CheckCompiledIn; "" when not given
   bool verbose = false;  // --verbose
 
-  // Adds --gl-backend and --verbose to `command`.
-  void AddOptions(CLI::App& command);
+  // Adds --gl-backend and --verbose to `command`; `verbose_also` ends --verbose's help with what
+  // else the command says under it (", and ...").
+  void AddOptions(CLI::App& command, const std::string& verbose_also = "");
 
   // What the typed core is given: the backend (nullopt when --gl-backend is not given) and, under
   // --verbose, "urdfsnap: GL backend egl (--gl-backend egl): EGL (surfaceless), ..." on stderr for
