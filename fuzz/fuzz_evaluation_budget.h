@@ -1,8 +1,9 @@
 // For the fuzz targets that evaluate xacro expressions: the evaluator's document budgets scaled
 // down, so that the same limit code ends a runaway input in a fraction of a second under the
-// sanitizers. At full size an input that spends a budget takes up to 8 s there (a million split()
-// lists), one that spends all three up to 20 s, near libFuzzer's 30 s timeout, and a 10 s CI run
-// spent its time on a few such seeds. The full budgets are unit-tested (tests/xacro/).
+// sanitizers. At full size an input that spends a budget takes up to 8.5 s there (measured: a
+// million split() lists), so one spending all three could near libFuzzer's 30 s timeout, and a
+// 10 s CI run spent 36 s, mostly on a few such seeds. The full budgets are unit-tested
+// (tests/xacro/).
 #pragma once
 
 #include "xacro/evaluation_budget.h"
