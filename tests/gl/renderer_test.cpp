@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -75,6 +76,26 @@ TEST_F(RendererTest, TriangleFacingTheLightHasItsFullColourAndTopRowComesFirst) 
   // the triangle is above the centre, so the bottom rows are background
   EXPECT_EQ(Pixel(image, 32, 40), (Rgb{48, 48, 48}));
   EXPECT_EQ(Pixel(image, 2, 2), (Rgb{48, 48, 48}));
+}
+
+TEST_F(RendererTest, ReleasedContextRendersOnAnotherThread) {
+  Scene scene;
+  DrawItem item;
+  item.mesh = UpperTriangle();
+  item.X_FG = Eigen::Affine3d::Identity();
+  item.rgba = {1, 0.2f, 0, 1};
+  scene.items.push_back(item);
+  const image::Image here = renderer_->Render(scene, FrontView(), 64, 48).colour;
+  // without the release, EGL refuses the context on the other thread (EGL_BAD_ACCESS)
+  renderer_->ReleaseContext();
+  image::Image there;
+  std::thread([&] {
+    there = renderer_->Render(scene, FrontView(), 64, 48).colour;
+    renderer_->ReleaseContext();
+  }).join();
+  EXPECT_EQ(there.rgb, here.rgb);
+  EXPECT_EQ(Pixel(there, 32, 14), (Rgb{255, 51, 0}));
+  EXPECT_EQ(renderer_->Render(scene, FrontView(), 64, 48).colour.rgb, here.rgb);
 }
 
 TEST_F(RendererTest, BackFacesAreCulled) {
