@@ -63,13 +63,19 @@ TEST_F(RendererTest, EmptySceneIsTheBackgroundEverywhere) {
   }
 }
 
-TEST_F(RendererTest, TriangleFacingTheLightHasItsFullColourAndTopRowComesFirst) {
+// UpperTriangle in orange-red (1, 0.2, 0).
+Scene UpperTriangleScene() {
   Scene scene;
   DrawItem item;
   item.mesh = UpperTriangle();
   item.X_FG = Eigen::Affine3d::Identity();
   item.rgba = {1, 0.2f, 0, 1};
   scene.items.push_back(item);
+  return scene;
+}
+
+TEST_F(RendererTest, TriangleFacingTheLightHasItsFullColourAndTopRowComesFirst) {
+  const Scene scene = UpperTriangleScene();
   const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
   // n · l = 1, so the colour is exactly the diffuse colour (0.2 · 255 = 51)
   EXPECT_EQ(Pixel(image, 32, 14), (Rgb{255, 51, 0}));
@@ -79,12 +85,7 @@ TEST_F(RendererTest, TriangleFacingTheLightHasItsFullColourAndTopRowComesFirst) 
 }
 
 TEST_F(RendererTest, ReleasedContextRendersOnAnotherThread) {
-  Scene scene;
-  DrawItem item;
-  item.mesh = UpperTriangle();
-  item.X_FG = Eigen::Affine3d::Identity();
-  item.rgba = {1, 0.2f, 0, 1};
-  scene.items.push_back(item);
+  const Scene scene = UpperTriangleScene();
   const image::Image here = renderer_->Render(scene, FrontView(), 64, 48).colour;
   // without the release, EGL refuses the context on the other thread (EGL_BAD_ACCESS)
   renderer_->ReleaseContext();
