@@ -30,24 +30,27 @@ namespace {
 // A path argument: str or os.PathLike.
 std::string PathText(const py::object& path) { return py::str(py::module_::import("os").attr("fspath")(path)); }
 
-// A dict of str() → str() (xacro arguments, package folders), or None.
-std::vector<std::pair<std::string, std::string>> TextPairs(const py::object& mapping) {
+// Xacro arguments: a dict NAME → value (str() of it: 0.5 → "0.5"), or None.
+std::vector<std::pair<std::string, std::string>> XacroArgs(const py::object& args) {
   std::vector<std::pair<std::string, std::string>> pairs;
-  if (mapping.is_none()) return pairs;
-  for (const auto& [key, value] : mapping.cast<py::dict>()) {
-    pairs.emplace_back(py::str(key), py::isinstance<py::str>(value) ? value.cast<std::string>() : PathText(value.cast<py::object>()));
-  }
+  if (args.is_none()) return pairs;
+  for (const auto& [name, value] : args.cast<py::dict>()) pairs.emplace_back(py::str(name), py::str(value));
   return pairs;
+}
+
+// Package folders: a dict NAME → str or os.PathLike, or None.
+std::map<std::string, std::string> Packages(const py::object& packages) {
+  std::map<std::string, std::string> folders;
+  if (packages.is_none()) return folders;
+  for (const auto& [name, folder] : packages.cast<py::dict>()) {
+    folders[py::str(name)] = PathText(py::reinterpret_borrow<py::object>(folder));
+  }
+  return folders;
 }
 
 request::ModelRequest ModelFrom(const py::object& path, const py::object& args, const py::object& packages,
                                 bool xacro_ns) {
-  request::ModelRequest model;
-  model.path = PathText(path);
-  model.xacro_args = TextPairs(args);
-  for (auto& [name, folder] : TextPairs(packages)) model.packages[name] = folder;
-  model.xacro_ns = xacro_ns;
-  return model;
+  return {PathText(path), XacroArgs(args), Packages(packages), xacro_ns};
 }
 
 // Each warning once through Python's warnings module, as urdfsnap.UrdfsnapWarning.
@@ -140,33 +143,31 @@ class Robot {
     return joints;
   }
 
-  // One pose: `joints` a dict name → value, or None.
+  // One pose: `joints` a dict name → value, a sequence of values in joint_names order, or None.
   std::vector<double> Pose(const py::object& joints, bool clamp, Warnings& warnings) const {
     model::NamedValues given;
-    if (!joints.is_none()) {
+    if (py::isinstance<py::dict>(joints)) {
       for (const auto& [name, value] : joints.cast<py::dict>()) given.emplace_back(py::str(name), value.cast<double>());
+    } else if (!joints.is_none()) {
+      given = InJointOrder(joints.cast<std::vector<double>>(), "joints");
     }
-    for (const auto& [name, value] : given) {
-      if (!std::isfinite(value)) throw Error("joint '" + name + "': expected a finite number, got " + std::to_string(value));
-    }
-    return session_->Positions(given, clamp, warnings);
+    return Resolve(given, clamp, warnings);
   }
 
-  // render_many's poses: an N×J array in joint_names order, or a sequence of dicts.
+  // render_many's poses: an N×J array in joint_names order, or a sequence of Pose's arguments.
   std::vector<std::vector<double>> Poses(const py::object& positions, bool clamp, Warnings& warnings) const {
     std::vector<std::vector<double>> poses;
-    const std::vector<std::string>& names = session_->movable_joints();
-    if (py::isinstance<py::array>(positions) || (py::isinstance<py::sequence>(positions) &&
-                                                 py::len(positions) > 0 && !py::isinstance<py::dict>(positions[py::int_(0)]))) {
+    if (py::isinstance<py::array>(positions) || (py::isinstance<py::sequence>(positions) && py::len(positions) > 0 &&
+                                                 !py::isinstance<py::dict>(positions[py::int_(0)]))) {
       const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(positions);
-      if (!array || array.ndim() != 2 || array.shape(1) != static_cast<py::ssize_t>(names.size())) {
-        throw Error("render_many: positions must be an N×" + std::to_string(names.size()) +
+      const size_t joints = session_->movable_joints().size();
+      if (!array || array.ndim() != 2 || array.shape(1) != static_cast<py::ssize_t>(joints)) {
+        throw Error("render_many: positions must be an N×" + std::to_string(joints) +
                     " array (one column per Robot.joint_names) or a list of dicts");
       }
       for (py::ssize_t k = 0; k < array.shape(0); ++k) {
-        py::dict row;
-        for (size_t j = 0; j < names.size(); ++j) row[py::str(names[j])] = array.at(k, j);
-        poses.push_back(Pose(row, clamp, warnings));
+        const double* row = array.data(k, 0);
+        poses.push_back(Resolve(InJointOrder({row, row + joints}, "positions"), clamp, warnings));
       }
       return poses;
     }
@@ -227,6 +228,26 @@ class Robot {
   }
 
  private:
+  // `values` named by joint_names; throws urdfsnap::Error naming `what` for a wrong count.
+  model::NamedValues InJointOrder(const std::vector<double>& values, const char* what) const {
+    const std::vector<std::string>& names = session_->movable_joints();
+    if (values.size() != names.size()) {
+      throw Error(std::string(what) + ": expected " + std::to_string(names.size()) +
+                  " values in Robot.joint_names order, got " + std::to_string(values.size()));
+    }
+    model::NamedValues given;
+    for (size_t j = 0; j < names.size(); ++j) given.emplace_back(names[j], values[j]);
+    return given;
+  }
+
+  // All joint positions for `given`, as `urdfsnap render -j` resolves them.
+  std::vector<double> Resolve(const model::NamedValues& given, bool clamp, Warnings& warnings) const {
+    for (const auto& [name, value] : given) {
+      if (!std::isfinite(value)) throw Error("joint '" + name + "': expected a finite number, got " + FormatNumber(value));
+    }
+    return session_->Positions(given, clamp, warnings);
+  }
+
   std::unique_ptr<RobotSession> session_;
 };
 
@@ -299,8 +320,8 @@ PYBIND11_MODULE(_urdfsnap, m) {
 
   m.def("xacro", [](const py::object& path, const py::object& args, const py::object& packages, bool xacro_ns) {
     xacro::Options options;
-    options.args = TextPairs(args);
-    for (auto& [name, folder] : TextPairs(packages)) options.packages[name] = folder;
+    options.args = XacroArgs(args);
+    options.packages = Packages(packages);
     options.xacro_ns = xacro_ns;
     Warnings warnings;
     std::string xml = xacro::ExpandFile(PathText(path), options, warnings).xml;

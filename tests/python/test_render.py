@@ -84,6 +84,8 @@ def test_render_many_equals_single_renders(mrm):
     assert both.depth.shape == (3, 72, 96) and both.labels.shape == (3, 72, 96)
     np.testing.assert_array_equal(both.color, frames)
     assert mrm.render_many(np.zeros((0, len(mrm.joint_names))), size=(8, 8)).shape == (0, 8, 8, 3)
+    # one pose as values in joint_names order, as render_many's rows
+    np.testing.assert_array_equal(mrm.render(list(positions[1]), size=(96, 72), yaw=0.5), frames[1])
 
 
 def test_render_many_fit_frames_every_pose_with_one_camera(mrm):
@@ -104,6 +106,7 @@ def test_render_many_fit_frames_every_pose_with_one_camera(mrm):
     (lambda r: r.render(fixed_frame="map"), "map"),
     (lambda r: r.render(gl_backend="vulkan"), "vulkan"),
     (lambda r: r.render_many(np.zeros((2, 3))), "joint_names"),
+    (lambda r: r.render([0.1, 0.2]), "joint_names"),
     (lambda r: r.render_many(np.zeros((1, len(r.joint_names))), size=(8, 8), out=np.zeros((2, 8, 8, 3), np.uint8)), "out"),
 ])
 def test_bad_arguments_raise_error(mrm, call, message):

@@ -80,3 +80,4 @@ def test_xacro_arguments_reach_the_document(tmp_path):
                     '  <xacro:arg name="link" default="a"/>\n  <link name="$(arg link)"/>\n</robot>\n')
     assert urdfsnap.Robot(path).links == ["a"]
     assert urdfsnap.Robot(path, args={"link": "tool"}).links == ["tool"]
+    assert urdfsnap.Robot(path, args={"link": 7}).links == ["7"]  # values as str() gives them
