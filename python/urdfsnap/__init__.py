@@ -30,7 +30,15 @@ from urdfsnap._urdfsnap import (
     read_png,
     write_png,
     xacro,
+    _wait_for_gl,
 )
+
+# importing the extension started loading Mesa on a thread; numpy's import runs meanwhile (the
+# arrays need it), and a fork waits for the load (the child would inherit the loader's lock)
+import numpy  # noqa: E402,F401  pylint: disable=unused-import,wrong-import-position
+import os as _os  # noqa: E402
+
+_os.register_at_fork(before=_wait_for_gl)
 
 # the extension's types show as urdfsnap.Robot, urdfsnap.Error, ... in reprs and tracebacks
 for _type in (Error, Joint, Mimic, RenderResult, Robot):

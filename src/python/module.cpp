@@ -9,11 +9,13 @@
 
 #include <cmath>
 #include <cstring>
+#include <future>
 #include <memory>
 
 #include "common/error.h"
 #include "common/number_text.h"
 #include "common/version.h"
+#include "gl/gl_context.h"
 #include "image/image_diff.h"
 #include "image/png_reader.h"
 #include "image/png_writer.h"
@@ -284,6 +286,15 @@ PYBIND11_MODULE(_urdfsnap, m) {
   using namespace urdfsnap;
   using namespace urdfsnap::python;
   m.doc() = "urdfsnap's typed core from Python: RViz-like images of URDF/xacro robots as numpy arrays";
+  // Mesa (OSMesa or libEGL, LLVM behind it: ~0.1 s) loads on a thread from import on, overlapping
+  // numpy's import and reading the model, as the commands overlap it (gl::StartLoadingGl). The
+  // future waits at exit; _wait_for_gl lets __init__.py wait before a fork (a child forked while
+  // dlopen runs would inherit the loader's lock held).
+  static std::future<void> gl_loading = gl::StartLoadingGl();
+  m.def("_wait_for_gl", [] {
+    py::gil_scoped_release released;
+    gl_loading.wait();
+  });
   m.attr("__version__") = Version();
   py::register_exception<Error>(m, "Error", PyExc_ValueError);
   m.attr("UrdfsnapWarning") =
