@@ -70,19 +70,20 @@ class Robot:
                pitch: float = 0.785398, distance: float = 10.0,
                focal: Tuple[float, float, float] = (0, 0, 0), size: Tuple[int, int] = (640, 480),
                fit: bool = False, tf: bool = False, alpha: float = 1.0,
-               background: Tuple[int, int, int] = (48, 48, 48), grid: bool = True, visual: bool = True,
+               background: Union[Tuple[int, int, int], str] = (48, 48, 48), grid: bool = True, visual: bool = True,
                collision: bool = False, depth: bool = False, labels: bool = False,
                gl_backend: str = "auto", fov: float = 45.0, fixed_frame: str = "",
-               antialias: bool = True, clamp: bool = True,
+               antialias: bool = True, clamp: bool = True, tf_scale: float = 1.0,
                allow_missing_meshes: bool = False) -> Union[npt.NDArray[np.uint8], RenderResult]:
         """Renders the robot with `joints` (name -> rad or m; other joints at their defaults).
 
         Returns an H×W×3 uint8 array, or with depth=True or labels=True a RenderResult. The same
-        pixels as `urdfsnap render` with the same options: yaw, pitch (rad), distance (m, 0.01 to
-        1e6), focal (m), fov (degrees, vertical), size (width, height), fit (frame the robot,
-        --fit), tf (TF markers), alpha (robot opacity 0..1), background (R, G, B 0..255), grid,
-        visual, collision, fixed_frame (a link; "" = the root), antialias (False = --no-aa),
-        clamp (False = --no-clamp), allow_missing_meshes. gl_backend: "auto" (URDFSNAP_GL_BACKEND
+        pixels as `urdfsnap render` with the same options (parsed and checked by the same code):
+        yaw, pitch (rad), distance (m, 0.01 to 1e6), focal (m), fov (degrees, vertical), size
+        (width, height), fit (frame the robot, --fit; with focal given, around that point), tf
+        (TF markers), tf_scale, alpha (robot opacity 0..1), background (R, G, B 0..255, or
+        "white", "#RRGGBB" as --background), grid, visual, collision, fixed_frame (a link; "" =
+        the root), antialias (False = --no-aa), clamp (False = --no-clamp), allow_missing_meshes. gl_backend: "auto" (URDFSNAP_GL_BACKEND
         when set, else OSMesa then EGL), "osmesa" or "egl". Raises Error for an unknown joint, a
         keyword out of range, an unknown fixed frame, a mesh that cannot be read."""
     def render_many(self, positions: Union[npt.ArrayLike, Iterable[Mapping[str, float]]], *,

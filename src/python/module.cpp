@@ -178,10 +178,11 @@ class Robot {
   }
 
   // Renders `poses` into arrays of shape `batch` + image shape (`batch` empty for one image).
-  py::object Render(const std::vector<std::vector<double>>& poses, const RenderOptions& options, bool depth,
-                    bool labels, std::vector<py::ssize_t> batch, py::object out, Warnings& warnings) {
-    const render::RenderSettings settings = MakeSettings(options, session_->model());
-    const std::optional<gl::Backend> backend = BackendKeyword(options.gl_backend);
+  py::object Render(const std::vector<std::vector<double>>& poses, const RenderCall& call,
+                    std::vector<py::ssize_t> batch, py::object out, Warnings& warnings) {
+    const render::RenderSettings settings = session_->Settings(call, warnings);
+    const std::optional<gl::Backend> backend = BackendKeyword(call.gl_backend);
+    const bool depth = call.depth, labels = call.labels;
     const py::ssize_t h = settings.size.height, w = settings.size.width;
     const auto shape = [&](std::vector<py::ssize_t> image) {
       image.insert(image.begin(), batch.begin(), batch.end());
@@ -253,29 +254,41 @@ class Robot {
   std::unique_ptr<RobotSession> session_;
 };
 
-// Robot.render's and render_many's keyword arguments (their defaults are RenderOptions'); `depth`
-// and `labels` say which images to return. An unknown keyword is a TypeError, as in Python.
-RenderOptions OptionsFrom(const py::kwargs& kwargs, const char* function, bool& depth, bool& labels) {
-  RenderOptions o;
-  depth = labels = false;
+// Numbers as `urdfsnap render` reads them: each the shortest text that reads back as it, joined.
+std::string NumbersText(const py::handle& value, const char* separator) {
+  std::string text;
+  for (const double number : value.cast<std::vector<double>>()) text += (text.empty() ? "" : separator) + FormatNumber(number);
+  return text;
+}
+
+// Robot.render's and render_many's keyword arguments as `urdfsnap render`'s options: not given,
+// RViz's default (as the command line); an unknown keyword is a TypeError, as in Python.
+RenderCall CallFrom(const py::kwargs& kwargs, const char* function) {
+  RenderCall call;
+  request::RenderRequest& r = call.request;
+  std::map<std::string, std::string request::RenderRequest::*> numbers{
+      {"yaw", &request::RenderRequest::yaw}, {"pitch", &request::RenderRequest::pitch},
+      {"distance", &request::RenderRequest::distance}, {"fov", &request::RenderRequest::fov},
+      {"alpha", &request::RenderRequest::alpha}, {"tf_scale", &request::RenderRequest::tf_scale}};
+  std::map<std::string, bool*> flags{{"fit", &r.fit}, {"tf", &r.tf}, {"collision", &r.collision},
+                                     {"allow_missing_meshes", &r.allow_missing_meshes},
+                                     {"depth", &call.depth}, {"labels", &call.labels}};
+  std::map<std::string, bool*> negated{{"grid", &r.no_grid}, {"visual", &r.no_visual}, {"antialias", &r.no_aa},
+                                       {"clamp", &r.no_clamp}};
   for (const auto& [key, value] : kwargs) {
     const std::string name = py::str(key);
-    bool* flag = name == "fit" ? &o.fit : name == "tf" ? &o.tf : name == "grid" ? &o.grid
-               : name == "visual" ? &o.visual : name == "collision" ? &o.collision : name == "depth" ? &depth
-               : name == "labels" ? &labels : name == "antialias" ? &o.antialias : name == "clamp" ? &o.clamp
-               : name == "allow_missing_meshes" ? &o.allow_missing_meshes : nullptr;
-    double* number = name == "yaw" ? &o.yaw : name == "pitch" ? &o.pitch : name == "distance" ? &o.distance
-                   : name == "alpha" ? &o.alpha : name == "fov" ? &o.fov : nullptr;
-    if (flag) *flag = value.cast<bool>();
-    else if (number) *number = value.cast<double>();
-    else if (name == "focal") o.focal = value.cast<std::vector<double>>();
-    else if (name == "background") o.background = value.cast<std::vector<double>>();
-    else if (name == "size") o.size = value.cast<std::vector<int>>();
-    else if (name == "fixed_frame") o.fixed_frame = value.cast<std::string>();
-    else if (name == "gl_backend") o.gl_backend = value.cast<std::string>();
+    if (numbers.count(name)) r.*numbers[name] = FormatNumber(value.cast<double>());
+    else if (flags.count(name)) *flags[name] = value.cast<bool>();
+    else if (negated.count(name)) *negated[name] = !value.cast<bool>();
+    else if (name == "focal") r.focal = NumbersText(value, ",");
+    else if (name == "size") r.size = NumbersText(value, "x");
+    // R, G, B from 0 to 255, or a colour as --background takes it ("white", "#RRGGBB")
+    else if (name == "background") r.background = py::isinstance<py::str>(value) ? value.cast<std::string>() : NumbersText(value, ",");
+    else if (name == "fixed_frame") r.fixed_frame = value.cast<std::string>();
+    else if (name == "gl_backend") call.gl_backend = value.cast<std::string>();
     else throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
   }
-  return o;
+  return call;
 }
 
 }  // namespace
@@ -383,23 +396,21 @@ PYBIND11_MODULE(_urdfsnap, m) {
       .def("_repr_png_", [](Robot& r) {
         Warnings ignored;
         const py::array_t<std::uint8_t> color =
-            r.Render({r.Pose(py::none(), true, ignored)}, RenderOptions{}, false, false, {}, py::none(), ignored);
+            r.Render({r.Pose(py::none(), true, ignored)}, RenderCall{}, {}, py::none(), ignored);
         return PngBytes(ImageFrom(color, "color"));
       });
   robot.def("render", [](Robot& r, const py::object& joints, const py::kwargs& kwargs) {
-    bool depth, labels;
-    const RenderOptions options = OptionsFrom(kwargs, "render", depth, labels);
+    const RenderCall call = CallFrom(kwargs, "render");
     Warnings warnings;
-    py::object result = r.Render({r.Pose(joints, options.clamp, warnings)}, options, depth, labels, {}, py::none(), warnings);
+    py::object result = r.Render({r.Pose(joints, !call.request.no_clamp, warnings)}, call, {}, py::none(), warnings);
     Warn(warnings);
     return result;
   }, "Renders one pose; see urdfsnap/__init__.pyi.", "joints"_a = py::none());
   robot.def("render_many", [](Robot& r, const py::object& positions, const py::object& out, const py::kwargs& kwargs) {
-    bool depth, labels;
-    const RenderOptions options = OptionsFrom(kwargs, "render_many", depth, labels);
+    const RenderCall call = CallFrom(kwargs, "render_many");
     Warnings warnings;
-    const std::vector<std::vector<double>> poses = r.Poses(positions, options.clamp, warnings);
-    py::object result = r.Render(poses, options, depth, labels, {static_cast<py::ssize_t>(poses.size())}, out, warnings);
+    const std::vector<std::vector<double>> poses = r.Poses(positions, !call.request.no_clamp, warnings);
+    py::object result = r.Render(poses, call, {static_cast<py::ssize_t>(poses.size())}, out, warnings);
     Warn(warnings);
     return result;
   }, "Renders many poses with one GL context; see urdfsnap/__init__.pyi.", "positions"_a, py::kw_only(), "out"_a = py::none());

@@ -1,7 +1,7 @@
 // What one Python `urdfsnap.Robot` holds, in C++ and without Python: the loaded robot, the
-// typed settings that Robot.render's keyword arguments make (checked as the command line checks
-// them), the robot prepared for the displays asked for and the GL renderers that draw it, all
-// kept for the next call. The pybind11 glue (module.cpp) only converts to and from Python.
+// settings that Robot.render's keyword arguments make (parsed by the request stage, as the
+// command line's options are), the robot prepared for the displays asked for and the GL renderers
+// that draw it, all kept for the next call. The pybind11 glue (module.cpp) only converts to and from Python.
 // The pixels are those of `urdfsnap render` with the same options: the same typed core
 // (model::ResolveJointPositions, render::RobotRenderer, gl::Renderer) does the work.
 //
@@ -25,29 +25,19 @@
 #include "render/render_settings.h"
 #include "render/robot_renderer.h"
 #include "request/model_request.h"
+#include "request/render_request.h"
 
 namespace urdfsnap::python {
 
-// Robot.render's keyword arguments, as Python gives them; RViz's defaults, as `urdfsnap render`.
-struct RenderOptions {
-  double yaw = 0.785398, pitch = 0.785398, distance = 10.0;
-  std::vector<double> focal{0, 0, 0};   // x, y, z in metres
-  double fov = 45;                      // degrees, vertical
-  std::vector<int> size{640, 480};      // width, height
-  bool fit = false, tf = false;
-  double alpha = 1.0;
-  std::vector<double> background{48, 48, 48};   // R, G, B from 0 to 255
-  bool grid = true, visual = true, collision = false;
-  std::string fixed_frame;   // "" = the root link
-  bool antialias = true;     // 4x multisampling, as RViz; False = `--no-aa`
-  bool clamp = true;         // False = `--no-clamp`
-  bool allow_missing_meshes = false;
+// One Robot.render or render_many call: the view and display keywords in the words of `urdfsnap
+// render` (request::RenderRequest, parsed and checked by the request stage as the command line's
+// options are, so that the same keywords give the same settings and pixels), and what is not a
+// render option there.
+struct RenderCall {
+  request::RenderRequest request;   // its model is filled in by RobotSession::Settings
+  bool depth = false, labels = false;
   std::string gl_backend = "auto";
 };
-
-// The settings `options` make, checked with the command line's ranges; the model's file and
-// packages become the scene's places to find meshes. Throws urdfsnap::Error naming the keyword.
-render::RenderSettings MakeSettings(const RenderOptions& options, const request::ModelRequest& model);
 
 // "auto" (URDFSNAP_GL_BACKEND when set, as for a command given no --gl-backend), "osmesa", "egl".
 std::optional<gl::Backend> BackendKeyword(const std::string& name);
@@ -64,6 +54,11 @@ class RobotSession {
   const Warnings& load_warnings() const { return load_warnings_; }
   // The joints a value moves (Robot.joint_names): the columns of render_many's positions.
   const std::vector<std::string>& movable_joints() const { return movable_joints_; }
+
+  // The settings `call` asks for, for this robot, as `urdfsnap render` parses its options (RViz's
+  // defaults, an .rviz file, the options given). Throws urdfsnap::Error naming the keyword
+  // ("distance '0': expected a value from 0.01 to 1000000"); warnings go to `warnings`.
+  render::RenderSettings Settings(const RenderCall& call, Warnings& warnings) const;
 
   // One position per robot().joints() for the values `given` (names checked, limits clamped
   // unless `clamp` is false, mimic joints following), as `urdfsnap render -j` resolves them.

@@ -29,6 +29,8 @@ def cli_render(binary, tmp_path, model, joints, *options):
      ["--fit", "--tf", "--alpha", "0.5", "--background", "10,200,30", "--no-grid", "--size", "240x160"]),
     ({"visual": False, "collision": True, "antialias": False, "fov": 60, "size": (200, 150)},
      ["--no-visual", "--collision", "--no-aa", "--fov", "60", "--size", "200x150"]),
+    ({"fit": True, "focal": (0, 0, 0.5), "background": "white", "tf": True, "tf_scale": 0.5, "size": (200, 150)},
+     ["--fit", "--focal", "0,0,0.5", "--background", "white", "--tf", "--tf-scale", "0.5", "--size", "200x150"]),
 ])
 def test_the_same_pixels_as_urdfsnap_render(mrm, binary, tmp_path, keywords, options):
     image = mrm.render(POSE, **keywords)
