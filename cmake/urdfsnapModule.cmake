@@ -8,7 +8,7 @@ set(URDFSNAP_PACKAGE_PREFIX /usr)
 
 # urdfsnap_add_module(TARGET FILE_NAME source...): the module FILE_NAME ("urdfsnap-video.so").
 # It carries its own copies of the urdfsnap libraries it links, all hidden: it exports only its
-# entry point (urdfsnap_module_table, marked visible in its source), so that nothing in it can
+# entry point (marked visible in its source), so that nothing in it can
 # stand in for the loading program's own code or the other way round.
 function(urdfsnap_add_module target file_name)
   add_library(${target} MODULE ${ARGN})

@@ -60,7 +60,8 @@ std::vector<std::filesystem::path> ModuleFolders() {
 
 bool IsOwnVersion(const char* version) { return version && std::strcmp(version, Version()) == 0; }
 
-const void* LoadModuleTable(const std::string& file_name, const std::string& what) {
+const void* LoadModuleTable(const std::string& file_name, const char* entry,
+                            const std::string& what) {
   static std::mutex mutex;
   static std::map<std::string, const void*> tables;
   const std::lock_guard lock(mutex);
@@ -84,7 +85,7 @@ const void* LoadModuleTable(const std::string& file_name, const std::string& wha
   try {
     // never closed (SharedLibrary), so the table stays valid for the process
     const SharedLibrary library(path.string(), kRemedy);
-    const void* table = library.Get<ModuleEntry>(kModuleEntry)(Version());
+    const void* table = library.Get<ModuleEntry>(entry)(Version());
     if (!table) {
       throw Error(path.string() + " is from another build of urdfsnap than this " + Version() +
                   " (" + kRemedy + ")");

@@ -8,7 +8,7 @@
 namespace urdfsnap::serve {
 
 const ServerModule& LoadServerModule() {
-  return LoadModule<ServerModule>(URDFSNAP_SERVE_MODULE,
+  return LoadModule<ServerModule>(URDFSNAP_SERVE_MODULE, kServerModuleEntry,
                                   "the live view's server (cpp-httplib)");
 }
 

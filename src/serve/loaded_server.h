@@ -11,6 +11,9 @@
 
 namespace urdfsnap::serve {
 
+// the module's entry point (server_module_entry.cpp)
+inline constexpr char kServerModuleEntry[] = "urdfsnap_serve_module";
+
 // The module's table: server.h's functions.
 struct ServerModule {
   bool (*is_loopback)(const std::string& address);

@@ -18,7 +18,8 @@ bool Stop(Server& server) { return server.Stop(); }
 
 }  // namespace
 
-extern "C" __attribute__((visibility("default"))) const void* urdfsnap_module_table(
+// kServerModuleEntry
+extern "C" __attribute__((visibility("default"))) const void* urdfsnap_serve_module(
     const char* version) {
   static const urdfsnap::serve::ServerModule table{&urdfsnap::serve::IsLoopback, &Create, &Destroy,
                                                    &Bind, &Run, &Stop};

@@ -8,7 +8,7 @@ namespace urdfsnap::video {
 
 const CodecModule& Codecs(const std::string& path) {
   try {
-    return LoadModule<CodecModule>(URDFSNAP_VIDEO_MODULE,
+    return LoadModule<CodecModule>(URDFSNAP_VIDEO_MODULE, kCodecModuleEntry,
                                    "the MP4, WebM, GIF and WebP codecs (FFmpeg, libwebp)");
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());

@@ -13,6 +13,9 @@
 
 namespace urdfsnap::video {
 
+// the module's entry point (codec_module_entry.cpp)
+inline constexpr char kCodecModuleEntry[] = "urdfsnap_video_module";
+
 struct CodecModule {
   // video_encoder.h, gif_encoder.h, webp_encoder.h and animation_reader.h inside the module
   std::unique_ptr<FrameEncoder> (*open_video_encoder)(const std::string& path, OutputFormat format,

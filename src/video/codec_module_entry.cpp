@@ -5,7 +5,8 @@
 #include "video/video_encoder.h"
 #include "video/webp_encoder.h"
 
-extern "C" __attribute__((visibility("default"))) const void* urdfsnap_module_table(
+// kCodecModuleEntry
+extern "C" __attribute__((visibility("default"))) const void* urdfsnap_video_module(
     const char* version) {
   using namespace urdfsnap::video;
   static const CodecModule table{&OpenVideoEncoder, &OpenGifEncoder, &OpenWebpEncoder,

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Start-up of whole urdfsnap processes: wall time (median over rounds of hyperfine runs, every
+# command once per round in turn, so a machine's changing load falls on all alike) and peak
+# resident memory (/usr/bin/time, median of 3) of `--version`, `info`, `xacro`, `render` and `diff`
+# on the tutorial robot mrm, and of the real (Python) xacro on the same file when one is given.
+# Timings only; nothing asserts.
+#
+# usage: bench/startup/startup_bench.sh [URDFSNAP] [ROUNDS]   (default build/urdfsnap, 5 rounds)
+#   URDFSNAP_REAL_XACRO  the real xacro's command (default: `xacro` when on PATH). ROS 2's xacro
+#                        from source, without ROS: github.com/ros/xacro (branch ros2) and
+#                        github.com/ament/ament_index (ament_index_python) side by side, then
+#                        URDFSNAP_REAL_XACRO="env PYTHONPATH=XACRO:AMENT/ament_index_python
+#                        python3 -c 'import sys, xacro; sys.exit(xacro.main())'" (python3-yaml).
+#                        $(find mrm_description) resolves through ROS_PACKAGE_PATH (ROS 1) and a
+#                        temporary AMENT_PREFIX_PATH (ROS 2) made here.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+urdfsnap=$(realpath "${1:-$root/build/urdfsnap}")
+rounds=${2:-5}
+for tool in hyperfine jq /usr/bin/time; do
+  command -v "$tool" >/dev/null || { echo "startup_bench.sh: $tool is missing" >&2; exit 2; }
+done
+real_xacro=${URDFSNAP_REAL_XACRO:-$(command -v xacro || true)}
+work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_startup.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+models=$root/models
+mrm=$models/mrm_description/urdf
+golden=$root/tests/golden/mrm_zero.png
+# the package index of a ROS 2 install holding mrm_description, for the real xacro
+mkdir -p "$work/prefix/share/ament_index/resource_index/packages"
+touch "$work/prefix/share/ament_index/resource_index/packages/mrm_description"
+ln -s "$models/mrm_description" "$work/prefix/share/mrm_description"
+export ROS_PACKAGE_PATH=$models AMENT_PREFIX_PATH=$work/prefix
+
+names=(--version info xacro render diff)
+commands=(
+  "$urdfsnap --version"
+  "$urdfsnap info $mrm/mrm.urdf"
+  "$urdfsnap xacro $mrm/mrm.xacro -o $work/mrm.urdf"
+  "$urdfsnap render $mrm/mrm.urdf -o $work/mrm.png"
+  "$urdfsnap diff $golden $golden"
+)
+if [ -n "$real_xacro" ]; then
+  if (cd "$work" && eval "$real_xacro $mrm/mrm.xacro" >/dev/null 2>&1); then
+    names+=("real xacro")
+    commands+=("$real_xacro $mrm/mrm.xacro -o $work/mrm_real.urdf")
+  else
+    echo "startup_bench.sh: the real xacro ($real_xacro) fails on mrm; left out" >&2
+  fi
+fi
+
+# rounds of hyperfine, each command's times gathered across them
+for ((r = 0; r < rounds; r++)); do
+  hyperfine --shell=bash --warmup 1 --runs 5 --export-json "$work/round$r.json" "${commands[@]}" \
+    >/dev/null 2>&1
+done
+median() { sort -n | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+
+echo "whole-process start-up, mrm ($(nproc) cores; median of $((rounds * 5)) runs in $rounds rounds)"
+printf '%-12s %10s %12s\n' command "time (ms)" "peak RSS (MB)"
+urdfsnap_xacro_ms=""
+for i in "${!commands[@]}"; do
+  ms=$(for r in $(seq 0 $((rounds - 1))); do jq -r ".results[$i].times[]" "$work/round$r.json"; done |
+       awk '{printf "%.3f\n", $1 * 1000}' | median)
+  rss=$(for _ in 1 2 3; do
+          /usr/bin/time -f %M bash -c "${commands[$i]}" 2>&1 >/dev/null | tail -n 1
+        done | median)
+  printf '%-12s %10.1f %12.1f\n' "${names[$i]}" "$ms" "$(awk -v k="$rss" 'BEGIN {print k / 1024}')"
+  [ "${names[$i]}" = xacro ] && urdfsnap_xacro_ms=$ms
+  [ "${names[$i]}" = "real xacro" ] &&
+    awk -v a="$ms" -v b="$urdfsnap_xacro_ms" 'BEGIN {printf "urdfsnap xacro is %.1fx faster than the real xacro\n", a / b}'
+done

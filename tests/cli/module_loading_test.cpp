@@ -1,0 +1,171 @@
+// What each command loads, read from the dynamic loader's own account (LD_DEBUG=files names every
+// library mapped, linked or opened with dlopen): info, xacro, render, diff, snapshot and --version
+// load neither FFmpeg, libwebp nor the HTTP server; animate loads the video module for a video and
+// not for PNG frames; serve loads its server module. And a copy of the binary without its modules,
+// or with broken ones, fails the commands that need them with one error line and runs the others.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.h"
+#include "common/module_loader.h"
+
+namespace urdfsnap::cli_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kMrmXacro = (kSource / "models/mrm_description/urdf/mrm.xacro").string();
+const std::string kGolden = (kSource / "tests/golden/mrm_zero.png").string();
+
+// libraries only the video and serve modules may bring in, by the start of their file names
+// (libbrotlidec is not among them: FreeType reads WOFF2 fonts with it)
+const std::vector<std::string> kModuleLibraries = {
+    "urdfsnap-video.so", "urdfsnap-serve.so", "libavcodec", "libavformat", "libavfilter",
+    "libswscale", "libavutil", "libwebp", "libcpp-httplib", "libssl", "libcrypto", "libbrotlienc"};
+
+// The file names the loader mapped for `arguments` (status checked by the caller).
+struct Loaded {
+  Result result;
+  bool Has(const std::string& library) const {
+    // "file=/path/urdfsnap-video.so [0];  dynamically loaded by ..." or "file=libavcodec.so.59 [0]; ..."
+    return result.output.find("file=" + library) != std::string::npos ||
+           result.output.find("/" + library) != std::string::npos;
+  }
+};
+
+Loaded RunLogged(const std::string& arguments) {
+  Loaded loaded{RunUrdfsnap(arguments, "LD_DEBUG=files")};
+  EXPECT_NE(loaded.result.output.find("file=libc.so"), std::string::npos)
+      << "LD_DEBUG had no effect: " << loaded.result.output;
+  return loaded;
+}
+
+// The single line a failed command prints, or a note of what it printed instead.
+std::string OnlyLine(const Result& r) {
+  if (r.output.empty() || r.output.find('\n') != r.output.size() - 1) {
+    return "not one line: " + r.output;
+  }
+  return r.output;
+}
+
+using ModuleLoadingTest = CliTest;
+
+TEST_F(ModuleLoadingTest, CommandsThatWriteNoAnimationLoadNoModule) {
+  URDFSNAP_REQUIRE_GL();
+  const std::string suite = Write("suite.yaml", "cases:\n  - name: home\n    model: " + kMrm +
+                                                    "\n    golden: goldens/home.png\n");
+  const std::vector<std::string> commands = {
+      "--version",
+      "info " + kMrm,
+      "xacro " + kMrmXacro,
+      "render " + kMrm + " -o " + Path("a.png"),
+      "diff " + kGolden + " " + kGolden,
+      "snapshot update " + suite,
+      "snapshot check " + suite,
+  };
+  for (const std::string& command : commands) {
+    const Loaded loaded = RunLogged(command);
+    EXPECT_EQ(loaded.result.status, 0) << command << "\n" << loaded.result.output;
+    for (const std::string& library : kModuleLibraries) {
+      EXPECT_FALSE(loaded.Has(library)) << "urdfsnap " << command << " loads " << library;
+    }
+  }
+  // nor does --version make a GL context (only --version --verbose)
+  const Loaded version = RunLogged("--version");
+  for (const std::string& library : {"libOSMesa", "libEGL", "libLLVM", "libGL"}) {
+    EXPECT_FALSE(version.Has(library)) << "urdfsnap --version loads " << library;
+  }
+}
+
+TEST_F(ModuleLoadingTest, AnimateLoadsTheVideoModuleForVideosOnly) {
+  URDFSNAP_REQUIRE_GL();
+  const std::string animate = "animate " + kMrm + " --turntable --duration 0.1 --size 64x48 -o ";
+  const Loaded frames = RunLogged(animate + Path("frames/%03d.png"));
+  ASSERT_EQ(frames.result.status, 0) << frames.result.output;
+  EXPECT_FALSE(frames.Has("urdfsnap-video.so")) << frames.result.output;
+  EXPECT_FALSE(frames.Has("libavcodec")) << frames.result.output;
+
+  const Loaded video = RunLogged(animate + Path("a.mp4"));
+  ASSERT_EQ(video.result.status, 0) << video.result.output;
+  EXPECT_TRUE(video.Has("urdfsnap-video.so")) << video.result.output;
+  EXPECT_TRUE(video.Has("libavcodec")) << video.result.output;
+  EXPECT_FALSE(video.Has("urdfsnap-serve.so")) << video.result.output;
+}
+
+TEST_F(ModuleLoadingTest, ServeLoadsItsServerModule) {
+  URDFSNAP_REQUIRE_GL();
+  // 192.0.2.1 (TEST-NET-1) is no address of this machine: the server is made, then cannot listen
+  const Loaded serve = RunLogged("serve " + kMrm + " --bind 192.0.2.1 --port 0");
+  EXPECT_EQ(serve.result.status, 2) << serve.result.output;
+  EXPECT_NE(serve.result.output.find("urdfsnap: error: cannot listen on 192.0.2.1:0"), std::string::npos)
+      << serve.result.output;
+  EXPECT_TRUE(serve.Has("urdfsnap-serve.so")) << serve.result.output;
+  EXPECT_TRUE(serve.Has("libcpp-httplib")) << serve.result.output;
+  EXPECT_FALSE(serve.Has("urdfsnap-video.so")) << serve.result.output;
+}
+
+// A copy of the binary in a folder of its own, with `modules` (file name -> bytes) beside it.
+class BinaryCopyTest : public CliTest {
+ protected:
+  void SetUp() override {
+    CliTest::SetUp();
+    // a module installed on this machine would be found by the copy too
+    for (const fs::path& folder : ModuleFolders()) {
+      if (folder == fs::path(URDFSNAP_BINARY).parent_path()) continue;
+      for (const char* name : {"urdfsnap-video.so", "urdfsnap-serve.so"}) {
+        if (fs::exists(folder / name)) GTEST_SKIP() << (folder / name) << " is installed here";
+      }
+    }
+    fs::create_directories(Path("bin"));
+    fs::copy_file(URDFSNAP_BINARY, Path("bin/urdfsnap"));
+  }
+  Result Run(const std::string& arguments) { return RunProgram(Path("bin/urdfsnap"), arguments); }
+
+  // the commands that need no module still work; the ones that do fail with `reason`
+  void ExpectOnlyModuleCommandsFail(const std::string& video_reason, const std::string& serve_reason) {
+    const std::string animate = "animate " + kMrm + " --turntable --duration 0.1 --size 64x48 -o ";
+    const Result video = Run(animate + Path("a.gif"));
+    EXPECT_EQ(video.status, 2);
+    EXPECT_EQ(OnlyLine(video).rfind("urdfsnap: error: " + Path("a.gif") +
+                                        ": the MP4, WebM, GIF and WebP codecs (FFmpeg, libwebp): ", 0),
+              0u)
+        << video.output;
+    EXPECT_NE(video.output.find(video_reason), std::string::npos) << video.output;
+    EXPECT_FALSE(fs::exists(Path("a.gif")));
+
+    const Result serve = Run("serve " + kMrm + " --port 0");
+    EXPECT_EQ(serve.status, 2);
+    EXPECT_EQ(OnlyLine(serve).rfind("urdfsnap: error: the live view's server (cpp-httplib): ", 0), 0u)
+        << serve.output;
+    EXPECT_NE(serve.output.find(serve_reason), std::string::npos) << serve.output;
+
+    EXPECT_EQ(Run("info " + kMrm).status, 0);
+    const Result render = Run("render " + kMrm + " -o " + Path("a.png"));
+    EXPECT_EQ(render.status, 0) << render.output;
+    const Result frames = Run(animate + Path("frames/%03d.png"));
+    EXPECT_EQ(frames.status, 0) << frames.output;
+    EXPECT_TRUE(fs::exists(Path("frames/000.png")));
+  }
+};
+
+TEST_F(BinaryCopyTest, WithoutModulesOnlyAnimateToVideoAndServeFail) {
+  URDFSNAP_REQUIRE_GL();
+  ExpectOnlyModuleCommandsFail("urdfsnap-video.so is in none of " + Path("bin"),
+                               "urdfsnap-serve.so is in none of " + Path("bin"));
+}
+
+TEST_F(BinaryCopyTest, BrokenOrSwappedModulesAreOneErrorLine) {
+  URDFSNAP_REQUIRE_GL();
+  // not a shared object at all, and the other module under this one's name
+  Write("bin/urdfsnap-video.so", "not a shared object\n");
+  fs::copy_file(fs::path(URDFSNAP_BINARY).parent_path() / "urdfsnap-video.so",
+                Path("bin/urdfsnap-serve.so"));
+  ExpectOnlyModuleCommandsFail("cannot load " + Path("bin/urdfsnap-video.so") + " (",
+                               Path("bin/urdfsnap-serve.so") + " has no urdfsnap_serve_module");
+}
+
+}  // namespace
+}  // namespace urdfsnap::cli_test
