@@ -2,8 +2,9 @@
 # Start-up of whole urdfsnap processes: wall time (median over rounds of hyperfine runs, every
 # command once per round in turn, so a machine's changing load falls on all alike) and peak
 # resident memory (/usr/bin/time, median of 3) of `--version`, `info`, `xacro`, `render` and `diff`
-# on the tutorial robot mrm, and of the real (Python) xacro on the same file when one is given.
-# Timings only; nothing asserts.
+# on the tutorial robot mrm, of the real (Python) xacro on the same file when one is given, and of
+# MuJoCo's load+render+PNG peer of `render` (mujoco_peer.c) when Debian's libmujoco-dev is
+# installed. Timings only; nothing asserts.
 #
 # usage: bench/startup/startup_bench.sh [URDFSNAP] [ROUNDS]   (default build/urdfsnap, 5 rounds)
 #   URDFSNAP_REAL_XACRO  the real xacro's command (default: `xacro` when on PATH). ROS 2's xacro
@@ -41,6 +42,15 @@ commands=(
   "$urdfsnap render $mrm/mrm.urdf -o $work/mrm.png"
   "$urdfsnap diff $golden $golden"
 )
+if [ -f /usr/include/mujoco/mujoco.h ] &&
+    cc -O2 "$root/bench/startup/mujoco_peer.c" -o "$work/mujoco_peer" \
+      $(pkg-config --cflags --libs osmesa libpng) -lmujoco 2>"$work/cc.log"; then
+  # MuJoCo reads the URDF itself; links without inertia get its least mass, visuals are kept
+  sed '0,/<robot[^>]*>/s//&<mujoco><compiler discardvisual="false" boundmass="0.001" boundinertia="0.000001"\/><\/mujoco>/' \
+    "$mrm/mrm.urdf" >"$work/mrm_mujoco.urdf"
+  names+=("MuJoCo peer")
+  commands+=("$work/mujoco_peer $work/mrm_mujoco.urdf $work/mrm_mujoco.png")
+fi
 if [ -n "$real_xacro" ]; then
   if (cd "$work" && eval "$real_xacro $mrm/mrm.xacro" >/dev/null 2>&1); then
     names+=("real xacro")
@@ -59,7 +69,7 @@ median() { sort -n | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (
 
 echo "whole-process start-up, mrm ($(nproc) cores; median of $((rounds * 5)) runs in $rounds rounds)"
 printf '%-12s %10s %12s\n' command "time (ms)" "peak RSS (MB)"
-urdfsnap_xacro_ms=""
+urdfsnap_xacro_ms="" urdfsnap_render_ms=""
 for i in "${!commands[@]}"; do
   ms=$(for r in $(seq 0 $((rounds - 1))); do jq -r ".results[$i].times[]" "$work/round$r.json"; done |
        awk '{printf "%.3f\n", $1 * 1000}' | median)
@@ -68,6 +78,9 @@ for i in "${!commands[@]}"; do
         done | median)
   printf '%-12s %10.1f %12.1f\n' "${names[$i]}" "$ms" "$(awk -v k="$rss" 'BEGIN {print k / 1024}')"
   [ "${names[$i]}" = xacro ] && urdfsnap_xacro_ms=$ms
+  [ "${names[$i]}" = render ] && urdfsnap_render_ms=$ms
+  [ "${names[$i]}" = "MuJoCo peer" ] &&
+    awk -v a="$urdfsnap_render_ms" -v b="$ms" 'BEGIN {printf "urdfsnap render takes %.2fx the MuJoCo peer'"'"'s time\n", a / b}'
   [ "${names[$i]}" = "real xacro" ] &&
     awk -v a="$ms" -v b="$urdfsnap_xacro_ms" 'BEGIN {printf "urdfsnap xacro is %.1fx faster than the real xacro\n", a / b}'
 done
