@@ -1,8 +1,8 @@
 # `cmake --install`: the urdfsnap binary, the stage libraries with their headers (under
 # include/urdfsnap/<stage>/, included as "<stage>/<file>.h" as inside the project) and the CMake
-# package urdfsnapConfig.cmake with urdfsnap_add_snapshot_test(). The modules (urdfsnap-video.so,
-# urdfsnap-serve.so) install themselves into lib/urdfsnap/ (cmake/urdfsnapModule.cmake), where
-# the binary and programs linking urdfsnap_video find them.
+# package urdfsnapConfig.cmake with urdfsnap_add_snapshot_test(). The modules (urdfsnap-meshes.so,
+# urdfsnap-video.so, urdfsnap-serve.so) install themselves into lib/urdfsnap/ (cmake/urdfsnapModule.cmake), where
+# the binary and programs linking urdfsnap_geometry or urdfsnap_video find them.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -33,7 +33,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${urdfsnap_include_dir}
   REGEX "xacro/[a-z_]+\\.h$" EXCLUDE
   REGEX "scene/mesh_loading\\.h$" EXCLUDE
   REGEX "model/urdf_validation\\.h$" EXCLUDE
-  REGEX "geometry/(circle_parts|texture_coordinates)\\.h$" EXCLUDE)
+  REGEX "geometry/(circle_parts|texture_coordinates|mesh_module)\\.h$" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/src/xacro/xacro.h DESTINATION ${urdfsnap_include_dir}/xacro)
 install(EXPORT urdfsnapTargets NAMESPACE urdfsnap:: DESTINATION ${urdfsnap_package_dir})
 

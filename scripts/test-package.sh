@@ -33,6 +33,7 @@ done
 # contents
 contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
 for file in ./usr/bin/urdfsnap ./usr/lib/urdfsnap/urdfsnap-video.so ./usr/lib/urdfsnap/urdfsnap-serve.so \
+    ./usr/lib/urdfsnap/urdfsnap-meshes.so \
     ./usr/lib/liburdfsnap_snapshot.a ./usr/lib/liburdfsnap_shard.a \
     ./usr/include/urdfsnap/snapshot/results_file.h ./usr/include/urdfsnap/shard/shard_assignment.h \
     ./usr/lib/cmake/urdfsnap/urdfsnapConfig.cmake ./usr/lib/cmake/urdfsnap/urdfsnapSnapshotTest.cmake \

@@ -1,8 +1,9 @@
 // urdfsnap's modules: the parts of urdfsnap that need large libraries only some commands use,
 // built as shared objects and opened with dlopen when a command first needs them (the pattern of
 // OpenCV's videoio plugins and Mesa's drivers), so that the other commands never load those
-// libraries: urdfsnap-video.so (the video encoders and reader: FFmpeg, libwebp) and
-// urdfsnap-serve.so (the live view's server: cpp-httplib with OpenSSL and brotli).
+// libraries: urdfsnap-meshes.so (mesh files: assimp), urdfsnap-video.so (the video encoders and
+// reader: FFmpeg, libwebp) and urdfsnap-serve.so (the live view's server: cpp-httplib with
+// OpenSSL and brotli).
 //
 // A module is looked for in $URDFSNAP_MODULE_DIR when set, then beside the program or shared
 // library that holds this code (a build tree), then in lib/urdfsnap/ beside that one's bin/ (an

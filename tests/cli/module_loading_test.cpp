@@ -1,8 +1,9 @@
 // What each command loads, read from the dynamic loader's own account (LD_DEBUG=files names every
 // library mapped, linked or opened with dlopen): info, xacro, render, diff, snapshot and --version
-// load neither FFmpeg, libwebp nor the HTTP server; animate loads the video module for a video and
-// not for PNG frames; serve loads its server module. And a copy of the binary without its modules,
-// or with broken ones, fails the commands that need them with one error line and runs the others.
+// load neither FFmpeg, libwebp nor the HTTP server, nor assimp for a robot without meshes; a mesh
+// robot loads the mesh module; animate loads the video module for a video and not for PNG frames;
+// serve loads its server module. And a copy of the binary without its modules, or with broken
+// ones, fails the commands that need them with one error line and runs the others.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -19,11 +20,12 @@ namespace fs = std::filesystem;
 
 const std::string kMrmXacro = (kSource / "models/mrm_description/urdf/mrm.xacro").string();
 const std::string kGolden = (kSource / "tests/golden/mrm_zero.png").string();
+const std::string kMeshbot = (kSource / "models/meshbot_description/urdf/meshbot.urdf").string();
 
 // libraries only the video and serve modules may bring in, by the start of their file names
 // (libbrotlidec is not among them: FreeType reads WOFF2 fonts with it)
 const std::vector<std::string> kModuleLibraries = {
-    "urdfsnap-video.so", "urdfsnap-serve.so", "libavcodec", "libavformat", "libavfilter",
+    "urdfsnap-meshes.so", "libassimp", "urdfsnap-video.so", "urdfsnap-serve.so", "libavcodec", "libavformat", "libavfilter",
     "libswscale", "libavutil", "libwebp", "libcpp-httplib", "libssl", "libcrypto", "libbrotlienc"};
 
 // The file names the loader mapped for `arguments` (status checked by the caller).
@@ -75,9 +77,18 @@ TEST_F(ModuleLoadingTest, CommandsThatWriteNoAnimationLoadNoModule) {
   }
   // nor does --version make a GL context (only --version --verbose)
   const Loaded version = RunLogged("--version");
-  for (const std::string& library : {"libOSMesa", "libEGL", "libLLVM", "libGL"}) {
+  for (const char* library : {"libOSMesa", "libEGL", "libLLVM", "libGL"}) {
     EXPECT_FALSE(version.Has(library)) << "urdfsnap --version loads " << library;
   }
+}
+
+TEST_F(ModuleLoadingTest, MeshRobotsLoadTheMeshModule) {
+  URDFSNAP_REQUIRE_GL();
+  const Loaded meshes = RunLogged("render " + kMeshbot + " -o " + Path("a.png"));
+  ASSERT_EQ(meshes.result.status, 0) << meshes.result.output;
+  EXPECT_TRUE(meshes.Has("urdfsnap-meshes.so")) << meshes.result.output;
+  EXPECT_TRUE(meshes.Has("libassimp")) << meshes.result.output;
+  EXPECT_FALSE(meshes.Has("urdfsnap-video.so")) << meshes.result.output;
 }
 
 TEST_F(ModuleLoadingTest, AnimateLoadsTheVideoModuleForVideosOnly) {
@@ -115,7 +126,7 @@ class BinaryCopyTest : public CliTest {
     // a module installed on this machine would be found by the copy too
     for (const fs::path& folder : ModuleFolders()) {
       if (folder == fs::path(URDFSNAP_BINARY).parent_path()) continue;
-      for (const char* name : {"urdfsnap-video.so", "urdfsnap-serve.so"}) {
+      for (const char* name : {"urdfsnap-meshes.so", "urdfsnap-video.so", "urdfsnap-serve.so"}) {
         if (fs::exists(folder / name)) GTEST_SKIP() << (folder / name) << " is installed here";
       }
     }
@@ -124,8 +135,16 @@ class BinaryCopyTest : public CliTest {
   }
   Result Run(const std::string& arguments) { return RunProgram(Path("bin/urdfsnap"), arguments); }
 
-  // the commands that need no module still work; the ones that do fail with `reason`
-  void ExpectOnlyModuleCommandsFail(const std::string& video_reason, const std::string& serve_reason) {
+  // the commands that need no module still work; the ones that do fail with `*_reason`
+  void ExpectOnlyModuleCommandsFail(const std::string& mesh_reason, const std::string& video_reason,
+                                    const std::string& serve_reason) {
+    const Result meshes = Run("render " + kMeshbot + " -o " + Path("meshbot.png"));
+    EXPECT_EQ(meshes.status, 2);
+    EXPECT_EQ(OnlyLine(meshes).rfind("urdfsnap: error: ", 0), 0u) << meshes.output;
+    EXPECT_NE(meshes.output.find(": the mesh file reader (assimp): " + mesh_reason), std::string::npos)
+        << meshes.output;
+    EXPECT_FALSE(fs::exists(Path("meshbot.png")));
+
     const std::string animate = "animate " + kMrm + " --turntable --duration 0.1 --size 64x48 -o ";
     const Result video = Run(animate + Path("a.gif"));
     EXPECT_EQ(video.status, 2);
@@ -153,17 +172,20 @@ class BinaryCopyTest : public CliTest {
 
 TEST_F(BinaryCopyTest, WithoutModulesOnlyAnimateToVideoAndServeFail) {
   URDFSNAP_REQUIRE_GL();
-  ExpectOnlyModuleCommandsFail("urdfsnap-video.so is in none of " + Path("bin"),
+  ExpectOnlyModuleCommandsFail("urdfsnap-meshes.so is in none of " + Path("bin"),
+                               "urdfsnap-video.so is in none of " + Path("bin"),
                                "urdfsnap-serve.so is in none of " + Path("bin"));
 }
 
 TEST_F(BinaryCopyTest, BrokenOrSwappedModulesAreOneErrorLine) {
   URDFSNAP_REQUIRE_GL();
-  // not a shared object at all, and the other module under this one's name
+  // not a shared object at all, and other modules under these ones' names
   Write("bin/urdfsnap-video.so", "not a shared object\n");
-  fs::copy_file(fs::path(URDFSNAP_BINARY).parent_path() / "urdfsnap-video.so",
-                Path("bin/urdfsnap-serve.so"));
-  ExpectOnlyModuleCommandsFail("cannot load " + Path("bin/urdfsnap-video.so") + " (",
+  const fs::path built = fs::path(URDFSNAP_BINARY).parent_path();
+  fs::copy_file(built / "urdfsnap-video.so", Path("bin/urdfsnap-serve.so"));
+  fs::copy_file(built / "urdfsnap-serve.so", Path("bin/urdfsnap-meshes.so"));
+  ExpectOnlyModuleCommandsFail(Path("bin/urdfsnap-meshes.so") + " has no urdfsnap_mesh_module",
+                               "cannot load " + Path("bin/urdfsnap-video.so") + " (",
                                Path("bin/urdfsnap-serve.so") + " has no urdfsnap_serve_module");
 }
 
