@@ -25,25 +25,9 @@ const std::string kMeshbot = (kSource / "models/meshbot_description/urdf/meshbot
 // libraries only the video and serve modules may bring in, by the start of their file names
 // (libbrotlidec is not among them: FreeType reads WOFF2 fonts with it)
 const std::vector<std::string> kModuleLibraries = {
-    "urdfsnap-meshes.so", "libassimp", "urdfsnap-video.so", "urdfsnap-serve.so", "libavcodec", "libavformat", "libavfilter",
-    "libswscale", "libavutil", "libwebp", "libcpp-httplib", "libssl", "libcrypto", "libbrotlienc"};
-
-// The file names the loader mapped for `arguments` (status checked by the caller).
-struct Loaded {
-  Result result;
-  bool Has(const std::string& library) const {
-    // "file=/path/urdfsnap-video.so [0];  dynamically loaded by ..." or "file=libavcodec.so.59 [0]; ..."
-    return result.output.find("file=" + library) != std::string::npos ||
-           result.output.find("/" + library) != std::string::npos;
-  }
-};
-
-Loaded RunLogged(const std::string& arguments) {
-  Loaded loaded{RunUrdfsnap(arguments, "LD_DEBUG=files")};
-  EXPECT_NE(loaded.result.output.find("file=libc.so"), std::string::npos)
-      << "LD_DEBUG had no effect: " << loaded.result.output;
-  return loaded;
-}
+    "urdfsnap-meshes.so", "libassimp", "urdfsnap-video.so", "urdfsnap-serve.so", "libavcodec",
+    "libavformat", "libavfilter", "libswscale", "libavutil", "libwebp", "libcpp-httplib", "libssl",
+    "libcrypto", "libbrotlienc"};
 
 // The single line a failed command prints, or a note of what it printed instead.
 std::string OnlyLine(const Result& r) {
@@ -51,6 +35,28 @@ std::string OnlyLine(const Result& r) {
     return "not one line: " + r.output;
   }
   return r.output;
+}
+
+// Runs `arguments` with the loader's account of every library it maps on (LD_DEBUG=files),
+// expecting exit status `status`, and checks that it loaded every library of `loaded` and none of
+// `not_loaded` (names or the start of names: "libavcodec", "urdfsnap-video.so").
+Result ExpectLoads(const std::string& arguments, int status, const std::vector<std::string>& loaded,
+                   const std::vector<std::string>& not_loaded) {
+  const Result run = RunUrdfsnap(arguments, "LD_DEBUG=files");
+  EXPECT_NE(run.output.find("file=libc.so"), std::string::npos) << "LD_DEBUG had no effect: " << run.output;
+  EXPECT_EQ(run.status, status) << arguments << "\n" << run.output;
+  // "file=/path/urdfsnap-video.so [0];  dynamically loaded by ..." or "file=libavcodec.so.59 [0]; ..."
+  auto has = [&run](const std::string& library) {
+    return run.output.find("file=" + library) != std::string::npos ||
+           run.output.find("/" + library) != std::string::npos;
+  };
+  for (const std::string& library : loaded) {
+    EXPECT_TRUE(has(library)) << "urdfsnap " << arguments << " does not load " << library;
+  }
+  for (const std::string& library : not_loaded) {
+    EXPECT_FALSE(has(library)) << "urdfsnap " << arguments << " loads " << library;
+  }
+  return run;
 }
 
 using ModuleLoadingTest = CliTest;
@@ -68,54 +74,31 @@ TEST_F(ModuleLoadingTest, CommandsThatWriteNoAnimationLoadNoModule) {
       "snapshot update " + suite,
       "snapshot check " + suite,
   };
-  for (const std::string& command : commands) {
-    const Loaded loaded = RunLogged(command);
-    EXPECT_EQ(loaded.result.status, 0) << command << "\n" << loaded.result.output;
-    for (const std::string& library : kModuleLibraries) {
-      EXPECT_FALSE(loaded.Has(library)) << "urdfsnap " << command << " loads " << library;
-    }
-  }
+  for (const std::string& command : commands) ExpectLoads(command, 0, {}, kModuleLibraries);
   // nor does --version make a GL context (only --version --verbose)
-  const Loaded version = RunLogged("--version");
-  for (const char* library : {"libOSMesa", "libEGL", "libLLVM", "libGL"}) {
-    EXPECT_FALSE(version.Has(library)) << "urdfsnap --version loads " << library;
-  }
+  ExpectLoads("--version", 0, {}, {"libOSMesa", "libEGL", "libLLVM", "libGL"});
 }
 
 TEST_F(ModuleLoadingTest, MeshRobotsLoadTheMeshModule) {
   URDFSNAP_REQUIRE_GL();
-  const Loaded meshes = RunLogged("render " + kMeshbot + " -o " + Path("a.png"));
-  ASSERT_EQ(meshes.result.status, 0) << meshes.result.output;
-  EXPECT_TRUE(meshes.Has("urdfsnap-meshes.so")) << meshes.result.output;
-  EXPECT_TRUE(meshes.Has("libassimp")) << meshes.result.output;
-  EXPECT_FALSE(meshes.Has("urdfsnap-video.so")) << meshes.result.output;
+  ExpectLoads("render " + kMeshbot + " -o " + Path("a.png"), 0,
+              {"urdfsnap-meshes.so", "libassimp"}, {"urdfsnap-video.so"});
 }
 
 TEST_F(ModuleLoadingTest, AnimateLoadsTheVideoModuleForVideosOnly) {
   URDFSNAP_REQUIRE_GL();
   const std::string animate = "animate " + kMrm + " --turntable --duration 0.1 --size 64x48 -o ";
-  const Loaded frames = RunLogged(animate + Path("frames/%03d.png"));
-  ASSERT_EQ(frames.result.status, 0) << frames.result.output;
-  EXPECT_FALSE(frames.Has("urdfsnap-video.so")) << frames.result.output;
-  EXPECT_FALSE(frames.Has("libavcodec")) << frames.result.output;
-
-  const Loaded video = RunLogged(animate + Path("a.mp4"));
-  ASSERT_EQ(video.result.status, 0) << video.result.output;
-  EXPECT_TRUE(video.Has("urdfsnap-video.so")) << video.result.output;
-  EXPECT_TRUE(video.Has("libavcodec")) << video.result.output;
-  EXPECT_FALSE(video.Has("urdfsnap-serve.so")) << video.result.output;
+  ExpectLoads(animate + Path("frames/%03d.png"), 0, {}, {"urdfsnap-video.so", "libavcodec"});
+  ExpectLoads(animate + Path("a.mp4"), 0, {"urdfsnap-video.so", "libavcodec"}, {"urdfsnap-serve.so"});
 }
 
 TEST_F(ModuleLoadingTest, ServeLoadsItsServerModule) {
   URDFSNAP_REQUIRE_GL();
   // 192.0.2.1 (TEST-NET-1) is no address of this machine: the server is made, then cannot listen
-  const Loaded serve = RunLogged("serve " + kMrm + " --bind 192.0.2.1 --port 0");
-  EXPECT_EQ(serve.result.status, 2) << serve.result.output;
-  EXPECT_NE(serve.result.output.find("urdfsnap: error: cannot listen on 192.0.2.1:0"), std::string::npos)
-      << serve.result.output;
-  EXPECT_TRUE(serve.Has("urdfsnap-serve.so")) << serve.result.output;
-  EXPECT_TRUE(serve.Has("libcpp-httplib")) << serve.result.output;
-  EXPECT_FALSE(serve.Has("urdfsnap-video.so")) << serve.result.output;
+  const Result serve = ExpectLoads("serve " + kMrm + " --bind 192.0.2.1 --port 0", 2,
+                                   {"urdfsnap-serve.so", "libcpp-httplib"}, {"urdfsnap-video.so"});
+  EXPECT_NE(serve.output.find("urdfsnap: error: cannot listen on 192.0.2.1:0"), std::string::npos)
+      << serve.output;
 }
 
 // A copy of the binary in a folder of its own, with `modules` (file name -> bytes) beside it.
