@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages urdfsnap needs to build, test and package, only those that are
 # missing (chromium, ffmpeg's command-line tools, nodejs/npm, python3-jsonschema and python3-yaml
-# are for the tests only; help2man and dpkg-dev for scripts/package.sh).
+# are for the tests only; help2man and dpkg-dev for scripts/package.sh; hyperfine and time for
+# bench/startup).
 # Idempotent and quiet when everything is already there. Needs root (apt-get).
 # usage: scripts/deps.sh [--sanitizers]   (--sanitizers: also clang and libFuzzer, for the
 # sanitizer build and scripts/fuzz.sh; the normal build does not need them)
@@ -18,6 +19,7 @@ packages=(
   libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev libavutil-dev libwebp-dev ffmpeg
   chromium  # the browser tests (the HTML report, serve's page), headless; CI fails them without it
   python3-jsonschema python3-yaml help2man dpkg-dev
+  hyperfine time
 )
 # npm only for the test tooling, and only when no npm is on the PATH (NodeSource's nodejs package
 # brings its own, which Debian's npm package would conflict with)

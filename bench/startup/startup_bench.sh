@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Start-up of whole urdfsnap processes: wall time (median over rounds of hyperfine runs, every
-# command once per round in turn, so a machine's changing load falls on all alike) and peak
-# resident memory (/usr/bin/time, median of 3) of `--version`, `info`, `xacro`, `render` and `diff`
+# Start-up of whole urdfsnap processes: wall time (median over rounds of hyperfine runs without a
+# shell, every command once per round in turn, so a machine's changing load falls on all alike)
+# and peak resident memory (/usr/bin/time, median of 3) of `--version`, `info`, `xacro`, `render` and `diff`
 # on the tutorial robot mrm, of the real (Python) xacro on the same file when one is given, and of
 # MuJoCo's load+render+PNG peer of `render` (mujoco_peer.c) when Debian's libmujoco-dev is
 # installed. Timings only; nothing asserts.
@@ -18,7 +18,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 urdfsnap=$(realpath "${1:-$root/build/urdfsnap}")
 rounds=${2:-5}
-for tool in hyperfine jq /usr/bin/time; do
+for tool in hyperfine python3 /usr/bin/time; do
   command -v "$tool" >/dev/null || { echo "startup_bench.sh: $tool is missing" >&2; exit 2; }
 done
 real_xacro=${URDFSNAP_REAL_XACRO:-$(command -v xacro || true)}
@@ -62,7 +62,7 @@ fi
 
 # rounds of hyperfine, each command's times gathered across them
 for ((r = 0; r < rounds; r++)); do
-  hyperfine --shell=bash --warmup 1 --runs 5 --export-json "$work/round$r.json" "${commands[@]}" \
+  hyperfine -N --warmup 1 --runs 5 --export-json "$work/round$r.json" "${commands[@]}" \
     >/dev/null 2>&1
 done
 median() { sort -n | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
@@ -71,8 +71,10 @@ echo "whole-process start-up, mrm ($(nproc) cores; median of $((rounds * 5)) run
 printf '%-12s %10s %12s\n' command "time (ms)" "peak RSS (MB)"
 urdfsnap_xacro_ms="" urdfsnap_render_ms=""
 for i in "${!commands[@]}"; do
-  ms=$(for r in $(seq 0 $((rounds - 1))); do jq -r ".results[$i].times[]" "$work/round$r.json"; done |
-       awk '{printf "%.3f\n", $1 * 1000}' | median)
+  ms=$(python3 -c 'import json, sys
+for path in sys.argv[2:]:
+    for t in json.load(open(path))["results"][int(sys.argv[1])]["times"]: print(t * 1000)' \
+         "$i" "$work"/round*.json | median)
   rss=$(for _ in 1 2 3; do
           /usr/bin/time -f %M bash -c "${commands[$i]}" 2>&1 >/dev/null | tail -n 1
         done | median)
