@@ -1,6 +1,8 @@
 # `cmake --install`: the urdfsnap binary, the stage libraries with their headers (under
 # include/urdfsnap/<stage>/, included as "<stage>/<file>.h" as inside the project) and the CMake
-# package urdfsnapConfig.cmake with urdfsnap_add_snapshot_test().
+# package urdfsnapConfig.cmake with urdfsnap_add_snapshot_test(). The modules (urdfsnap-meshes.so,
+# urdfsnap-video.so, urdfsnap-serve.so) install themselves into lib/urdfsnap/ (cmake/urdfsnapModule.cmake), where
+# the binary and programs linking urdfsnap_geometry or urdfsnap_video find them.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -17,7 +19,7 @@ install(TARGETS urdfsnap ${urdfsnap_libraries} EXPORT urdfsnapTargets
   INCLUDES DESTINATION ${urdfsnap_include_dir})
 # Only the public API's headers: not the GL plumbing (no GL headers in the installed API), the
 # xacro processor's internals (xacro.h is its interface), the encoders behind video/frame_encoder.h
-# (FFmpeg and libwebp stay private), the MCAP reader's byte handling, other stage-internal helpers,
+# (FFmpeg and libwebp stay inside the video module), the MCAP reader's byte handling, other stage-internal helpers,
 # or the commands' own libraries (cli, animation, docs, serve: not installed).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${urdfsnap_include_dir}
   FILES_MATCHING PATTERN "*.h"
@@ -25,13 +27,13 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${urdfsnap_include_dir}
   PATTERN "animation" EXCLUDE
   PATTERN "docs" EXCLUDE
   PATTERN "serve" EXCLUDE
-  REGEX "video/(animation_reader|ffmpeg_output|filter_graph|frame_store|frame_size|gif_encoder|png_sequence_encoder|video_encoder|webp_encoder)\\.h$" EXCLUDE
+  REGEX "video/(animation_reader|codec_module|ffmpeg_output|filter_graph|frame_store|frame_size|gif_encoder|png_sequence_encoder|video_encoder|webp_encoder)\\.h$" EXCLUDE
   REGEX "bag/(byte_reader|file_cursor|chunk_decompressor)\\.h$" EXCLUDE
   REGEX "gl/(gl_api|framebuffer|gpu_mesh|gpu_texture|shader_program|embedded_shaders)\\.h$" EXCLUDE
   REGEX "xacro/[a-z_]+\\.h$" EXCLUDE
   REGEX "scene/mesh_loading\\.h$" EXCLUDE
   REGEX "model/urdf_validation\\.h$" EXCLUDE
-  REGEX "geometry/(circle_parts|texture_coordinates)\\.h$" EXCLUDE)
+  REGEX "geometry/(circle_parts|texture_coordinates|mesh_module)\\.h$" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/src/xacro/xacro.h DESTINATION ${urdfsnap_include_dir}/xacro)
 install(EXPORT urdfsnapTargets NAMESPACE urdfsnap:: DESTINATION ${urdfsnap_package_dir})
 

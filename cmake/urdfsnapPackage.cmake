@@ -1,9 +1,11 @@
 # The Debian package, made by CPack (scripts/package.sh): urdfsnap_<version>_<arch>.deb with what
-# `cmake --install` installs (the binary, the static libraries, their headers, the CMake package,
-# the Python package when URDFSNAP_BUILD_PYTHON) plus the man pages, under /usr.
+# `cmake --install` installs (the binary, its modules in lib/urdfsnap/, the static libraries, their
+# headers, the CMake package, the Python package when URDFSNAP_BUILD_PYTHON) plus the man pages,
+# under URDFSNAP_PACKAGE_PREFIX (/usr).
 #
-# Depends: what dpkg-shlibdeps finds for the binary's shared libraries (assimp, urdfdom, yaml-cpp,
-# tinyxml2, FreeType, expat, zlib, the C++ runtime), plus what is loaded at run time and so is
+# Depends: what dpkg-shlibdeps finds for the shared libraries of the binary (urdfdom,
+# yaml-cpp, tinyxml2, FreeType, expat, zlib, the C++ runtime) and of its modules (assimp; FFmpeg,
+# libwebp, zstd; cpp-httplib), plus what is loaded at run time and so is
 # invisible to it: URDFSNAP_PACKAGE_RUNTIME_DEPENDS below. Linking the C++ libraries
 # (find_package(urdfsnap)) also needs the -dev packages of those libraries: Suggests, so that CI
 # runners installing the package for the command line do not get them.
@@ -46,7 +48,7 @@ if(URDFSNAP_BUILD_PYTHON)
          "python3 (<< ${Python3_VERSION_MAJOR}.${urdfsnap_python_next}), python3-numpy")
 endif()
 # what find_package(urdfsnap) needs (cmake/urdfsnapConfig.cmake.in: keep the two in step)
-set(CPACK_DEBIAN_PACKAGE_SUGGESTS "liburdfdom-dev, libeigen3-dev, libtinyxml2-dev, libyaml-cpp-dev, nlohmann-json3-dev, zlib1g-dev, libpng-dev, libjpeg-dev, libassimp-dev, libfreetype-dev, libexpat1-dev, pkg-config, libzstd-dev, liblz4-dev, libavcodec-dev, libavformat-dev, libavfilter-dev, libswscale-dev, libavutil-dev, libwebp-dev")
-set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "liburdfdom-dev, libeigen3-dev, libtinyxml2-dev, libyaml-cpp-dev, nlohmann-json3-dev, zlib1g-dev, libpng-dev, libjpeg-dev, libfreetype-dev, libexpat1-dev, pkg-config, libzstd-dev, liblz4-dev")
+set(CPACK_PACKAGING_INSTALL_PREFIX ${URDFSNAP_PACKAGE_PREFIX})
 set(CPACK_STRIP_FILES ON)
 include(CPack)

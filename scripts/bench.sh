@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds urdfsnap and runs its benchmarks, printing their tables (the C++ ones, then the time and
-# memory of whole commands). Timings only; nothing asserts.
+# memory of whole commands, start-up among them). Timings only; nothing asserts.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"
@@ -11,3 +11,5 @@ for b in "$root"/build/*_bench; do
 done
 echo "== docs_bench"
 "$root/bench/docs/docs_bench.sh" "$root/build/urdfsnap"
+echo "== startup_bench"
+"$root/bench/startup/startup_bench.sh" "$root/build/urdfsnap"

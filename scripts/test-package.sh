@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The Debian package as a user gets it: built from BUILD_DIR by scripts/package.sh (packing the
 # tree as it is, nothing compiled again), read with dpkg-deb (name, fields, contents, Depends
-# covering every shared library the binary needs and what it loads at run time), then unpacked
-# with dpkg-deb -x and its binary run from there: --version, and a render of mrm that must match
-# the golden image tests/golden/mrm_zero.png; and so for the Python package when it is built.
+# covering every shared library the binary and its modules need and what it loads at run time),
+# then unpacked with dpkg-deb -x and its binary run from there: --version, a render of mrm that
+# must match the golden image tests/golden/mrm_zero.png, and a GIF through the video module the
+# unpacked binary finds in its tree's lib/urdfsnap/; and so for the Python package when it is built.
 # usage: scripts/test-package.sh [BUILD_DIR]   (default: build/)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -31,7 +32,9 @@ done
 
 # contents
 contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
-for file in ./usr/bin/urdfsnap ./usr/lib/liburdfsnap_snapshot.a ./usr/lib/liburdfsnap_shard.a \
+for file in ./usr/bin/urdfsnap ./usr/lib/urdfsnap/urdfsnap-video.so ./usr/lib/urdfsnap/urdfsnap-serve.so \
+    ./usr/lib/urdfsnap/urdfsnap-meshes.so \
+    ./usr/lib/liburdfsnap_snapshot.a ./usr/lib/liburdfsnap_shard.a \
     ./usr/include/urdfsnap/snapshot/results_file.h ./usr/include/urdfsnap/shard/shard_assignment.h \
     ./usr/lib/cmake/urdfsnap/urdfsnapConfig.cmake ./usr/lib/cmake/urdfsnap/urdfsnapSnapshotTest.cmake \
     ./usr/share/man/man1/urdfsnap.1.gz; do
@@ -40,9 +43,9 @@ done
 
 dpkg-deb -x "$deb" "$work/root"
 binary="$work/root/usr/bin/urdfsnap"
-# every shared library the binary links directly (NEEDED) is owned by a package in Depends; the
-# libraries those load are their packages' own dependencies
-for library in $(objdump -p "$binary" | awk '$1 == "NEEDED" {print $2}'); do
+# every shared library the binary and its modules link directly (NEEDED) is owned by a package in
+# Depends; the libraries those load are their packages' own dependencies
+for library in $(objdump -p "$binary" "$work"/root/usr/lib/urdfsnap/*.so | awk '$1 == "NEEDED" {print $2}' | sort -u); do
   path=$(ldconfig -p | awk -v l="$library" '$1 == l && !found {print $NF; found = 1}')
   [ -n "$path" ] || fail "$library, which the binary needs, is not installed here"
   owner=$(dpkg -S "$path" 2>/dev/null || dpkg -S "$(readlink -f "$path")" 2>/dev/null) ||
@@ -63,6 +66,9 @@ for page in "$work"/root/usr/share/man/man1/*.gz; do gzip -t "$page"; done
 "$binary" render "$root/models/mrm_description/urdf/mrm.urdf" -o "$work/mrm.png"
 "$binary" diff "$root/tests/golden/mrm_zero.png" "$work/mrm.png" >/dev/null ||
   fail "the packaged binary's render of mrm differs from tests/golden/mrm_zero.png"
+"$binary" animate "$root/models/mrm_description/urdf/mrm.urdf" --turntable --duration 0.2 --size 64x48 \
+  -o "$work/mrm.gif"
+[ "$(head -c 6 "$work/mrm.gif")" = GIF89a ] || fail "the packaged binary wrote no GIF"
 # the Python package, when the tree builds it: importable from the unpacked dist-packages with
 # Debian's python3, rendering the same pixels
 if grep -q '^URDFSNAP_BUILD_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then

@@ -4,6 +4,7 @@
 #include <exception>
 #include <new>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/command.h"
@@ -70,9 +71,17 @@ std::string OptionError(const CLI::App& app) {
 int main(int argc, char** argv) {
   CLI::App app{"urdfsnap: RViz-like PNG images of URDF/xacro robots, headless", "urdfsnap"};
   app.require_subcommand(1);
-  // the GL lines make a context to say what it is (about 0.1 s: Mesa loads), hence a function
-  app.set_version_flag("--version", [] { return "urdfsnap " + std::string(urdfsnap::Version()) + "\n" + urdfsnap::gl::DescribeGlBackends(); },
-                       "print the version, the GL backends compiled in and the one used here, and exit");
+  // --version alone is the version string (a few milliseconds); with --verbose also the GL lines,
+  // which make a context to say what it is (Mesa loads). The version flag ends the parse where it
+  // stands, so --verbose is looked for among all the words.
+  const bool verbose = std::find(argv + 1, argv + argc, std::string_view("--verbose")) != argv + argc;
+  app.set_version_flag("--version", [verbose] {
+    const std::string version = "urdfsnap " + std::string(urdfsnap::Version());
+    return verbose ? version + "\n" + urdfsnap::gl::DescribeGlBackends() : version;
+  }, "print the version and exit; with --verbose also the GL backends compiled in and the one used here");
+  bool verbose_flag = false;  // read from the words above: the flag is only accepted here
+  app.add_flag("--verbose", verbose_flag,
+               "with --version: also the GL backends compiled in and the one used here");
   app.add_flag("--strict", urdfsnap::cli::StrictWarnings(),
                "treat warnings as errors: print the warning as an error, write nothing, exit 2 "
                "(before or after the command)");

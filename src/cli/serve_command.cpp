@@ -17,7 +17,7 @@
 #include "common/error.h"
 #include "gl/gl_context.h"
 #include "request/value_parsing.h"
-#include "serve/server.h"
+#include "serve/loaded_server.h"
 
 namespace urdfsnap::cli {
 
@@ -60,6 +60,8 @@ void LogReload(const serve::ModelState& state, const std::string& model) {
 }
 
 void Run(ServeOptions& o) {
+  // the server is a module (loaded_server.h): a missing one is the first thing reported
+  const serve::ServerModule& server_module = serve::LoadServerModule();
   const sigset_t stop_signals = BlockStopSignals();
   std::signal(SIGPIPE, SIG_IGN);  // a client that goes away mid-response is not our end
   serve::ServerOptions options;
@@ -75,13 +77,13 @@ void Run(ServeOptions& o) {
   options.on_reload = [model = o.model.path](const serve::ModelState& state) { LogReload(state, model); };
 
   Warnings warnings;
-  if (!serve::IsLoopback(o.bind)) {
+  if (!server_module.is_loopback(o.bind)) {
     warnings.Add("--bind " + o.bind + ": anyone who can reach this address sees the model and "
                  "its pictures (the server has no login)");
   }
-  std::unique_ptr<serve::Server> server;
+  std::unique_ptr<serve::LoadedServer> server;
   try {
-    server = std::make_unique<serve::Server>(options, warnings);
+    server = std::make_unique<serve::LoadedServer>(options, warnings);
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;

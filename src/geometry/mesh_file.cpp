@@ -1,6 +1,6 @@
-// Mesh file loading through assimp, following RViz 1.14's src/rviz/mesh_loader.cpp step by step,
-// and a process-wide cache of the results.
-#include "geometry/mesh_file.h"
+// ReadMeshFile (in urdfsnap-meshes.so): mesh file loading through assimp, following RViz 1.14's
+// src/rviz/mesh_loader.cpp step by step.
+#include "geometry/mesh_module.h"
 
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -13,10 +13,8 @@
 #include <filesystem>
 #include <string_view>
 #include <system_error>
-#include <tuple>
 
 #include "common/error.h"
-#include "common/shared_cache.h"
 
 namespace urdfsnap::geometry {
 
@@ -167,7 +165,9 @@ struct Builder {
   }
 };
 
-MeshFile Load(const fs::path& path) {
+}  // namespace
+
+MeshFile ReadMeshFile(const fs::path& path) {
   const SourceLocation where{path.string()};
   std::error_code ec;
   const std::uintmax_t bytes = fs::file_size(path, ec);
@@ -186,20 +186,6 @@ MeshFile Load(const fs::path& path) {
   if (file.parts.empty())
     throw Error(where, "no triangles in the mesh file");  // RViz: "No meshes found in file"
   return file;
-}
-
-}  // namespace
-
-std::shared_ptr<const MeshFile> LoadMeshFile(const std::string& path) {
-  std::error_code ec;
-  const fs::path canonical = fs::canonical(path, ec);
-  if (ec) throw Error(SourceLocation{path}, "cannot read mesh file: " + ec.message());
-  // keyed by the file's identity and version, so an edited file is read again
-  const auto modified = fs::last_write_time(canonical, ec).time_since_epoch().count();
-  const auto size = fs::file_size(canonical, ec);
-  static SharedCache<std::tuple<std::string, long long, std::uintmax_t>, MeshFile> cache;
-  return cache.Get({canonical.string(), static_cast<long long>(modified), ec ? 0 : size},
-                   [&] { return std::make_shared<const MeshFile>(Load(canonical)); });
 }
 
 }  // namespace urdfsnap::geometry

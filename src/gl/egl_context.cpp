@@ -26,7 +26,7 @@
 
 #include "common/error.h"
 #include "gl/gl_backends.h"
-#include "gl/shared_library.h"
+#include "common/shared_library.h"
 
 namespace urdfsnap::gl {
 
@@ -99,7 +99,8 @@ bool HasWord(const char* words, const char* word) {
 }
 
 EglLibrary OpenEgl() {
-  const SharedLibrary library(URDFSNAP_EGL_LIBRARY, "libegl1, libegl-mesa0 and libgl1-mesa-dri");
+  const SharedLibrary library(URDFSNAP_EGL_LIBRARY,
+                              "install Debian's libegl1, libegl-mesa0 and libgl1-mesa-dri");
   EglLibrary egl;
   egl.get_proc_address = library.Get<decltype(egl.get_proc_address)>("eglGetProcAddress");
   egl.get_error = library.Get<decltype(egl.get_error)>("eglGetError");

@@ -10,7 +10,7 @@
 
 #include "common/error.h"
 #include "gl/gl_backends.h"
-#include "gl/shared_library.h"
+#include "common/shared_library.h"
 
 namespace urdfsnap::gl {
 
@@ -25,7 +25,7 @@ struct OsMesaLibrary {
 };
 
 OsMesaLibrary OpenOsMesa() {
-  const SharedLibrary library(URDFSNAP_OSMESA_LIBRARY, "libosmesa6");
+  const SharedLibrary library(URDFSNAP_OSMESA_LIBRARY, "install Debian's libosmesa6");
   OsMesaLibrary osmesa;
   osmesa.create_context =
       library.Get<decltype(osmesa.create_context)>("OSMesaCreateContextAttribs");

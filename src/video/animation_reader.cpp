@@ -1,5 +1,5 @@
-// AnimationReader: a libwebp WebPAnimDecoder over the file's bytes for WebP; libavformat's demuxer,
-// libavcodec's decoder and libswscale's RGB conversion for the rest.
+// OpenAnimationFile (in urdfsnap-video.so): a libwebp WebPAnimDecoder over the file's bytes for
+// WebP; libavformat's demuxer, libavcodec's decoder and libswscale's RGB conversion for the rest.
 #include "video/animation_reader.h"
 
 extern "C" {
@@ -158,7 +158,7 @@ class FfmpegReader final : public AnimationReader {
 
 }  // namespace
 
-std::unique_ptr<AnimationReader> OpenAnimationReader(const std::string& path) {
+std::unique_ptr<AnimationReader> OpenAnimationFile(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".webp") return std::make_unique<WebpReader>(path);

@@ -1,7 +1,7 @@
 // Reading an animation back frame by frame, as 8-bit RGB with the time each frame ends: GIF, MP4
 // and WebM through FFmpeg's libavformat/libavcodec (converted by libswscale), animated WebP through
-// libwebp's animation decoder (FFmpeg 5 reads no animated WebP). For comparing a committed
-// animation with a fresh one (`docs --check`), one frame in memory at a time.
+// libwebp's animation decoder (FFmpeg 5 reads no animated WebP), inside the video module. For
+// comparing a committed animation with a fresh one (`docs --check`), one frame in memory at a time.
 #pragma once
 
 #include <memory>
@@ -21,8 +21,12 @@ class AnimationReader {
   virtual bool Next(image::Image& frame, double& end_ms) = 0;
 };
 
-// Opens the animation at `path` by its extension (.gif, .webp, .mp4, .webm). Throws
-// urdfsnap::Error naming the path when it cannot be read or is not such an animation.
+// Opens the animation at `path` by its extension (.gif, .webp, .mp4, .webm), through the video
+// module (codec_module.h), loaded on first use. Throws urdfsnap::Error naming the path when it
+// cannot be read or is not such an animation, or when the module cannot be loaded.
 std::unique_ptr<AnimationReader> OpenAnimationReader(const std::string& path);
+
+// What OpenAnimationReader calls inside urdfsnap-video.so.
+std::unique_ptr<AnimationReader> OpenAnimationFile(const std::string& path);
 
 }  // namespace urdfsnap::video

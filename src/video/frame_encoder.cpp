@@ -1,4 +1,5 @@
-// OutputFormatOf and OpenFrameEncoder: the extension decides, settings are checked once here.
+// OutputFormatOf and OpenFrameEncoder: the extension decides, settings are checked once here; PNG
+// sequences are written here, the other formats by the video module (codec_module.h).
 #include "video/frame_encoder.h"
 
 #include <cmath>
@@ -6,11 +7,9 @@
 
 #include "common/error.h"
 #include "common/file_extension.h"
+#include "video/codec_module.h"
 #include "video/frame_pattern.h"
-#include "video/gif_encoder.h"
 #include "video/png_sequence_encoder.h"
-#include "video/video_encoder.h"
-#include "video/webp_encoder.h"
 
 namespace urdfsnap::video {
 OutputFormat OutputFormatOf(const std::string& path) {
@@ -65,11 +64,11 @@ std::unique_ptr<FrameEncoder> OpenFrameEncoder(const std::string& path,
   switch (format) {
     case OutputFormat::kMp4:
     case OutputFormat::kWebm:
-      return OpenVideoEncoder(path, format, settings);
+      return Codecs(path).open_video_encoder(path, format, settings);
     case OutputFormat::kGif:
-      return OpenGifEncoder(path, settings, warnings);
+      return Codecs(path).open_gif_encoder(path, settings, warnings);
     case OutputFormat::kWebp:
-      return OpenWebpEncoder(path, settings);
+      return Codecs(path).open_webp_encoder(path, settings);
     case OutputFormat::kPngSequence:
       return OpenPngSequenceEncoder(path, settings);
   }

@@ -12,11 +12,16 @@
 namespace urdfsnap::cli_test {
 
 Result RunUrdfsnap(const std::string& arguments, const std::string& environment) {
+  return RunProgram(URDFSNAP_BINARY, arguments, environment);
+}
+
+Result RunProgram(const std::string& program, const std::string& arguments,
+                  const std::string& environment) {
   // a job engine's shard variables around the test run (a GitLab parallel: job, a Slurm array)
-  // must not shard the suites the tests check
+  // must not shard the suites the tests check; modules are found as a user's urdfsnap finds them
   const std::string command =
       "env -u CI_NODE_INDEX -u CI_NODE_TOTAL -u SLURM_ARRAY_TASK_ID -u JOB_COMPLETION_INDEX "
-      "-u URDFSNAP_SHARD_COUNT " + environment + " " + std::string(URDFSNAP_BINARY) + " " +
+      "-u URDFSNAP_SHARD_COUNT -u URDFSNAP_MODULE_DIR " + environment + " " + program + " " +
       arguments + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   std::string output;

@@ -23,6 +23,9 @@ struct Result {
 // Runs "urdfsnap ARGUMENTS" through the shell with `environment` ("VAR=value" words) added to the
 // test's environment less the job engines' shard variables (CI_NODE_INDEX, SLURM_ARRAY_TASK_ID, ...).
 Result RunUrdfsnap(const std::string& arguments, const std::string& environment = "");
+// The same for another copy of the binary at `program`.
+Result RunProgram(const std::string& program, const std::string& arguments,
+                  const std::string& environment = "");
 
 // The bytes of a file ("" when it cannot be read).
 std::string ReadBytes(const std::string& path);

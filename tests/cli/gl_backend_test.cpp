@@ -1,8 +1,9 @@
-// The GL backends from the command line: --version names those compiled in and the one used here,
-// URDFSNAP_GL_BACKEND and URDFSNAP_EGL_DEVICE errors are one located line (status 2, nothing
-// written), commands that do not render never load a GL library (the reason both backends are
-// opened with dlopen), and --gl-backend and --verbose on every command that renders: the option
-// draws what the variable does, beats it, and says which backend was taken and why.
+// The GL backends from the command line: --version --verbose names those compiled in and the one
+// used here (--version alone makes no context), URDFSNAP_GL_BACKEND and URDFSNAP_EGL_DEVICE errors
+// are one located line (status 2, nothing written), commands that do not render never load a GL
+// library (the reason both backends are opened with dlopen), and --gl-backend and --verbose on
+// every command that renders: the option draws what the variable does, beats it, and says which
+// backend was taken and why.
 #include <filesystem>
 #include <map>
 #include <string>
@@ -26,9 +27,15 @@ bool EglCompiledIn() { return Contains(gl::CompiledInBackendNames(), "egl"); }
 
 using GlBackendTest = CliTest;
 
-TEST_F(GlBackendTest, VersionNamesTheBackendsCompiledInAndTheOneUsedHere) {
-  URDFSNAP_REQUIRE_GL();
+TEST_F(GlBackendTest, VersionAloneIsTheVersionString) {
   const Result r = RunUrdfsnap("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.output, "urdfsnap 0.1.0\n");
+}
+
+TEST_F(GlBackendTest, VerboseVersionNamesTheBackendsCompiledInAndTheOneUsedHere) {
+  URDFSNAP_REQUIRE_GL();
+  const Result r = RunUrdfsnap("--version --verbose");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(r.output.rfind("urdfsnap 0.1.0\nGL backends compiled in: " + gl::CompiledInBackendNames() +
                                " (auto takes the first that makes a context)\nGL backend here: ", 0),
@@ -37,7 +44,7 @@ TEST_F(GlBackendTest, VersionNamesTheBackendsCompiledInAndTheOneUsedHere) {
   EXPECT_TRUE(Contains(r.output, ", OpenGL ")) << r.output;
   for (const std::string backend : {"osmesa", "egl"}) {
     if (!Contains(gl::CompiledInBackendNames(), backend)) continue;
-    const Result chosen = RunUrdfsnap("--version", "URDFSNAP_GL_BACKEND=" + backend);
+    const Result chosen = RunUrdfsnap("--verbose --version", "URDFSNAP_GL_BACKEND=" + backend);
     EXPECT_TRUE(Contains(chosen.output, "GL backend here: " + backend + " (URDFSNAP_GL_BACKEND=" +
                                             backend + "): " + (backend == "egl" ? "EGL (" : "OSMesa, ")))
         << chosen.output;
@@ -55,7 +62,7 @@ TEST_F(GlBackendTest, BadBackendVariableIsOneErrorLineAndWritesNothing) {
 TEST_F(GlBackendTest, EglDeviceSoftwareIsMesasLlvmpipe) {
   if (!EglCompiledIn()) GTEST_SKIP() << "EGL is not compiled in";
   URDFSNAP_REQUIRE_GL_BACKEND(gl::Backend::kEgl);
-  const Result r = RunUrdfsnap("--version", "URDFSNAP_GL_BACKEND=egl URDFSNAP_EGL_DEVICE=software");
+  const Result r = RunUrdfsnap("--version --verbose", "URDFSNAP_GL_BACKEND=egl URDFSNAP_EGL_DEVICE=software");
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_TRUE(Contains(r.output, ": software), llvmpipe")) << r.output;
 }

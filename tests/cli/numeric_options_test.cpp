@@ -67,6 +67,7 @@ const std::vector<CommandOption>& Options() {
     std::vector<CommandOption> o = {
         {"", "--help", Kind::kFlag},
         {"", "--version", Kind::kFlag},
+        {"", "--verbose", Kind::kFlag},
         {"", "--strict", Kind::kFlag},
         {"render", "--output", Kind::kText},
         {"render", "--depth", Kind::kText},
