@@ -39,13 +39,10 @@ void Run(RenderCommandOptions& o) {
   if (!o.labels.empty()) render::CheckLabelsPath(o.labels, "--labels");
   Warnings warnings;
   request::RenderSession session(backend);
-  image::Frame frame;
-  std::shared_ptr<const model::Robot> robot;
+  request::Rendered rendered;
   try {
-    frame = session.Render(
-        o.render.request, [](std::string_view name) { return "--" + std::string(name); }, warnings,
-        {true, !o.depth.empty(), !o.labels.empty()});
-    robot = session.LoadRobot(o.render.request.model, warnings);
+    rendered = session.Render(o.render.request, request::CommandLineLabel, warnings,
+                              {true, !o.depth.empty(), !o.labels.empty()});
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -53,9 +50,9 @@ void Run(RenderCommandOptions& o) {
   PrintWarnings(warnings);
   const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
   if (o.output.empty()) std::filesystem::create_directories("output");
-  image::WritePng(frame.colour, output);
-  if (!o.depth.empty()) render::WriteDepthFile(frame.depth, o.depth);
-  if (!o.labels.empty()) render::WriteLabelFiles(frame.labels, *robot, o.labels);
+  image::WritePng(rendered.frame.colour, output);
+  if (!o.depth.empty()) render::WriteDepthFile(rendered.frame.depth, o.depth);
+  if (!o.labels.empty()) render::WriteLabelFiles(rendered.frame.labels, *rendered.robot, o.labels);
 }
 
 }  // namespace
