@@ -24,11 +24,11 @@
 #include "common/error.h"
 #include "common/number_text.h"
 #include "gl/gl_context.h"
+#include "image/depth_label_files.h"
 #include "gl/rasteriser_threads.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
 #include "motion/trajectory_file.h"
-#include "render/frame_files.h"
 #include "request/render_session.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
@@ -175,7 +175,7 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
   if (!o.labels.empty()) {
     labels.emplace(o.labels, range.first);
     label_names.emplace(animation::LabelNamesPath(o.labels));
-    label_names->Write(render::LabelNamesJson(*a.robot.robot));
+    label_names->Write(image::LabelNamesJson(a.robot.robot->LinkNames()));
   }
   PrintWarnings(warnings);   // --strict ends here, before any frame
 

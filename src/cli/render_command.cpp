@@ -7,8 +7,8 @@
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
+#include "image/depth_label_files.h"
 #include "image/png_writer.h"
-#include "render/frame_files.h"
 #include "gl/gl_context.h"
 #include "request/render_session.h"
 
@@ -35,8 +35,8 @@ void Run(RenderCommandOptions& o) {
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
   o.render.request.model = o.model.ToRequest();
   o.render.ParseJointWords();
-  if (!o.depth.empty()) render::CheckDepthPath(o.depth, "--depth");
-  if (!o.labels.empty()) render::CheckLabelsPath(o.labels, "--labels");
+  if (!o.depth.empty()) image::CheckDepthPath(o.depth, "--depth");
+  if (!o.labels.empty()) image::CheckLabelsPath(o.labels, "--labels");
   Warnings warnings;
   request::RenderSession session(backend);
   request::Rendered rendered;
@@ -51,8 +51,8 @@ void Run(RenderCommandOptions& o) {
   const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
   if (o.output.empty()) std::filesystem::create_directories("output");
   image::WritePng(rendered.frame.colour, output);
-  if (!o.depth.empty()) render::WriteDepthFile(rendered.frame.depth, o.depth);
-  if (!o.labels.empty()) render::WriteLabelFiles(rendered.frame.labels, *rendered.robot, o.labels);
+  if (!o.depth.empty()) image::WriteDepthFile(rendered.frame.depth, o.depth);
+  if (!o.labels.empty()) image::WriteLabelFiles(rendered.frame.labels, rendered.robot->LinkNames(), o.labels);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 
 #include "common/error.h"
 #include "image/png_reader.h"
-#include "render/frame_files.h"
+#include "image/depth_label_files.h"
 
 namespace urdfsnap::snapshot {
 
@@ -124,7 +124,7 @@ void CompareGray16Goldens(const SnapshotCase& c, image::Frame& frame, CaseResult
                           const model::Robot& robot) {
   CaseRecord& record = result.record;
   if (c.depth.wanted) {
-    result.depth.actual = render::DepthMillimetres(frame.depth);
+    result.depth.actual = image::DepthMillimetres(frame.depth);
     record.depth = CompareGray16Golden(c.depth, image::Gray16Kind::kDepth, result.depth, robot);
   }
   if (c.labels.wanted) {
