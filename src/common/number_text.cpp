@@ -39,4 +39,9 @@ std::string FormatNumber(double value) {
   return error == std::errc() ? std::string(buffer, end) : std::string("?");
 }
 
+bool ParseInteger(std::string_view text, int& out) {
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), out);
+  return error == std::errc() && end == text.data() + text.size() && !text.empty();
+}
+
 }  // namespace urdfsnap

@@ -3,7 +3,7 @@
 
 #include <numbers>
 
-#include "render/rviz_config.h"
+#include "request/rviz_config.h"
 #include "request/value_parsing.h"
 
 namespace urdfsnap::request {
@@ -48,7 +48,7 @@ render::Fit FitOf(const RenderRequest& r) {
 render::RenderSettings ReadBaseSettings(const RenderRequest& r, Warnings& warnings) {
   render::RenderSettings settings;
   if (!r.rviz.empty()) {
-    const render::RvizConfig config = render::ReadRvizConfig(r.rviz, {settings.scene, settings.view}, warnings);
+    const RvizConfig config = ReadRvizConfig(r.rviz, {settings.scene, settings.view}, warnings);
     settings.scene = config.scene;
     settings.view = config.view;
   }
