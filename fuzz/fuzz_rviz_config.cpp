@@ -5,14 +5,14 @@
 #include <string>
 
 #include "common/error.h"
-#include "render/rviz_config.h"
+#include "request/rviz_config.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace urdfsnap;
   const std::string text(reinterpret_cast<const char*>(data), size);
   Warnings warnings;
   try {
-    render::ParseRvizConfig(text, "config.rviz", render::RvizConfig{}, warnings);
+    request::ParseRvizConfig(text, "config.rviz", request::RvizConfig{}, warnings);
   } catch (const Error&) {
   }
   return 0;

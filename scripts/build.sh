@@ -6,6 +6,5 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/deps.sh"
 # through ccache: a rebuild, and CI's EGL-only build after this one, compile only what changed
 export CCACHE_BASEDIR=$root
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@" >/dev/null
+(cd "$root" && cmake --preset release "$@" >/dev/null)   # CMakePresets.json
 cmake --build "$root/build" -j "$(nproc)"

@@ -18,8 +18,7 @@ build=${URDFSNAP_FUZZ_BUILD:-$root/build-fuzz}
 
 "$root/scripts/deps.sh" --sanitizers
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
-    -DCMAKE_CXX_COMPILER=clang++ -DURDFSNAP_BUILD_FUZZERS=ON -DURDFSNAP_BUILD_BENCH=OFF >/dev/null
+  (cd "$root" && cmake --preset fuzz -B "$build" >/dev/null)   # CMakePresets.json
 fi
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]/#/fuzz_}" >/dev/null
 

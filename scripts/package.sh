@@ -29,8 +29,7 @@ trap 'rm -rf "$scratch"' EXIT
 if [ -z "$build" ]; then
   build="$root/build-package"
   echo "package.sh: building $build (Release)" >&2
-  { cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DURDFSNAP_BUILD_TESTS=OFF \
-      -DURDFSNAP_BUILD_BENCH=OFF -DURDFSNAP_MAN_PAGES=ON &&
+  { (cd "$root" && cmake --preset package) &&
     cmake --build "$build" -j "$(nproc)"; } >"$scratch/build.log" 2>&1 ||
     { cat "$scratch/build.log" >&2; exit 1; }
 fi

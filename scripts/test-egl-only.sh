@@ -9,7 +9,6 @@ build=$root/build-egl
 "$root/scripts/deps.sh"
 # through ccache, as scripts/build.sh: only the GL library and what includes its options differ
 export CCACHE_BASEDIR=$root
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DURDFSNAP_WITH_OSMESA=OFF \
-  -DURDFSNAP_BUILD_BENCH=OFF -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
+(cd "$root" && cmake --preset egl-only >/dev/null)   # CMakePresets.json
 cmake --build "$build" -j "$(nproc)" >/dev/null
 (cd "$build" && ctest --output-on-failure -j "$(nproc)" "$@")

@@ -9,9 +9,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build-asan
 "$root/scripts/deps.sh" --sanitizers
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_FLAGS_RELEASE="-O1 -g1" \
-    -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-    -DURDFSNAP_BUILD_FUZZERS=ON -DURDFSNAP_BUILD_BENCH=OFF >/dev/null
+  (cd "$root" && cmake --preset sanitizers >/dev/null)   # CMakePresets.json
 fi
 cmake --build "$build" -j "$(nproc)" >/dev/null
 

@@ -15,7 +15,7 @@
 #include "gl/renderer.h"
 #include "image/png_writer.h"
 #include "model/joint_values.h"
-#include "render/frame_files.h"
+#include "image/depth_label_files.h"
 #include "render/robot_renderer.h"
 #include "request/model_request.h"
 
@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
       std::snprintf(name, sizeof name, "/pose_%03d.png", k);
       us::image::WritePng(frame.colour, out + name);
       if (k == 0) {
-        us::render::WriteDepthFile(frame.depth, out + "/pose_000_depth.npy");
-        us::render::WriteLabelFiles(frame.labels, *robot, out + "/pose_000_labels.png");
+        us::image::WriteDepthFile(frame.depth, out + "/pose_000_depth.npy");
+        us::image::WriteLabelFiles(frame.labels, robot->LinkNames(), out + "/pose_000_labels.png");
         WriteRenderArguments(*robot, pose(0), view, settings.size, out + "/pose_000.args");
       }
     }

@@ -21,8 +21,7 @@ int main(int argc, char** argv) {
     urdfsnap::Warnings warnings;
     urdfsnap::request::RenderSession session;
     const urdfsnap::image::Image image =
-        session.Render(request, [](std::string_view option) { return "--" + std::string(option); }, warnings)
-            .colour;
+        session.Render(request, urdfsnap::request::CommandLineLabel, warnings).frame.colour;
     for (const std::string& message : warnings.messages()) std::fprintf(stderr, "warning: %s\n", message.c_str());
     urdfsnap::image::WritePng(image, argv[2]);
   } catch (const urdfsnap::Error& e) {

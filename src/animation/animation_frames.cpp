@@ -1,7 +1,7 @@
 // AnimationFrames: the camera fitted over every frame; poses and views per frame.
 #include "animation/animation_frames.h"
 
-#include <algorithm>
+#include "render/turntable_fit.h"
 
 namespace urdfsnap::animation {
 
@@ -12,19 +12,12 @@ AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motio
   // motion::kMaxFrames keeps the count within FitView's int
   const int count = static_cast<int>(plan_.frame_count);
   const auto pose = [&](int k) { return Positions(k, warnings); };
-  view_ = robot.FitView(camera.fit, camera.view, size_, count, pose);
-  if (!turntable_ || camera.fit == render::Fit::kNone) return;
-
-  // one focal point for every side (the centre of all frames' bounds, or the given one); the
-  // distance that frames each frame from its own yaw, the largest of them kept
-  double distance = 0;
-  for (int k = 0; k < count; ++k) {
-    const std::vector<double> positions = Positions(k, warnings);
-    scene::OrbitView side = View(k);
-    side = robot.FitView(render::Fit::kKeepFocal, side, size_, 1, [&](int) { return positions; });
-    distance = std::max(distance, side.distance);
+  if (!turntable_) {
+    view_ = robot.FitView(camera.fit, camera.view, size_, count, pose);
+    return;
   }
-  if (distance > 0) view_.distance = distance;
+  view_ = render::FitTurntable(robot, camera.fit, camera.view, size_, count, pose,
+                               [&](int k) { return plan_.TurntableYaw(k, camera.view.yaw); });
 }
 
 std::vector<double> AnimationFrames::Positions(std::int64_t k, Warnings& warnings) const {

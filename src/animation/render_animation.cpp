@@ -1,7 +1,10 @@
 // RenderAnimation: RunPipeline with image::Frame items (colour, and depth and labels when asked).
 #include "animation/render_animation.h"
 
-#include "animation/sequence_outputs.h"
+#include <filesystem>
+#include <string>
+
+#include "image/depth_label_files.h"
 #include "stream/pipeline.h"
 
 namespace urdfsnap::animation {
@@ -14,12 +17,15 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const
     const std::int64_t k = range.first + i;
     frame = robot.Render(gl, frames.Positions(k, warnings), frames.View(k), frames.size(), wanted);
   };
+  // the depth files' format, by the pattern's extension as `render --depth FILE` decides it
+  const std::string depth_extension =
+      outputs.depth ? std::filesystem::path(outputs.depth->pattern().pattern()).extension().string() : "";
   const auto write = [&](std::int64_t i, const image::Frame& frame) {
     outputs.colour->Write(frame.colour);
     if (outputs.depth) {
-      outputs.depth->Write(DepthFileBytes(frame.depth, outputs.depth->pattern().pattern()));
+      outputs.depth->Write(image::EncodeDepth(frame.depth, depth_extension));
     }
-    if (outputs.labels) outputs.labels->Write(LabelFileBytes(frame.labels));
+    if (outputs.labels) outputs.labels->Write(image::EncodeLabels(frame.labels));
     if (progress) progress->Update(i + 1);
   };
   stream::RunPipeline<image::Frame>(range.size(), depth, render, write);

@@ -1,13 +1,11 @@
-// Depth and label sequences: pattern checks, render's file formats as bytes, the names file.
+// Depth and label sequences: pattern checks and the names file.
 #include "animation/sequence_outputs.h"
 
 #include <filesystem>
 #include <regex>
 
 #include "common/error.h"
-#include "image/gray16_png.h"
-#include "image/npy_writer.h"
-#include "render/frame_files.h"
+#include "image/depth_label_files.h"
 #include "video/frame_pattern.h"
 
 namespace urdfsnap::animation {
@@ -26,29 +24,16 @@ void CheckPattern(const std::string& pattern, const std::string& option) {
   }
 }
 
-std::string Bytes(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
-
 }  // namespace
 
 void CheckDepthPattern(const std::string& pattern, const std::string& option) {
   CheckPattern(pattern, option);
-  render::CheckDepthPath(pattern, option);
+  image::CheckDepthPath(pattern, option);
 }
 
 void CheckLabelsPattern(const std::string& pattern, const std::string& option) {
   CheckPattern(pattern, option);
-  render::CheckLabelsPath(pattern, option);
-}
-
-std::string DepthFileBytes(const image::DepthImage& depth, const std::string& file) {
-  if (std::filesystem::path(file).extension() == ".npy") {
-    return image::EncodeNpyFloat32(depth.width, depth.height, depth.metres);
-  }
-  return Bytes(image::EncodeGray16Png(render::DepthMillimetres(depth)));
-}
-
-std::string LabelFileBytes(const image::LabelImage& labels) {
-  return Bytes(image::EncodeGray16Png({labels.width, labels.height, labels.labels}));
+  image::CheckLabelsPath(pattern, option);
 }
 
 std::string LabelNamesPath(const std::string& pattern) {

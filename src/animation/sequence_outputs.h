@@ -1,5 +1,5 @@
 // The depth and link-label sequences beside an animation (`--depth`, `--labels`): numbered files
-// (video::FrameFiles) in the formats `render --depth/--labels` writes (render/frame_files.h), one
+// (video::FrameFiles) in the formats `render --depth/--labels` writes (image/depth_label_files.h), one
 // per frame, from the same renders as the colour frames.
 #pragma once
 
@@ -14,12 +14,7 @@ namespace urdfsnap::animation {
 void CheckDepthPattern(const std::string& pattern, const std::string& option);
 void CheckLabelsPattern(const std::string& pattern, const std::string& option);
 
-// The bytes `render --depth FILE` writes for `depth`, FILE's extension choosing the format.
-std::string DepthFileBytes(const image::DepthImage& depth, const std::string& file);
-// The bytes `render --labels FILE.png` writes into FILE.png.
-std::string LabelFileBytes(const image::LabelImage& labels);
-
-// Where a label sequence's link names (render::LabelNamesJson) go, once for the whole sequence:
+// Where a label sequence's link names (image::LabelNamesJson) go, once for the whole sequence:
 // the pattern without its frame number and the separator before it, as .json
 // ("out/label_%04d.png" -> "out/label.json"); "labels.json" in the folder when nothing is left
 // ("labels/%05d.png" -> "labels/labels.json").

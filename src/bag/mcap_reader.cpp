@@ -214,9 +214,15 @@ struct McapReader::State {
     HandleRecord(kMessage, {content, static_cast<std::size_t>(length)}, where, callbacks);
   }
 
-  void ReadChunk(std::uint64_t at, std::uint64_t length, const Callbacks& callbacks) {
-    const std::uint64_t end = file.offset() + length;
-    const std::string chunk = "the chunk at byte " + std::to_string(at);
+  // A chunk's fixed fields, checked against the chunk's length and urdfsnap's limits.
+  struct ChunkHeader {
+    std::uint64_t uncompressed_size = 0;
+    std::uint32_t crc = 0;
+    std::string compression;
+    std::uint64_t records_length = 0;
+  };
+
+  ChunkHeader ReadChunkHeader(std::uint64_t length, std::uint64_t end, const std::string& chunk) {
     // message_start_time, message_end_time, uncompressed_size, uncompressed_crc, compression
     constexpr std::size_t kFixedBytes = 8 + 8 + 8 + 4 + 4;
     if (length < kFixedBytes + 8) Corrupt(chunk + " is too short for a chunk's fields");
@@ -224,55 +230,68 @@ struct McapReader::State {
     file.Read(fixed, sizeof fixed);
     ByteReader fields(fixed);
     fields.Skip(16, "message times");
-    const std::uint64_t uncompressed_size = fields.U64("uncompressed_size");
-    const std::uint32_t crc = fields.U32("uncompressed_crc");
+    ChunkHeader header;
+    header.uncompressed_size = fields.U64("uncompressed_size");
+    header.crc = fields.U32("uncompressed_crc");
     const std::uint32_t compression_length = fields.U32("compression");
     if (compression_length > 64 || compression_length + 8 > length - kFixedBytes) {
       Corrupt(chunk + ": a compression name of " + std::to_string(compression_length) + " bytes");
     }
-    std::string compression(compression_length, '\0');
-    file.Read(compression.data(), compression.size());
+    header.compression.assign(compression_length, '\0');
+    file.Read(header.compression.data(), header.compression.size());
     std::uint8_t records_length_bytes[8];
     file.Read(records_length_bytes, 8);
-    const std::uint64_t records_length = ByteReader(records_length_bytes).U64("records");
-    if (records_length > end - file.offset()) {
-      Corrupt(chunk + ": its records claim " + std::to_string(records_length) +
+    header.records_length = ByteReader(records_length_bytes).U64("records");
+    if (header.records_length > end - file.offset()) {
+      Corrupt(chunk + ": its records claim " + std::to_string(header.records_length) +
               " bytes, more than the chunk holds");
     }
-    if (!compression.empty() && !ChunkDecompressor::Reads(compression)) {
-      Corrupt(chunk + " is compressed with '" + compression +
+    if (!header.compression.empty() && !ChunkDecompressor::Reads(header.compression)) {
+      Corrupt(chunk + " is compressed with '" + header.compression +
               "'; urdfsnap reads zstd, lz4 and uncompressed chunks");
     }
-    for (const std::uint64_t size : {uncompressed_size, records_length}) {
+    for (const std::uint64_t size : {header.uncompressed_size, header.records_length}) {
       if (size > kMaxChunkBytes) {
         Corrupt(chunk + " declares " + std::to_string(size) +
                 " bytes, more than urdfsnap's limit of " + std::to_string(kMaxChunkBytes >> 20) +
                 " MiB for a chunk");
       }
     }
-    if (compression.empty() && records_length != uncompressed_size) {
-      Corrupt(chunk + ": an uncompressed chunk of " + std::to_string(records_length) +
-              " bytes declares " + std::to_string(uncompressed_size));
+    if (header.compression.empty() && header.records_length != header.uncompressed_size) {
+      Corrupt(chunk + ": an uncompressed chunk of " + std::to_string(header.records_length) +
+              " bytes declares " + std::to_string(header.uncompressed_size));
     }
+    return header;
+  }
 
-    std::uint8_t* stored = stored_buffer.Reserve(static_cast<std::size_t>(records_length));
-    file.Read(stored, static_cast<std::size_t>(records_length));
+  // The chunk's records as stored, decompressed and checked against their CRC32; the span lives
+  // in this reader's buffers until the next chunk.
+  std::span<const std::uint8_t> ReadChunkRecords(const ChunkHeader& header, std::uint64_t end,
+                                                 const std::string& chunk) {
+    const auto records_length = static_cast<std::size_t>(header.records_length);
+    std::uint8_t* stored = stored_buffer.Reserve(records_length);
+    file.Read(stored, records_length);
     file.Skip(end - file.offset());  // fields a later version of the format may add
-    std::span<const std::uint8_t> records(stored, static_cast<std::size_t>(records_length));
-    if (!compression.empty()) {
-      std::uint8_t* plain = chunk_buffer.Reserve(static_cast<std::size_t>(uncompressed_size));
+    std::span<const std::uint8_t> records(stored, records_length);
+    if (!header.compression.empty()) {
+      const auto size = static_cast<std::size_t>(header.uncompressed_size);
+      std::uint8_t* plain = chunk_buffer.Reserve(size);
       try {
-        decompressor.Decompress(compression, records,
-                                {plain, static_cast<std::size_t>(uncompressed_size)});
+        decompressor.Decompress(header.compression, records, {plain, size});
       } catch (const std::runtime_error& e) {
         Corrupt(chunk + ": " + e.what());
       }
-      records = {plain, static_cast<std::size_t>(uncompressed_size)};
+      records = {plain, size};
     }
-    if (crc != 0 && crc32_z(0, records.data(), records.size()) != crc) {
+    if (header.crc != 0 && crc32_z(0, records.data(), records.size()) != header.crc) {
       Corrupt(chunk + ": its records do not match their CRC32");
     }
+    return records;
+  }
 
+  // Each record inside a chunk's (decompressed) records, handed to HandleRecord.
+  void DispatchChunkRecords(std::span<const std::uint8_t> records, const std::string& chunk,
+                            const Callbacks& callbacks) {
     ByteReader reader(records);
     while (reader.remaining() > 0) {
       const std::size_t offset = reader.offset();
@@ -286,6 +305,14 @@ struct McapReader::State {
       }
       HandleRecord(opcode, reader.Bytes(record_length, "record"), where, callbacks);
     }
+  }
+
+  // A Chunk record: its header, then its records decompressed and checked, then each dispatched.
+  void ReadChunk(std::uint64_t at, std::uint64_t length, const Callbacks& callbacks) {
+    const std::uint64_t end = file.offset() + length;
+    const std::string chunk = "the chunk at byte " + std::to_string(at);
+    const ChunkHeader header = ReadChunkHeader(length, end, chunk);
+    DispatchChunkRecords(ReadChunkRecords(header, end, chunk), chunk, callbacks);
   }
 
   FileCursor file;

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "animation/animation_frames.h"
 #include "animation/frame_reproduction.h"
@@ -24,12 +25,11 @@
 #include "common/error.h"
 #include "common/number_text.h"
 #include "gl/gl_context.h"
+#include "image/depth_label_files.h"
 #include "gl/rasteriser_threads.h"
-#include "model/joint_values.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
 #include "motion/trajectory_file.h"
-#include "render/frame_files.h"
 #include "request/render_session.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
@@ -130,14 +130,87 @@ void PrintNewWarnings(const Warnings& printed, const Warnings& later) {
   PrintWarnings(fresh);
 }
 
+// An animation ready to render: the robot prepared once, its frames planned and its camera fitted.
+struct PreparedAnimation {
+  request::Prepared robot;   // settings.view before --fit (fitted over every frame by `frames`)
+  motion::Trajectory trajectory;
+  motion::FramePlan plan;
+  std::optional<motion::FramePoses> poses;
+  std::optional<animation::AnimationFrames> frames;
+};
+
+// Prepares the robot through `session` and plans and fits the frames (in place: `frames` keeps
+// references to the plan and poses).
+void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, PreparedAnimation& a,
+                      Warnings& warnings) {
+  const request::RenderRequest& r = o.render.request;
+  request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
+  // --fit frames every frame at once, below, not the first pose alone
+  const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
+  a.robot = session.Prepare(resolved, warnings);
+  if (!o.trajectory.empty()) a.trajectory = motion::ReadTrajectory(o.trajectory, {o.topic}, warnings);
+  a.plan = Plan(o, a.trajectory);
+  // joints the trajectory does not name: the joint file, then -j, as render takes them
+  a.poses.emplace(*a.robot.robot, a.trajectory, resolved.joints, resolved.clamp, warnings);
+  const render::RenderSettings& settings = a.robot.settings;
+  a.frames.emplace(*a.robot.renderer, a.plan, *a.poses,
+                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable}, warnings);
+}
+
+// --print-frame K: the render options that draw frame K, to stdout.
+void PrintFrame(const AnimateOptions& o, const PreparedAnimation& a, Warnings& warnings) {
+  const std::int64_t k = FrameNumber(o.print_frame, a.plan);
+  const std::vector<double> positions = a.frames->Positions(k, warnings);
+  PrintWarnings(warnings);
+  WriteToStdout(animation::JoinWords(
+      animation::RenderWords(*a.robot.robot, positions, a.frames->View(k), !o.render.request.no_clamp)) + "\n");
+}
+
+// Renders this shard's frames into the outputs, every output opened (and so checked writable)
+// before the first frame and appearing only when complete.
+void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, request::RenderSession& session,
+                    const PreparedAnimation& a, Warnings& warnings) {
+  const render::RenderSettings& settings = a.robot.settings;
+  const shard::FrameRange range = shard::FramesOfShard(a.plan.frame_count, choice.shard);
+  PrintShardLine(choice, range.size(), a.plan.frame_count, "frames", RangeText(range));
+
+  a.frames->Positions(0, warnings);  // a pose's warnings are every frame's: print them first
+  CreatedFolders folders;
+  for (const std::string* file : {&o.output, &o.depth, &o.labels}) {
+    if (!file->empty()) folders.MakeParents(*file);
+  }
+  const auto encoder = video::OpenFrameEncoder(
+      o.output, {settings.size.width, settings.size.height, a.plan.fps, range.first}, warnings);
+  std::optional<video::FrameFiles> depth, labels;
+  std::optional<AtomicFile> label_names;
+  if (!o.depth.empty()) depth.emplace(o.depth, range.first);
+  if (!o.labels.empty()) {
+    labels.emplace(o.labels, range.first);
+    label_names.emplace(animation::LabelNamesPath(o.labels));
+    label_names->Write(image::LabelNamesJson(a.robot.robot->LinkNames()));
+  }
+  PrintWarnings(warnings);   // --strict ends here, before any frame
+
+  stream::ProgressBar bar(range.size(), "frames",
+                          o.quiet ? stream::ProgressBar::Display::kNever
+                                  : stream::ProgressBar::Display::kIfTerminal);
+  Warnings later;
+  animation::RenderAnimation(*a.robot.renderer, session.GlRenderer(settings.samples), *a.frames, range,
+                             {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr},
+                             &bar, later);
+  if (label_names) label_names->Commit();
+  folders.Keep();
+  bar.Finish(WrittenText(o.output, range));
+  PrintNewWarnings(warnings, later);
+}
+
 void Run(AnimateOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
   // the encoder thread keeps a core busy while frames are drawn (before any thread starts)
   const std::string rasteriser = gl::LeaveCoresToOtherThreads(1);
   if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
-  request::RenderRequest& r = o.render.request;
-  r.model = o.model.ToRequest();
+  o.render.request.model = o.model.ToRequest();
   o.render.ParseJointWords();
   if (o.output.empty() && o.print_frame.empty()) {
     throw Error("animate: give the output with -o FILE: .mp4, .webm, .gif, .webp or a pattern such as "
@@ -149,73 +222,11 @@ void Run(AnimateOptions& o) {
 
   Warnings warnings;
   try {
-    // render's settings with the view as given (--fit is applied over every frame below)
-    const request::OptionLabel label = [](std::string_view name) { return "--" + std::string(name); };
-    request::RenderRequest unfitted = r;
-    unfitted.fit = false;
-    render::RenderSettings settings;
-    std::shared_ptr<const model::Robot> robot;
-    {
-      request::RenderSession session;
-      settings = session.ResolveSettings(unfitted, label, warnings);
-      robot = session.LoadRobot(r.model, warnings);
-    }
-    const render::Fit fit =
-        !r.fit ? render::Fit::kNone : r.focal.empty() ? render::Fit::kFit : render::Fit::kKeepFocal;
-    const render::RobotRenderer renderer(robot, settings.scene, warnings);
-
-    motion::Trajectory trajectory;
-    if (!o.trajectory.empty()) trajectory = motion::ReadTrajectory(o.trajectory, {o.topic}, warnings);
-    const motion::FramePlan plan = Plan(o, trajectory);
-    // joints the trajectory does not name: --joints, then -j, as render takes them
-    model::NamedValues defaults;
-    if (!r.joint_file.empty()) defaults = model::ReadJointFile(r.joint_file);
-    defaults.insert(defaults.end(), r.joints.begin(), r.joints.end());
-    const motion::FramePoses poses(*robot, trajectory, defaults, !r.no_clamp, warnings);
-    const animation::AnimationFrames frames(renderer, plan, poses,
-                                            {settings.view, settings.size, fit, o.turntable}, warnings);
-
-    if (!o.print_frame.empty()) {
-      const std::int64_t k = FrameNumber(o.print_frame, plan);
-      const std::vector<double> positions = frames.Positions(k, warnings);
-      PrintWarnings(warnings);
-      WriteToStdout(animation::JoinWords(animation::RenderWords(*robot, positions, frames.View(k), !r.no_clamp)) + "\n");
-      return;
-    }
-
-    const shard::FrameRange range = shard::FramesOfShard(plan.frame_count, choice.shard);
-    PrintShardLine(choice, range.size(), plan.frame_count, "frames", RangeText(range));
-
-    // every output opened (and so checked writable) before the first frame
-    frames.Positions(0, warnings);  // a pose's warnings are every frame's: print them first
-    CreatedFolders folders;
-    for (const std::string* file : {&o.output, &o.depth, &o.labels}) {
-      if (!file->empty()) folders.MakeParents(*file);
-    }
-    const auto encoder = video::OpenFrameEncoder(
-        o.output, {settings.size.width, settings.size.height, plan.fps, range.first}, warnings);
-    std::optional<video::FrameFiles> depth, labels;
-    std::optional<AtomicFile> label_names;
-    if (!o.depth.empty()) depth.emplace(o.depth, range.first);
-    if (!o.labels.empty()) {
-      labels.emplace(o.labels, range.first);
-      label_names.emplace(animation::LabelNamesPath(o.labels));
-      label_names->Write(render::LabelNamesJson(*robot));
-    }
-    PrintWarnings(warnings);   // --strict ends here, before any frame
-
-    gl::Renderer gl(settings.samples, backend);
-    stream::ProgressBar bar(range.size(), "frames",
-                            o.quiet ? stream::ProgressBar::Display::kNever
-                                    : stream::ProgressBar::Display::kIfTerminal);
-    Warnings later;
-    animation::RenderAnimation(renderer, gl, frames, range,
-                               {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr},
-                               &bar, later);
-    if (label_names) label_names->Commit();
-    folders.Keep();
-    bar.Finish(WrittenText(o.output, range));
-    PrintNewWarnings(warnings, later);
+    request::RenderSession session(backend);
+    PreparedAnimation animation;
+    PrepareAnimation(o, session, animation, warnings);
+    if (!o.print_frame.empty()) return PrintFrame(o, animation, warnings);
+    WriteAnimation(o, choice, session, animation, warnings);
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;

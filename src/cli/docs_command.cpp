@@ -2,6 +2,7 @@
 // into a folder that appears only when complete, or `--check`ed against a fresh one for CI.
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include "cli/command.h"
 #include "cli/gl_options.h"
@@ -15,9 +16,7 @@
 #include "docs/page_shard.h"
 #include "docs/page_writer.h"
 #include "gl/gl_context.h"
-#include "request/model_request.h"
-#include "request/render_request.h"
-#include "request/settings_parsing.h"
+#include "request/render_session.h"
 #include "stream/progress_bar.h"
 
 namespace urdfsnap::cli {
@@ -57,17 +56,22 @@ void Run(DocsOptions& o) {
       o.sharding.Choose(o.check.empty() ? "" : "docs --check compares the whole page with a fresh one");
   Warnings warnings;
   try {
-    const request::LoadedModel loaded = request::LoadModel(o.request.model, warnings);
+    // the page's views are always fitted, each over what it shows (the docs stage does that)
+    o.request.fit = true;
+    request::ResolvedRequest resolved = request::ResolveRequest(o.request, request::CommandLineLabel, warnings);
+    const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
+    request::RenderSession session(backend);
+    const request::Prepared prepared = session.Prepare(resolved, warnings);
     docs::PageLook look;
     look.backend = backend;
-    look.settings = request::ParseRenderSettings(
-        o.request, [](std::string_view name) { return "--" + std::string(name); }, warnings);
+    look.settings = prepared.settings;
+    look.settings.fit = fit;
     docs::PageOptions options;
     options.joint_globs = o.joint_globs;
     options.view_size = {look.settings.size.width, look.settings.size.height};
     options.joint_size = {std::max(1, options.view_size.width / 2), std::max(1, options.view_size.height / 2)};
     options.animation_extension = o.animations == "none" ? "" : "." + o.animations;
-    const docs::RobotPage page = docs::MakeRobotPage(*loaded.robot, o.request.model.path,
+    const docs::RobotPage page = docs::MakeRobotPage(*prepared.robot, o.request.model.path,
                                                      o.request.model.xacro_args, options, warnings);
     const std::vector<docs::PageImage> all = docs::PageImages(page, look);
     const std::vector<docs::PageImage> files = docs::ShardPageImages(all, choice.shard);
@@ -81,7 +85,7 @@ void Run(DocsOptions& o) {
     const docs::Progress progress = [&](std::int64_t done, std::int64_t) { bar.Update(done); };
     if (!o.check.empty()) {
       const docs::ScratchFolder fresh;
-      docs::WritePage(loaded.robot, page, look, files, fresh.path(), warnings, progress);
+      docs::WritePage(prepared.robot, page, look, files, fresh.path(), warnings, progress);
       bar.Finish("made the page afresh to compare with " + o.check);
       PrintWarnings(warnings);
       if (!std::filesystem::is_directory(o.check)) {
@@ -91,7 +95,7 @@ void Run(DocsOptions& o) {
       return;
     }
     docs::PageFolder folder(o.output);
-    docs::WritePage(loaded.robot, page, look, files, folder.path(), warnings, progress);
+    docs::WritePage(prepared.robot, page, look, files, folder.path(), warnings, progress);
     PrintWarnings(warnings);
     folder.Commit();
     bar.Finish("wrote " + (std::filesystem::path(o.output) / docs::kHtmlFile).string() + " and " +

@@ -7,8 +7,8 @@
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
+#include "image/depth_label_files.h"
 #include "image/png_writer.h"
-#include "render/frame_files.h"
 #include "gl/gl_context.h"
 #include "request/render_session.h"
 
@@ -35,17 +35,14 @@ void Run(RenderCommandOptions& o) {
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
   o.render.request.model = o.model.ToRequest();
   o.render.ParseJointWords();
-  if (!o.depth.empty()) render::CheckDepthPath(o.depth, "--depth");
-  if (!o.labels.empty()) render::CheckLabelsPath(o.labels, "--labels");
+  if (!o.depth.empty()) image::CheckDepthPath(o.depth, "--depth");
+  if (!o.labels.empty()) image::CheckLabelsPath(o.labels, "--labels");
   Warnings warnings;
   request::RenderSession session(backend);
-  image::Frame frame;
-  std::shared_ptr<const model::Robot> robot;
+  request::Rendered rendered;
   try {
-    frame = session.Render(
-        o.render.request, [](std::string_view name) { return "--" + std::string(name); }, warnings,
-        {true, !o.depth.empty(), !o.labels.empty()});
-    robot = session.LoadRobot(o.render.request.model, warnings);
+    rendered = session.Render(o.render.request, request::CommandLineLabel, warnings,
+                              {true, !o.depth.empty(), !o.labels.empty()});
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -53,9 +50,9 @@ void Run(RenderCommandOptions& o) {
   PrintWarnings(warnings);
   const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
   if (o.output.empty()) std::filesystem::create_directories("output");
-  image::WritePng(frame.colour, output);
-  if (!o.depth.empty()) render::WriteDepthFile(frame.depth, o.depth);
-  if (!o.labels.empty()) render::WriteLabelFiles(frame.labels, *robot, o.labels);
+  image::WritePng(rendered.frame.colour, output);
+  if (!o.depth.empty()) image::WriteDepthFile(rendered.frame.depth, o.depth);
+  if (!o.labels.empty()) image::WriteLabelFiles(rendered.frame.labels, rendered.robot->LinkNames(), o.labels);
 }
 
 }  // namespace

@@ -137,9 +137,8 @@ void Update(const SnapshotOptions& o) {
       PrintCaseLine(record.status == snapshot::CaseStatus::kError ? "ERROR" : "same", c->name,
                     record.message);
     } else {
-      const auto robot = session.LoadRobot(c->request.model, warnings);
       std::string files;
-      for (const std::string& file : snapshot::WriteGoldens(*c, r, o.force, *robot)) {
+      for (const std::string& file : snapshot::WriteGoldens(*c, r, o.force, *r.robot)) {
         files += (files.empty() ? "" : ", ") + file;
         ++written;
       }

@@ -7,10 +7,10 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <random>
 #include <system_error>
 
 #include "common/error.h"
+#include "common/random_suffix.h"
 
 namespace urdfsnap {
 namespace {
@@ -19,19 +19,9 @@ namespace {
   throw Error(path + ": cannot write: " + std::system_category().message(error_number));
 }
 
-// Six random letters and digits, as mkstemp would pick (mkstemp itself makes files mode 0600;
-// an output image should get the usual 0666 less the umask).
-std::string RandomSuffix() {
-  static constexpr char kAlphabet[] =
-      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
-  std::random_device device;
-  std::uniform_int_distribution<int> pick(0, sizeof kAlphabet - 2);
-  std::string suffix;
-  for (int i = 0; i < 6; ++i) suffix += kAlphabet[pick(device)];
-  return suffix;
-}
-
-// Opens a new temporary file beside `path`; returns its descriptor and fills `temp_path`.
+// Opens a new temporary file beside `path` (not with mkstemp, which makes files mode 0600: an
+// output image should get the usual 0666 less the umask); returns its descriptor and fills
+// `temp_path`.
 int CreateTemporary(const std::string& path, std::string& temp_path) {
   for (int attempt = 0; attempt < 100; ++attempt) {
     temp_path = path + ".tmp-" + RandomSuffix();

@@ -41,6 +41,11 @@ std::string FormatNumber(double value) {
   return error == std::errc() ? std::string(buffer, end) : std::string("?");
 }
 
+bool ParseInteger(std::string_view text, int& out) {
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), out);
+  return error == std::errc() && end == text.data() + text.size() && !text.empty();
+}
+
 std::string FormatBytes(unsigned long long bytes) {
   if (bytes < 1000) return std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes");
   const char* units[] = {"kB", "MB", "GB", "TB", "PB"};

@@ -1,5 +1,5 @@
-// Numbers to and from text the same way everywhere: locale-independent, shortest round-trip
-// output, strict input; and sizes rounded for people.
+// Numbers to and from text the same way everywhere (options, joint values, URDF, .rviz files):
+// locale-independent, shortest round-trip output, strict input; and sizes rounded for people.
 #pragma once
 
 #include <string>
@@ -13,6 +13,9 @@ bool ParseNumbers(std::string_view text, int count, double* out);
 
 // Parses one finite number that fills all of `text`.
 bool ParseNumber(std::string_view text, double& out);
+
+// Parses one decimal integer that fills all of `text` (no sign '+', no spaces).
+bool ParseInteger(std::string_view text, int& out);
 
 // The shortest text that reads back as `value` ("0.5", "-3.14", "1e-07").
 std::string FormatNumber(double value);

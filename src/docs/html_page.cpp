@@ -3,13 +3,12 @@
 #include "docs/html_page.h"
 
 #include "docs/embedded_page_files.h"
-#include "snapshot/markup_text.h"
+#include "common/markup_text.h"
 
 namespace urdfsnap::docs {
 
 namespace {
 
-using snapshot::EscapeMarkup;
 using Cells = std::vector<std::string>;
 
 std::string Img(const std::string& file, const std::string& alt, const PictureSize& size) {

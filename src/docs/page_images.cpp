@@ -12,6 +12,7 @@
 #include "image/png_writer.h"
 #include "model/joint_values.h"
 #include "render/robot_renderer.h"
+#include "render/turntable_fit.h"
 #include "scene/view_fitting.h"
 
 namespace urdfsnap::docs {
@@ -26,8 +27,7 @@ class PageRenderer {
                const std::vector<PageImage>& files, const std::filesystem::path& folder, Warnings& warnings,
                const Progress& progress)
       : robot_(robot), page_(page), look_(look), folder_(folder), warnings_(warnings), progress_(progress),
-        total_(ImageCount(files)), gl_(look.settings.samples, look.backend),
-        fit_(look.settings.fit == render::Fit::kNone ? render::Fit::kFit : look.settings.fit) {
+        total_(ImageCount(files)), gl_(look.settings.samples, look.backend) {
     for (const PageImage& file : files) wanted_.insert(file.file);
   }
 
@@ -94,9 +94,10 @@ class PageRenderer {
       std::erase_if(scene.items, [&](const scene::DrawItem& item) { return item.link < 0 || !moving[item.link]; });
       return scene;
     };
-    if (moving_parts(0).items.empty()) return robot.FitView(fit_, look_.settings.view, SizeOf(page_.joint_size), count, pose);
+    const render::Fit fit = look_.settings.fit;
+    if (moving_parts(0).items.empty()) return robot.FitView(fit, look_.settings.view, SizeOf(page_.joint_size), count, pose);
     const double aspect = static_cast<double>(page_.joint_size.width) / page_.joint_size.height;
-    return scene::FitView(count, moving_parts, look_.settings.view, aspect, fit_ == render::Fit::kKeepFocal);
+    return scene::FitView(count, moving_parts, look_.settings.view, aspect, fit == render::Fit::kKeepFocal);
   }
 
   // joint_state_publisher's positions with `joint` at `value` (its mimic joints following).
@@ -107,7 +108,7 @@ class PageRenderer {
   void Still(const render::RobotRenderer& robot, const std::string& file) {
     const auto pose = [&](int) { return page_.default_positions; };
     const render::ImageSize size = SizeOf(page_.view_size);
-    const scene::OrbitView view = robot.FitView(fit_, look_.settings.view, size, 1, pose);
+    const scene::OrbitView view = robot.FitView(look_.settings.fit, look_.settings.view, size, 1, pose);
     Write(robot.Render(gl_, page_.default_positions, view, size).colour, file);
   }
 
@@ -116,22 +117,12 @@ class PageRenderer {
     const int frames = look_.turntable_frames;
     const render::ImageSize size = SizeOf(page_.joint_size);
     const auto pose = [&](int) { return page_.default_positions; };
-    const auto yawed = [&](int k) {
-      scene::OrbitView view = look_.settings.view;
-      view.yaw += 2 * std::numbers::pi * k / frames;
-      return view;
-    };
-    // the focal point is the same from every side (the centre of the robot's box, or the given one)
-    scene::OrbitView fitted;
-    double distance = 0;
-    for (int k = 0; k < frames; ++k) {
-      fitted = robot.FitView(fit_, yawed(k), size, 1, pose);
-      distance = std::max(distance, fitted.distance);
-    }
+    const auto yaw = [&](int k) { return look_.settings.view.yaw + 2 * std::numbers::pi * k / frames; };
+    const scene::OrbitView fitted =
+        render::FitTurntable(robot, look_.settings.fit, look_.settings.view, size, frames, pose, yaw);
     Animate(robot, page_.turntable_file, frames, pose, [&](int k) {
-      scene::OrbitView view = yawed(k);
-      view.focal = fitted.focal;
-      view.distance = distance;
+      scene::OrbitView view = fitted;
+      view.yaw = yaw(k);
       return view;
     });
   }
@@ -168,7 +159,6 @@ class PageRenderer {
   const std::int64_t total_;
   std::int64_t done_ = 0;
   gl::Renderer gl_;
-  const render::Fit fit_;
   std::set<std::string> wanted_;
 };
 

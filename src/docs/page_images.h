@@ -22,8 +22,8 @@ namespace urdfsnap::docs {
 
 // How the pictures look beyond the page's content.
 struct PageLook {
-  // The user's displays, camera direction, multisampling; size is page.view_size. The view is
-  // always fitted (Fit::kKeepFocal when a focal point was given, else Fit::kFit).
+  // The user's displays, camera direction, multisampling and fit (`urdfsnap docs` always fits:
+  // Fit::kKeepFocal when a focal point was given, else Fit::kFit); size is page.view_size.
   render::RenderSettings settings;
   double faded_alpha = 0.25;   // link alpha of the links a joint does not move
   double tf_alpha = 0.3;       // multiplies the robot's alpha in the TF view, so frames inside show

@@ -2,9 +2,8 @@
 // list of top-level entries (in file order) and then interpreted as a {name: value} map or a JointState.
 #include <algorithm>
 
-#include <yaml-cpp/yaml.h>
-
 #include "common/error.h"
+#include "common/internal/yaml_section.h"
 #include "common/file_reading.h"
 #include "common/json_text.h"
 #include "model/joint_values.h"
@@ -44,19 +43,10 @@ Scalar ScalarFromText(const std::string& text, int line) {
   return scalar;
 }
 
-std::string Describe(const YAML::Node& node) {
-  return node.IsMap() ? "a map" : node.IsSequence() ? "a list" : "nothing";
-}
-
 std::vector<Entry> ReadYamlEntries(const std::string& text, const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw Error(SourceLocation{path, e.mark.line + 1}, "bad YAML: " + e.msg);
-  }
+  const YAML::Node root = LoadYaml(text, path);
   if (!root.IsMap()) {
-    throw Error(SourceLocation{path, root.Mark().line + 1},
+    throw Error(SourceLocation{path, LineOf(root)},
                 "expected a map of joint names to values, or name: and position: lists");
   }
   std::vector<Entry> entries;
@@ -64,8 +54,8 @@ std::vector<Entry> ReadYamlEntries(const std::string& text, const std::string& p
     // a key that is a list or a map (found by fuzzing: its conversion threw yaml-cpp's
     // exception, which left without the file)
     if (!pair.first.IsScalar()) {
-      throw Error(SourceLocation{path, pair.first.Mark().line + 1},
-                  "expected a joint name as the key, got " + Describe(pair.first));
+      throw Error(SourceLocation{path, LineOf(pair.first)},
+                  "expected a joint name as the key, got " + DescribeYaml(pair.first));
     }
     const YAML::Node& value = pair.second;
     Entry entry{pair.first.as<std::string>(), pair.first.Mark().line + 1, value.IsSequence(), {}};

@@ -46,6 +46,12 @@ Robot::Robot(std::string name, std::string source, std::vector<Link> links,
 
 int Robot::FindLink(std::string_view name) const { return IndexOfName(links_, name); }
 
+std::vector<std::string> Robot::LinkNames() const {
+  std::vector<std::string> names;
+  for (const Link& link : links_) names.push_back(link.name);
+  return names;
+}
+
 int Robot::FindJoint(std::string_view name) const { return IndexOfName(joints_, name); }
 
 std::vector<std::string> Robot::MovableJointNames() const {

@@ -99,6 +99,9 @@ class Robot {
   int FindLink(std::string_view name) const;
   int FindJoint(std::string_view name) const;
 
+  // Names of the links in links() order (the label image's order: label k is link k - 1).
+  std::vector<std::string> LinkNames() const;
+
   // Names of the joints a value moves (revolute, continuous, prismatic, not mimic), in
   // document order.
   std::vector<std::string> MovableJointNames() const;

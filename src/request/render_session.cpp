@@ -1,5 +1,5 @@
-// RenderSession: text parsed into typed settings, models and prepared robots cached (most recently
-// used first, bounded), joint values resolved, the view fitted, one frame drawn.
+// RenderSession: requests prepared (models and prepared robots cached, most recently used first,
+// bounded; joint values resolved; the view fitted) and frames drawn from them.
 #include "request/render_session.h"
 
 #include <algorithm>
@@ -59,52 +59,45 @@ const RenderSession::Robot& RenderSession::RobotFor(const ModelRequest& request,
   return PushFront(robots_, std::move(robot), kCachedRobots);
 }
 
-gl::Renderer& RenderSession::RendererFor(int samples) {
+gl::Renderer& RenderSession::GlRenderer(int samples) {
   std::unique_ptr<gl::Renderer>& renderer = renderers_[samples];
   if (!renderer) renderer = std::make_unique<gl::Renderer>(samples, backend_);
   return *renderer;
 }
 
-std::shared_ptr<const model::Robot> RenderSession::LoadRobot(const ModelRequest& request, Warnings& warnings) {
-  const Model& model = LoadedModelFor(request);
-  AddAll(model.warnings, warnings);
-  return model.loaded.robot;
-}
-
-RenderSession::Prepared RenderSession::Prepare(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
-  render::RenderSettings settings = ParseRenderSettings(r, label, warnings);
+Prepared RenderSession::Prepare(const ResolvedRequest& r, Warnings& warnings) {
   const Model& model = LoadedModelFor(r.model);
   const model::Robot& robot = *model.loaded.robot;
   AddAll(model.warnings, warnings);
+  render::RenderSettings settings = r.settings;
   // .rviz files often name a frame outside the robot (map, odom); RViz would show nothing useful
-  if (r.fixed_frame.empty() && !settings.scene.fixed_frame.empty() &&
+  if (!r.fixed_frame_given && !settings.scene.fixed_frame.empty() &&
       robot.FindLink(settings.scene.fixed_frame) < 0) {
     warnings.Add(r.rviz + ": Fixed Frame '" + settings.scene.fixed_frame +
                  "' is not a link of the robot; using the root link '" + robot.links()[0].name + "'");
     settings.scene.fixed_frame.clear();
   }
-
-  model::NamedValues given;
-  if (!r.joint_file.empty()) given = model::ReadJointFile(r.joint_file);
-  given.insert(given.end(), r.joints.begin(), r.joints.end());
-  std::vector<double> positions = model::ResolveJointPositions(robot, given, !r.no_clamp, warnings);
+  std::vector<double> positions = model::ResolveJointPositions(robot, r.joints, r.clamp, warnings);
   const Robot& prepared = RobotFor(r.model, model, settings.scene);
   AddAll(prepared.warnings, warnings);
   settings.view = prepared.renderer->FitView(settings.fit, settings.view, settings.size, 1,
                                              [&](int) { return positions; });
   settings.fit = render::Fit::kNone;
-  return {std::move(settings), std::move(positions), prepared.renderer.get()};
+  return {model.loaded.robot, std::move(settings), std::move(positions), prepared.renderer.get()};
 }
 
-render::RenderSettings RenderSession::ResolveSettings(const RenderRequest& request, const OptionLabel& label,
-                                                      Warnings& warnings) {
-  return Prepare(request, label, warnings).settings;
+Prepared RenderSession::Prepare(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
+  return Prepare(ResolveRequest(r, label, warnings), warnings);
 }
 
-image::Frame RenderSession::Render(const RenderRequest& r, const OptionLabel& label, Warnings& warnings,
-                                   const image::FrameOutputs& outputs) {
+image::Frame RenderSession::Draw(const Prepared& p, const image::FrameOutputs& outputs) {
+  return p.renderer->Render(GlRenderer(p.settings.samples), p.positions, p.settings.view, p.settings.size, outputs);
+}
+
+Rendered RenderSession::Render(const RenderRequest& r, const OptionLabel& label, Warnings& warnings,
+                               const image::FrameOutputs& outputs) {
   const Prepared p = Prepare(r, label, warnings);
-  return p.renderer->Render(RendererFor(p.settings.samples), p.positions, p.settings.view, p.settings.size, outputs);
+  return {Draw(p, outputs), p.robot};
 }
 
 std::vector<std::string> RenderSession::Files(const ModelRequest& request) const {

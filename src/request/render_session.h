@@ -1,9 +1,18 @@
-// The text front of the render core: renders RenderRequests (one render in `urdfsnap render`'s
-// words) one after another in one process. Each request's text is parsed once into typed
-// settings; each model is loaded once and each (model, displays) pair prepared once as a
-// render::RobotRenderer; all frames are drawn by the same gl::Renderer per multisampling mode.
+// The one way into the render core, for every command, the live view and the C++ and Python
+// APIs: a request (text as `urdfsnap render` takes it, or already typed: ResolvedRequest) is
+// prepared once into {robot, settings, joint positions, a prepared render::RobotRenderer}; frames
+// are then drawn from it, changing only what changes per frame (positions, view) as values, never
+// by parsing text or reading files again. Each model is loaded once and each (model, displays)
+// pair prepared once; all frames are drawn by the same gl::Renderer per multisampling mode.
 // Caches are owned by the session and bounded (the most recently used models and prepared robots
 // are kept), so a long-running process that renders many robots does not grow.
+//
+//   request::RenderSession session;
+//   request::Prepared arm = session.Prepare(request, request::CommandLineLabel, warnings);
+//   image::Frame frame = session.Draw(arm);
+//   arm.positions[2] = 0.5;                // a joint, radians
+//   arm.settings.view.yaw += 0.1;          // the camera
+//   image::Frame next = session.Draw(arm);
 #pragma once
 
 #include <list>
@@ -18,9 +27,26 @@
 #include "render/robot_renderer.h"
 #include "request/model_request.h"
 #include "request/render_request.h"
+#include "request/resolved_request.h"
 #include "request/settings_parsing.h"
 
 namespace urdfsnap::request {
+
+// A request made ready to draw. The renderer belongs to the session that prepared it and stays
+// valid until that session forgets the model (ForgetModels) or drops it from its cache (after
+// kCachedRobots other (model, displays) pairs); the robot is shared and outlives both.
+struct Prepared {
+  std::shared_ptr<const model::Robot> robot;
+  render::RenderSettings settings;  // the view as drawn: --fit applied, settings.fit then kNone
+  std::vector<double> positions;    // one per robot->joints(): radians or metres, mimics resolved
+  const render::RobotRenderer* renderer = nullptr;
+};
+
+// A frame with the robot that drew it (to name the links of its label image).
+struct Rendered {
+  image::Frame frame;
+  std::shared_ptr<const model::Robot> robot;
+};
 
 class RenderSession {
  public:
@@ -30,21 +56,29 @@ class RenderSession {
   RenderSession(const RenderSession&) = delete;
   RenderSession& operator=(const RenderSession&) = delete;
 
-  // Renders `request`: RViz's defaults, then the .rviz file, then the options given; the images
-  // `outputs` asks for. Warnings (the model's, clamped joints, ...) go to `warnings`. Throws
-  // urdfsnap::Error for a bad option value (named through `label`), an unreadable model, joint or
-  // mesh file, an unknown joint, ...
-  image::Frame Render(const RenderRequest& request, const OptionLabel& label, Warnings& warnings,
-                      const image::FrameOutputs& outputs = {});
+  // Prepares `request`: the model loaded (cached), an .rviz fixed frame outside the robot replaced
+  // by the root link (with a warning), the joint values resolved (clamped unless asked not to),
+  // the robot prepared for the displays (cached), and settings.fit applied to the view for these
+  // positions. Warnings (the model's, clamped joints, ...) go to `warnings`. Throws
+  // urdfsnap::Error for an unreadable model or mesh file, an unknown joint, ...
+  Prepared Prepare(const ResolvedRequest& request, Warnings& warnings);
 
-  // The settings Render uses for `request`, resolved: the view as the frame shows it (--fit applied,
-  // `fit` then kNone), an .rviz fixed frame outside the robot replaced by the root link. Loads and
-  // prepares the robot as Render does (cached). Throws urdfsnap::Error as Render does.
-  render::RenderSettings ResolveSettings(const RenderRequest& request, const OptionLabel& label, Warnings& warnings);
+  // ResolveRequest, then Prepare: RViz's defaults, then the .rviz file, then the options given.
+  // Throws urdfsnap::Error also for a bad option value (named through `label`) and an unreadable
+  // .rviz or joint file.
+  Prepared Prepare(const RenderRequest& request, const OptionLabel& label, Warnings& warnings);
 
-  // The robot `model` names, loaded once and cached as for Render (its warnings go to `warnings`
-  // each time). Throws urdfsnap::Error as Render does for an unreadable model.
-  std::shared_ptr<const model::Robot> LoadRobot(const ModelRequest& model, Warnings& warnings);
+  // Draws `prepared` (its positions, view, size, multisampling) into the images `outputs` asks
+  // for. No file is read.
+  image::Frame Draw(const Prepared& prepared, const image::FrameOutputs& outputs = {});
+
+  // Prepare, then Draw, returning the robot with the frame.
+  Rendered Render(const RenderRequest& request, const OptionLabel& label, Warnings& warnings,
+                  const image::FrameOutputs& outputs = {});
+
+  // The session's GL renderer for `samples` multisampling (made on first use, then kept), for
+  // callers that draw a prepared robot themselves (animations).
+  gl::Renderer& GlRenderer(int samples);
 
   // Every file the session has read for `model`: the model file, xacro includes, YAML files,
   // meshes and textures (those of the displays rendered so far), without repeats.
@@ -70,16 +104,8 @@ class RenderSession {
     std::unique_ptr<render::RobotRenderer> renderer;
     Warnings warnings;   // preparing it (missing meshes, plain paths), given again to every render
   };
-  // A request made ready to draw: resolved settings, joint positions, the prepared robot.
-  struct Prepared {
-    render::RenderSettings settings;
-    std::vector<double> positions;
-    const render::RobotRenderer* renderer;
-  };
-  Prepared Prepare(const RenderRequest& request, const OptionLabel& label, Warnings& warnings);
   const Model& LoadedModelFor(const ModelRequest& request);
   const Robot& RobotFor(const ModelRequest& request, const Model& model, const scene::SceneOptions& options);
-  gl::Renderer& RendererFor(int samples);
 
   std::list<Model> models_;   // most recently used first
   std::list<Robot> robots_;   // most recently used first

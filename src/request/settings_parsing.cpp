@@ -1,9 +1,9 @@
-// ParseRenderSettings: each option's text checked and applied over the .rviz file's settings.
+// The .rviz file read over RViz's defaults; each option's text checked and applied over them.
 #include "request/settings_parsing.h"
 
 #include <numbers>
 
-#include "render/rviz_config.h"
+#include "request/rviz_config.h"
 #include "request/value_parsing.h"
 #include "scene/tf_markers.h"
 
@@ -42,23 +42,43 @@ void ApplyScene(const RenderRequest& r, const OptionLabel& label, scene::SceneOp
 
 }  // namespace
 
-render::RenderSettings ParseRenderSettings(const RenderRequest& r, const OptionLabel& label,
-                                           Warnings& warnings) {
+std::string CommandLineLabel(std::string_view name) { return "--" + std::string(name); }
+
+render::Fit FitOf(const RenderRequest& r) {
+  if (!r.fit) return render::Fit::kNone;
+  return r.focal.empty() ? render::Fit::kFit : render::Fit::kKeepFocal;
+}
+
+render::RenderSettings ReadBaseSettings(const RenderRequest& r, Warnings& warnings) {
   render::RenderSettings settings;
-  settings.size = ParseImageSize(r.size, label("size"));
   if (!r.rviz.empty()) {
-    const render::RvizConfig config = render::ReadRvizConfig(r.rviz, {settings.scene, settings.view}, warnings);
+    const RvizConfig config = ReadRvizConfig(r.rviz, {settings.scene, settings.view}, warnings);
     settings.scene = config.scene;
     settings.view = config.view;
   }
+  return settings;
+}
+
+void ApplyOptions(const RenderRequest& r, const OptionLabel& label, render::RenderSettings& settings) {
+  settings.size = ParseImageSize(r.size, label("size"));
   ApplyView(r, label, settings.view);
   ApplyScene(r, label, settings.scene);
   settings.samples = r.no_aa ? 0 : 4;
-  settings.fit = !r.fit ? render::Fit::kNone : r.focal.empty() ? render::Fit::kFit : render::Fit::kKeepFocal;
+  settings.fit = FitOf(r);
+}
+
+void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
   if (r.fit && !r.distance.empty()) {
     warnings.Add(label("distance") + " " + r.distance + " is ignored: " + label("fit") +
                  " chooses the distance that frames the robot");
   }
+}
+
+render::RenderSettings ParseRenderSettings(const RenderRequest& r, const OptionLabel& label,
+                                           Warnings& warnings) {
+  render::RenderSettings settings = ReadBaseSettings(r, warnings);
+  ApplyOptions(r, label, settings);
+  WarnOfOptionsWithoutEffect(r, label, warnings);
   return settings;
 }
 

@@ -1,5 +1,7 @@
 // Text to typed settings, once per request: RViz's defaults, then the request's .rviz file, then
-// the options given (checked: ranges, colours, sizes), as render::RenderSettings.
+// the options given (checked: ranges, colours, sizes), as render::RenderSettings. The file is read
+// by ReadBaseSettings and the options applied by ApplyOptions, so that a caller who renders many
+// requests over one .rviz file (the live view) reads it once.
 #pragma once
 
 #include <functional>
@@ -16,9 +18,26 @@ namespace urdfsnap::request {
 // for a suite case.
 using OptionLabel = std::function<std::string(std::string_view name)>;
 
-// The settings `request` asks for. Reads the .rviz file if one is named (its warnings go to
-// `warnings`); the model file and packages become the scene's places to find meshes. Throws
-// urdfsnap::Error for a bad option value, named through `label`, or an unreadable .rviz file.
+// The command line's label: "--" + name. Every command and the live view name options by it.
+std::string CommandLineLabel(std::string_view name);
+
+// --fit as a render::Fit: kNone without --fit, kKeepFocal when --focal is given too (the focal
+// point stays, the distance frames the robot), else kFit.
+render::Fit FitOf(const RenderRequest& request);
+
+// RViz's defaults with the request's .rviz file applied (its warnings go to `warnings`); RViz's
+// defaults alone when no .rviz file is named. Throws urdfsnap::Error for an unreadable .rviz file.
+render::RenderSettings ReadBaseSettings(const RenderRequest& request, Warnings& warnings);
+
+// Applies the request's option texts over `settings` (RViz's defaults or a .rviz file's): size,
+// view, displays, multisampling, --fit; the model file and packages become the scene's places to
+// find meshes. Reads no file. Throws urdfsnap::Error for a bad option value, named through `label`.
+void ApplyOptions(const RenderRequest& request, const OptionLabel& label, render::RenderSettings& settings);
+
+// Warns of options the request gives that have no effect (--distance with --fit).
+void WarnOfOptionsWithoutEffect(const RenderRequest& request, const OptionLabel& label, Warnings& warnings);
+
+// ReadBaseSettings, then ApplyOptions and WarnOfOptionsWithoutEffect: the settings `request` asks for.
 render::RenderSettings ParseRenderSettings(const RenderRequest& request, const OptionLabel& label,
                                            Warnings& warnings);
 

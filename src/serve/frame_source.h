@@ -1,6 +1,7 @@
-// The live view's one seam to the render core (request::RenderSession): a RenderRequest rendered
-// to PNG bytes, the model loaded afresh with the list of files it read (to watch them), and the
-// view a request renders with. Everything the server knows about rendering goes through here.
+// The live view's one seam to the render core (request::RenderSession): the server's request
+// resolved once per (re)load — its model loaded, its .rviz and joint files read — and each query
+// applied over that, rendered to PNG bytes, reading no file. Everything the server knows about
+// rendering goes through here.
 #pragma once
 
 #include <memory>
@@ -9,9 +10,11 @@
 
 #include "common/warnings.h"
 #include "gl/backend.h"
+#include "model/joint_values.h"
 #include "model/robot.h"
 #include "render/render_settings.h"
 #include "request/render_request.h"
+#include "request/resolved_request.h"
 
 namespace urdfsnap::request {
 class RenderSession;
@@ -23,7 +26,14 @@ namespace urdfsnap::serve {
 struct WatchedModel {
   std::shared_ptr<const model::Robot> robot;
   std::vector<std::string> warnings;  // the model's and its first render's
-  std::vector<std::string> files;     // model file, xacro includes, YAML, meshes, textures
+  std::vector<std::string> files;     // model file, xacro includes, YAML, meshes, textures, .rviz, joint file
+};
+
+// Where the page starts: the settings the server's request renders with (the view fitted) and
+// the joint values it gives.
+struct StartingView {
+  render::RenderSettings settings;
+  model::NamedValues joints;
 };
 
 // Renders frames one at a time; not thread-safe (the server lets one thread render at a time).
@@ -35,21 +45,24 @@ class FrameSource {
   FrameSource(const FrameSource&) = delete;
   FrameSource& operator=(const FrameSource&) = delete;
 
-  // The PNG file `urdfsnap render` writes for `request`, byte for byte. Option errors name the
-  // option as render's command line does ("--yaw 'x': ..."). Throws urdfsnap::Error.
+  // Forgets every loaded model, reads `base`'s .rviz and joint files, loads its model from its
+  // files and renders `base` once (so every mesh and texture it shows is read and checked).
+  // Throws urdfsnap::Error as `urdfsnap render` would for the same request.
+  WatchedModel Reload(const request::RenderRequest& base);
+
+  // The PNG file `urdfsnap render` writes for `request` (the base given to the last Reload with a
+  // query's options applied: the same .rviz and joint files), byte for byte, reading no file.
+  // Option errors name the option as render's command line does ("--yaw 'x': ..."). Throws
+  // urdfsnap::Error.
   std::string RenderPng(const request::RenderRequest& request, Warnings& warnings);
 
-  // Forgets every loaded model, loads `request`'s model from its files and renders `request`
-  // once (so every mesh and texture it shows is read and checked). Throws urdfsnap::Error as
-  // `urdfsnap render` would for the same request.
-  WatchedModel Reload(const request::RenderRequest& request);
-
-  // The settings `request` renders with, its view as the render frames it (--fit applied).
-  // Throws urdfsnap::Error.
-  render::RenderSettings ResolvedSettings(const request::RenderRequest& request, Warnings& warnings);
+  // Where the page starts for the base of the last Reload. Throws urdfsnap::Error.
+  StartingView Start(Warnings& warnings);
 
  private:
   std::unique_ptr<request::RenderSession> session_;
+  request::RenderRequest base_;      // of the last Reload
+  request::RequestFiles base_files_;  // its .rviz and joint files, read by the last Reload
 };
 
 }  // namespace urdfsnap::serve

@@ -6,7 +6,6 @@
 #include <nlohmann/json.hpp>
 
 #include "common/number_text.h"
-#include "model/joint_values.h"
 
 namespace urdfsnap::serve {
 
@@ -43,7 +42,8 @@ nlohmann::json CaseBase(const request::RenderRequest& base) {
 
 }  // namespace
 
-std::string InitialViewJson(const request::RenderRequest& base, const render::RenderSettings& settings) {
+std::string InitialViewJson(const request::RenderRequest& base, const StartingView& start) {
+  const render::RenderSettings& settings = start.settings;
   const scene::OrbitView& view = settings.view;
   const scene::SceneOptions& scene = settings.scene;
   const Eigen::Vector3f rgb = (scene.background * 255).array().round();
@@ -61,11 +61,8 @@ std::string InitialViewJson(const request::RenderRequest& base, const render::Re
       {"tf", scene.tf.enabled},
       {"collision", scene.show_collision},
       {"no-visual", !scene.show_visual}};
-  model::NamedValues given;
-  if (!base.joint_file.empty()) given = model::ReadJointFile(base.joint_file);
-  given.insert(given.end(), base.joints.begin(), base.joints.end());
   nlohmann::json joints = nlohmann::json::object();
-  for (const auto& [name, value] : given) joints[name] = value;
+  for (const auto& [name, value] : start.joints) joints[name] = value;
   // the page's frame follows the window's size unless a size other than the default was asked for
   const bool size_given = base.size != request::RenderRequest{}.size;
   const nlohmann::json result = {{"options", options},     {"size_given", size_given}, {"fov", view.fov_y},

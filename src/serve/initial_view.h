@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "render/render_settings.h"
 #include "request/render_request.h"
+#include "serve/frame_source.h"
 
 namespace urdfsnap::serve {
 
@@ -15,8 +15,7 @@ namespace urdfsnap::serve {
 // tf, collision, no-visual as booleans}, "size_given": whether a size other than the default was
 // asked for (else the page's frame follows its window), "fov": radians, "joints": {NAME: value} (the -j and
 // --joints values given), "case": {"model", "args", "packages", "xacro-ns", "options"}} with
-// absolute paths in "case". `settings` are those `base` renders with, the view fitted.
-// Throws urdfsnap::Error for an unreadable joint file.
-std::string InitialViewJson(const request::RenderRequest& base, const render::RenderSettings& settings);
+// absolute paths in "case". `start` is where `base` starts (FrameSource::Start).
+std::string InitialViewJson(const request::RenderRequest& base, const StartingView& start);
 
 }  // namespace urdfsnap::serve

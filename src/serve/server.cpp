@@ -220,7 +220,7 @@ Server::Server(ServerOptions options, Warnings& warnings)
   for (const auto& warning : state->warnings) warnings.Add(warning);
   if (!state->robot) throw Error(state->error);
   s.renderer.Run([&](FrameSource& frames) {
-    s.initial_view = InitialViewJson(s.options.base, frames.ResolvedSettings(s.options.base, warnings));
+    s.initial_view = InitialViewJson(s.options.base, frames.Start(warnings));
   });
   s.Route();
 }

@@ -10,7 +10,7 @@
 
 #include "common/error.h"
 #include "image/png_reader.h"
-#include "render/frame_files.h"
+#include "image/depth_label_files.h"
 
 namespace urdfsnap::snapshot {
 
@@ -48,9 +48,6 @@ void Compare(const SnapshotCase& c, CaseResult& result) {
   result.diff = image::MakeDiffImage(result.expected, result.actual, delta);
 }
 
-// The case's robot (for link names), loaded only when a label image differs.
-using RobotLoader = std::function<std::shared_ptr<const model::Robot>()>;
-
 const char* KindName(image::Gray16Kind kind) { return kind == image::Gray16Kind::kDepth ? "depth" : "labels"; }
 
 // The viewable picture of `values`; depth coloured over [near, far].
@@ -86,7 +83,7 @@ std::string LinksWhereDiffer(const image::Gray16Image& a, const image::Gray16Ima
 
 // Compares the render's depth or labels with `golden`, leaving the report's pictures in `images`.
 Gray16Record CompareGray16Golden(const Gray16Golden& golden, image::Gray16Kind kind, Gray16Result& images,
-                                 const RobotLoader& robot) {
+                                 const model::Robot& robot) {
   Gray16Record record{golden.golden, CaseStatus::kFailed, "", golden.tolerance, std::nullopt, {}};
   const image::Gray16Image& actual = images.actual;
   const std::string what = KindName(kind);
@@ -108,8 +105,7 @@ Gray16Record CompareGray16Golden(const Gray16Golden& golden, image::Gray16Kind k
   record.figures = image::CompareGray16(expected, actual, kind, golden.tolerance.max_delta);
   record.message = image::DescribeGray16Diff(*record.figures, golden.tolerance, kind);
   if (kind == image::Gray16Kind::kLabels && record.figures->pixels_over > 0) {
-    const std::shared_ptr<const model::Robot> loaded = robot();
-    record.message += LinksWhereDiffer(expected, actual, *loaded);
+    record.message += LinksWhereDiffer(expected, actual, robot);
   }
   if (image::WithinTolerance(*record.figures, golden.tolerance)) {
     record.status = CaseStatus::kPassed;
@@ -125,10 +121,10 @@ Gray16Record CompareGray16Golden(const Gray16Golden& golden, image::Gray16Kind k
 
 // The depth and labels comparisons of a rendered case, then the case's status and message from all.
 void CompareGray16Goldens(const SnapshotCase& c, image::Frame& frame, CaseResult& result,
-                          const RobotLoader& robot) {
+                          const model::Robot& robot) {
   CaseRecord& record = result.record;
   if (c.depth.wanted) {
-    result.depth.actual = render::DepthMillimetres(frame.depth);
+    result.depth.actual = image::DepthMillimetres(frame.depth);
     record.depth = CompareGray16Golden(c.depth, image::Gray16Kind::kDepth, result.depth, robot);
   }
   if (c.labels.wanted) {
@@ -158,12 +154,13 @@ CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const 
   record.tolerance = c.tolerance;
   try {
     const image::FrameOutputs outputs{true, c.depth.wanted, c.labels.wanted};
-    image::Frame frame = session.Render(
+    request::Rendered rendered = session.Render(
         c.request, [&](std::string_view name) { return OptionLocation(suite, c, name); }, warnings, outputs);
-    result.actual = std::move(frame.colour);
+    result.robot = rendered.robot;
+    result.actual = std::move(rendered.frame.colour);
     Compare(c, result);
     result.colour_status = record.status;
-    CompareGray16Goldens(c, frame, result, [&] { return session.LoadRobot(c.request.model, warnings); });
+    CompareGray16Goldens(c, rendered.frame, result, *rendered.robot);
   } catch (const Error& e) {
     record.status = CaseStatus::kError;
     record.message = Located(suite, c, e.what());

@@ -27,6 +27,7 @@ struct CaseResult {
   image::Image actual;    // empty when rendering failed
   image::Image diff;      // set for kFailed cases of equal size
   Gray16Result depth, labels;  // for cases with those goldens
+  std::shared_ptr<const model::Robot> robot;  // the robot rendered; null when rendering failed
 };
 
 // Renders `c` and compares it with its goldens. Never throws for problems of the case itself:

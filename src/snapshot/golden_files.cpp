@@ -6,7 +6,7 @@
 #include "common/atomic_file.h"
 #include "image/gray16_png.h"
 #include "image/png_writer.h"
-#include "render/frame_files.h"
+#include "image/depth_label_files.h"
 
 namespace urdfsnap::snapshot {
 
@@ -39,7 +39,7 @@ std::vector<std::string> WriteGoldens(const SnapshotCase& c, const CaseResult& r
     CreateFolderOf(c.labels.golden);
     image::WriteGray16Png(result.labels.actual, c.labels.golden);
     const std::string names = std::filesystem::path(c.labels.golden).replace_extension(".json").string();
-    WriteFileAtomically(names, render::LabelNamesJson(robot));
+    WriteFileAtomically(names, image::LabelNamesJson(robot.LinkNames()));
     written.push_back(c.labels.golden);
   }
   return written;

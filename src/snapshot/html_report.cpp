@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "common/atomic_file.h"
-#include "snapshot/markup_text.h"
+#include "common/markup_text.h"
 #include "snapshot/reports.h"
 
 namespace urdfsnap::snapshot {

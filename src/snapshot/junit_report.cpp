@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "common/atomic_file.h"
-#include "snapshot/markup_text.h"
+#include "common/markup_text.h"
 #include "snapshot/reports.h"
 
 namespace urdfsnap::snapshot {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 
 #include "xacro/call_arguments.h"
 #include "xacro/evaluation_budget.h"
@@ -141,195 +142,251 @@ bool AllChars(const std::string& s, int (*f)(int)) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [f](char c) { return f(static_cast<unsigned char>(c)) != 0; });
 }
 
-// (`s` is shared with the str value: a bound method does not copy the text)
+// One call of a str method: the text (shared with the str value: a bound method does not copy
+// it), the method's name (for its messages), the arguments.
+struct StrCall {
+  const SharedString& s;
+  const std::string& name;
+  ValueList& a;
+  Kwargs& kw;
+};
+
+Value StrUpper(const StrCall& c) {
+  return Value::Str(MapChars(c.s, ::toupper));
+}
+
+Value StrLower(const StrCall& c) {
+  return Value::Str(MapChars(c.s, ::tolower));
+}
+
+Value StrCapitalize(const StrCall& c) {
+  std::string r = MapChars(c.s, ::tolower);
+  if (!r.empty()) r[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(r[0])));
+  return Value::Str(r);
+}
+
+Value StrTitle(const StrCall& c) {
+  std::string r = c.s;
+  bool start = true;
+  for (char& c : r) {
+    const bool alpha = std::isalpha(static_cast<unsigned char>(c));
+    c = static_cast<char>(start ? std::toupper(static_cast<unsigned char>(c)) : std::tolower(static_cast<unsigned char>(c)));
+    start = !alpha;
+  }
+  return Value::Str(r);
+}
+
+Value StrSwapCase(const StrCall& c) {
+  std::string r = c.s;
+  for (char& c : r) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    c = static_cast<char>(std::isupper(u) ? std::tolower(u) : std::toupper(u));
+  }
+  return Value::Str(r);
+}
+
+Value StrStrip(const StrCall& c) {
+  CheckArity(c.name, c.a, 0, 1);
+  return Value::Str(Strip(c.s, c.a, c.name != "rstrip", c.name != "lstrip"));
+}
+
+Value StrSplit(const StrCall& c) {
+  const Value* sep = c.a.empty() ? nullptr : &c.a[0];
+  long maxsplit = c.a.size() > 1 ? AsIndex(c.a[1], "maxsplit") : -1;
+  for (auto& [k, v] : c.kw) {
+    if (k == "sep") sep = &v;
+    else if (k == "maxsplit") maxsplit = AsIndex(v, "maxsplit");
+    else throw EvalError(c.name + "() got an unexpected keyword argument '" + k + "'");
+  }
+  return Value::List(Split(c.s, sep, maxsplit, c.name == "rsplit"));
+}
+
+Value StrSplitLines(const StrCall& c) {
+  ValueList out;
+  size_t k = 0;
+  while (k < c.s.size()) {
+    size_t e = c.s.str().find_first_of("\r\n", k);
+    if (e == std::string::npos) e = c.s.size();
+    out.push_back(Value::Str(c.s.substr(k, e - k)));
+    k = e + ((e + 1 < c.s.size() && c.s[e] == '\r' && c.s[e + 1] == '\n') ? 2 : 1);
+  }
+  return Value::List(out);
+}
+
+Value StrJoin(const StrCall& c) {
+  CheckArity("join", c.a, 1, 1);
+  const ValueList items = Iterate(c.a[0]);
+  // the size first, so that nothing too large is built
+  size_t size = items.empty() ? 0 : c.s.size() * (items.size() - 1);
+  for (size_t k = 0; k < items.size(); ++k) {
+    if (items[k].type != Value::Type::kStr) {
+      throw EvalError("sequence item " + std::to_string(k) + ": expected str instance, " + TypeName(items[k]) + " found");
+    }
+    size += items[k].s.size();
+    if (size > kMaxStringBytes) break;
+  }
+  CheckStringSize(size, "joined string");
+  std::string out;
+  out.reserve(size);
+  for (size_t k = 0; k < items.size(); ++k) {
+    if (k) out += c.s.str();
+    out += items[k].s.str();
+  }
+  return Value::Str(std::move(out));
+}
+
+Value StrReplace(const StrCall& c) {
+  CheckArity("replace", c.a, 2, 3);
+  const std::string& from = StrArg("replace", c.a, 0);
+  const std::string& to = StrArg("replace", c.a, 1);
+  const long limit = c.a.size() > 2 ? AsIndex(c.a[2], "count") : -1;
+  // the number of replacements first, so that nothing too large is built
+  size_t matches = 0;
+  if (from.empty()) {
+    matches = c.s.size() + 1;
+  } else {
+    for (size_t e = c.s.find(from); e != std::string::npos; e = c.s.find(from, e + from.size())) ++matches;
+  }
+  if (limit >= 0) matches = std::min(matches, static_cast<size_t>(limit));
+  // (no overflow: each size is at most kMaxStringBytes)
+  const size_t size = c.s.size() - matches * from.size() + matches * to.size();
+  CheckStringSize(size, "replaced string");
+  std::string out;
+  out.reserve(size);
+  size_t k = 0;
+  for (size_t n = 0; n < matches; ++n) {
+    if (from.empty()) {
+      out += to;
+      if (k < c.s.size()) out += c.s[k++];
+      continue;
+    }
+    const size_t e = c.s.find(from, k);
+    out.append(c.s.str(), k, e - k);
+    out += to;
+    k = e + from.size();
+  }
+  out.append(c.s.str(), k, std::string::npos);
+  return Value::Str(std::move(out));
+}
+
+Value StrStartsOrEndsWith(const StrCall& c) {
+  CheckArity(c.name, c.a, 1, 1);
+  ValueList options = c.a[0].type == Value::Type::kTuple ? *c.a[0].list : ValueList{c.a[0]};
+  for (const Value& o : options) {
+    if (o.type != Value::Type::kStr) throw EvalError(c.name + " first arg must be str or a tuple of str");
+    if (o.s.size() > c.s.size()) continue;
+    const std::string& text = c.s;
+    if (c.name == "startswith" ? text.compare(0, o.s.size(), o.s) == 0 : text.compare(c.s.size() - o.s.size(), o.s.size(), o.s) == 0) {
+      return Value::Bool(true);
+    }
+  }
+  return Value::Bool(false);
+}
+
+Value StrFindOrCount(const StrCall& c) {
+  CheckArity(c.name, c.a, 1, 1);
+  const std::string& sub = StrArg(c.name, c.a, 0);
+  if (c.name == "count") {
+    if (sub.empty()) return Value::Integer(static_cast<Int>(c.s.size() + 1));
+    Int n = 0;
+    for (size_t k = c.s.find(sub); k != std::string::npos; k = c.s.find(sub, k + sub.size())) ++n;
+    return Value::Integer(n);
+  }
+  const size_t k = c.name[0] == 'r' ? c.s.str().rfind(sub) : c.s.find(sub);
+  if (k == std::string::npos) {
+    if (c.name == "index" || c.name == "rindex") throw EvalError("substring not found");
+    return Value::Integer(-1);
+  }
+  return Value::Integer(static_cast<Int>(k));
+}
+
+Value StrPad(const StrCall& c) {
+  CheckArity(c.name, c.a, 1, 2);
+  const long width = AsIndex(c.a[0], "width");
+  if (width > static_cast<long>(c.s.size())) CheckStringSize(static_cast<size_t>(width), "padded string");
+  const char fill = c.name == "zfill" ? '0' : (c.a.size() > 1 ? StrArg(c.name, c.a, 1)[0] : ' ');
+  if (width <= static_cast<long>(c.s.size())) return Value::Str(c.s);
+  const size_t pad = static_cast<size_t>(width) - c.s.size();
+  if (c.name == "ljust") return Value::Str(c.s + std::string(pad, fill));
+  if (c.name == "rjust") return Value::Str(std::string(pad, fill) + c.s);
+  if (c.name == "center") {
+    const size_t left = pad / 2 + (pad & static_cast<size_t>(width) & 1);
+    return Value::Str(std::string(left, fill) + c.s + std::string(pad - left, fill));
+  }
+  const bool signed_ = !c.s.empty() && (c.s[0] == '-' || c.s[0] == '+');
+  return Value::Str(signed_ ? c.s.substr(0, 1) + std::string(pad, '0') + c.s.substr(1) : std::string(pad, '0') + c.s);
+}
+
+Value StrIsDigit(const StrCall& c) {
+  return Value::Bool(AllChars(c.s, ::isdigit));
+}
+
+Value StrIsAlpha(const StrCall& c) {
+  return Value::Bool(AllChars(c.s, ::isalpha));
+}
+
+Value StrIsAlnum(const StrCall& c) {
+  return Value::Bool(AllChars(c.s, ::isalnum));
+}
+
+Value StrIsSpace(const StrCall& c) {
+  return Value::Bool(AllChars(c.s, ::isspace));
+}
+
+Value StrIsUpper(const StrCall& c) {
+  return Value::Bool(std::any_of(c.s.begin(), c.s.end(), ::isupper) && !std::any_of(c.s.begin(), c.s.end(), ::islower));
+}
+
+Value StrIsLower(const StrCall& c) {
+  return Value::Bool(std::any_of(c.s.begin(), c.s.end(), ::islower) && !std::any_of(c.s.begin(), c.s.end(), ::isupper));
+}
+
+// Python's str methods by name: the body, and whether it takes keyword arguments.
+const std::map<std::string, std::pair<Value (*)(const StrCall&), bool>>& StrMethods() {
+  static const std::map<std::string, std::pair<Value (*)(const StrCall&), bool>> methods = {
+      {"upper", {StrUpper, false}},
+      {"lower", {StrLower, false}},
+      {"capitalize", {StrCapitalize, false}},
+      {"title", {StrTitle, false}},
+      {"swapcase", {StrSwapCase, false}},
+      {"strip", {StrStrip, false}},
+      {"lstrip", {StrStrip, false}},
+      {"rstrip", {StrStrip, false}},
+      {"split", {StrSplit, true}},
+      {"rsplit", {StrSplit, true}},
+      {"splitlines", {StrSplitLines, false}},
+      {"join", {StrJoin, false}},
+      {"replace", {StrReplace, false}},
+      {"startswith", {StrStartsOrEndsWith, false}},
+      {"endswith", {StrStartsOrEndsWith, false}},
+      {"find", {StrFindOrCount, false}},
+      {"rfind", {StrFindOrCount, false}},
+      {"index", {StrFindOrCount, false}},
+      {"rindex", {StrFindOrCount, false}},
+      {"count", {StrFindOrCount, false}},
+      {"zfill", {StrPad, false}},
+      {"ljust", {StrPad, false}},
+      {"rjust", {StrPad, false}},
+      {"center", {StrPad, false}},
+      {"isdigit", {StrIsDigit, false}},
+      {"isalpha", {StrIsAlpha, false}},
+      {"isalnum", {StrIsAlnum, false}},
+      {"isspace", {StrIsSpace, false}},
+      {"isupper", {StrIsUpper, false}},
+      {"islower", {StrIsLower, false}},
+  };
+  return methods;
+}
+
 Value StrMethod(const SharedString& s, const std::string& name) {
+  const auto method = StrMethods().find(name);
+  if (method == StrMethods().end()) throw EvalError("'str' object has no attribute '" + name + "'");
+  const auto [body, keywords] = method->second;
   const std::string full = "str." + name;
-  if (name == "upper") return Bind(full, [s](ValueList&) { return Value::Str(MapChars(s, ::toupper)); });
-  if (name == "lower") return Bind(full, [s](ValueList&) { return Value::Str(MapChars(s, ::tolower)); });
-  if (name == "capitalize") {
-    return Bind(full, [s](ValueList&) {
-      std::string r = MapChars(s, ::tolower);
-      if (!r.empty()) r[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(r[0])));
-      return Value::Str(r);
-    });
-  }
-  if (name == "title") {
-    return Bind(full, [s](ValueList&) {
-      std::string r = s;
-      bool start = true;
-      for (char& c : r) {
-        const bool alpha = std::isalpha(static_cast<unsigned char>(c));
-        c = static_cast<char>(start ? std::toupper(static_cast<unsigned char>(c)) : std::tolower(static_cast<unsigned char>(c)));
-        start = !alpha;
-      }
-      return Value::Str(r);
-    });
-  }
-  if (name == "swapcase") {
-    return Bind(full, [s](ValueList&) {
-      std::string r = s;
-      for (char& c : r) {
-        const unsigned char u = static_cast<unsigned char>(c);
-        c = static_cast<char>(std::isupper(u) ? std::tolower(u) : std::toupper(u));
-      }
-      return Value::Str(r);
-    });
-  }
-  if (name == "strip" || name == "lstrip" || name == "rstrip") {
-    return Bind(full, [s, name](ValueList& a) {
-      CheckArity(name, a, 0, 1);
-      return Value::Str(Strip(s, a, name != "rstrip", name != "lstrip"));
-    });
-  }
-  if (name == "split" || name == "rsplit") {
-    return Value::Callable(full, [s, name](ValueList& a, Kwargs& kw) {
-      const Value* sep = a.empty() ? nullptr : &a[0];
-      long maxsplit = a.size() > 1 ? AsIndex(a[1], "maxsplit") : -1;
-      for (auto& [k, v] : kw) {
-        if (k == "sep") sep = &v;
-        else if (k == "maxsplit") maxsplit = AsIndex(v, "maxsplit");
-        else throw EvalError(name + "() got an unexpected keyword argument '" + k + "'");
-      }
-      return Value::List(Split(s, sep, maxsplit, name == "rsplit"));
-    });
-  }
-  if (name == "splitlines") {
-    return Bind(full, [s](ValueList&) {
-      ValueList out;
-      size_t k = 0;
-      while (k < s.size()) {
-        size_t e = s.str().find_first_of("\r\n", k);
-        if (e == std::string::npos) e = s.size();
-        out.push_back(Value::Str(s.substr(k, e - k)));
-        k = e + ((e + 1 < s.size() && s[e] == '\r' && s[e + 1] == '\n') ? 2 : 1);
-      }
-      return Value::List(out);
-    });
-  }
-  if (name == "join") {
-    return Bind(full, [s](ValueList& a) {
-      CheckArity("join", a, 1, 1);
-      const ValueList items = Iterate(a[0]);
-      // the size first, so that nothing too large is built
-      size_t size = items.empty() ? 0 : s.size() * (items.size() - 1);
-      for (size_t k = 0; k < items.size(); ++k) {
-        if (items[k].type != Value::Type::kStr) {
-          throw EvalError("sequence item " + std::to_string(k) + ": expected str instance, " + TypeName(items[k]) + " found");
-        }
-        size += items[k].s.size();
-        if (size > kMaxStringBytes) break;
-      }
-      CheckStringSize(size, "joined string");
-      std::string out;
-      out.reserve(size);
-      for (size_t k = 0; k < items.size(); ++k) {
-        if (k) out += s.str();
-        out += items[k].s.str();
-      }
-      return Value::Str(std::move(out));
-    });
-  }
-  if (name == "replace") {
-    return Bind(full, [s](ValueList& a) {
-      CheckArity("replace", a, 2, 3);
-      const std::string& from = StrArg("replace", a, 0);
-      const std::string& to = StrArg("replace", a, 1);
-      const long limit = a.size() > 2 ? AsIndex(a[2], "count") : -1;
-      // the number of replacements first, so that nothing too large is built
-      size_t matches = 0;
-      if (from.empty()) {
-        matches = s.size() + 1;
-      } else {
-        for (size_t e = s.find(from); e != std::string::npos; e = s.find(from, e + from.size())) ++matches;
-      }
-      if (limit >= 0) matches = std::min(matches, static_cast<size_t>(limit));
-      // (no overflow: each size is at most kMaxStringBytes)
-      const size_t size = s.size() - matches * from.size() + matches * to.size();
-      CheckStringSize(size, "replaced string");
-      std::string out;
-      out.reserve(size);
-      size_t k = 0;
-      for (size_t n = 0; n < matches; ++n) {
-        if (from.empty()) {
-          out += to;
-          if (k < s.size()) out += s[k++];
-          continue;
-        }
-        const size_t e = s.find(from, k);
-        out.append(s.str(), k, e - k);
-        out += to;
-        k = e + from.size();
-      }
-      out.append(s.str(), k, std::string::npos);
-      return Value::Str(std::move(out));
-    });
-  }
-  if (name == "startswith" || name == "endswith") {
-    return Bind(full, [s, name](ValueList& a) {
-      CheckArity(name, a, 1, 1);
-      ValueList options = a[0].type == Value::Type::kTuple ? *a[0].list : ValueList{a[0]};
-      for (const Value& o : options) {
-        if (o.type != Value::Type::kStr) throw EvalError(name + " first arg must be str or a tuple of str");
-        if (o.s.size() > s.size()) continue;
-        const std::string& text = s;
-        if (name == "startswith" ? text.compare(0, o.s.size(), o.s) == 0 : text.compare(s.size() - o.s.size(), o.s.size(), o.s) == 0) {
-          return Value::Bool(true);
-        }
-      }
-      return Value::Bool(false);
-    });
-  }
-  if (name == "find" || name == "rfind" || name == "index" || name == "rindex" || name == "count") {
-    return Bind(full, [s, name](ValueList& a) {
-      CheckArity(name, a, 1, 1);
-      const std::string& sub = StrArg(name, a, 0);
-      if (name == "count") {
-        if (sub.empty()) return Value::Integer(static_cast<Int>(s.size() + 1));
-        Int n = 0;
-        for (size_t k = s.find(sub); k != std::string::npos; k = s.find(sub, k + sub.size())) ++n;
-        return Value::Integer(n);
-      }
-      const size_t k = name[0] == 'r' ? s.str().rfind(sub) : s.find(sub);
-      if (k == std::string::npos) {
-        if (name == "index" || name == "rindex") throw EvalError("substring not found");
-        return Value::Integer(-1);
-      }
-      return Value::Integer(static_cast<Int>(k));
-    });
-  }
-  if (name == "zfill" || name == "ljust" || name == "rjust" || name == "center") {
-    return Bind(full, [s, name](ValueList& a) {
-      CheckArity(name, a, 1, 2);
-      const long width = AsIndex(a[0], "width");
-      if (width > static_cast<long>(s.size())) CheckStringSize(static_cast<size_t>(width), "padded string");
-      const char fill = name == "zfill" ? '0' : (a.size() > 1 ? StrArg(name, a, 1)[0] : ' ');
-      if (width <= static_cast<long>(s.size())) return Value::Str(s);
-      const size_t pad = static_cast<size_t>(width) - s.size();
-      if (name == "ljust") return Value::Str(s + std::string(pad, fill));
-      if (name == "rjust") return Value::Str(std::string(pad, fill) + s);
-      if (name == "center") {
-        const size_t left = pad / 2 + (pad & static_cast<size_t>(width) & 1);
-        return Value::Str(std::string(left, fill) + s + std::string(pad - left, fill));
-      }
-      const bool signed_ = !s.empty() && (s[0] == '-' || s[0] == '+');
-      return Value::Str(signed_ ? s.substr(0, 1) + std::string(pad, '0') + s.substr(1) : std::string(pad, '0') + s);
-    });
-  }
-  if (name == "isdigit") return Bind(full, [s](ValueList&) { return Value::Bool(AllChars(s, ::isdigit)); });
-  if (name == "isalpha") return Bind(full, [s](ValueList&) { return Value::Bool(AllChars(s, ::isalpha)); });
-  if (name == "isalnum") return Bind(full, [s](ValueList&) { return Value::Bool(AllChars(s, ::isalnum)); });
-  if (name == "isspace") return Bind(full, [s](ValueList&) { return Value::Bool(AllChars(s, ::isspace)); });
-  if (name == "isupper") {
-    return Bind(full, [s](ValueList&) {
-      return Value::Bool(std::any_of(s.begin(), s.end(), ::isupper) && !std::any_of(s.begin(), s.end(), ::islower));
-    });
-  }
-  if (name == "islower") {
-    return Bind(full, [s](ValueList&) {
-      return Value::Bool(std::any_of(s.begin(), s.end(), ::islower) && !std::any_of(s.begin(), s.end(), ::isupper));
-    });
-  }
-  throw EvalError("'str' object has no attribute '" + name + "'");
+  return Value::Callable(full, [s, name, full, body, keywords](ValueList& a, Kwargs& kw) {
+    if (!keywords && !kw.empty()) throw EvalError(full + "() takes no keyword arguments");
+    return body({s, name, a, kw});
+  });
 }
 
 Value SequenceMethod(const Value& v, const std::string& name) {

@@ -611,7 +611,8 @@ void Processor::ReportLegacyCalls() {
   legacy_calls_.clear();
 }
 
-void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& macros, const Symbols& symbols) {
+Processor::MacroInScope Processor::FindMacro(const Node* node, const std::string& name, const Macros& macros,
+                                             const Symbols& symbols) {
   // resolve the name, then (namespace.)*name with the namespace's macros and properties
   Macros scope_macros = macros;
   Symbols scope_symbols = symbols;
@@ -645,25 +646,20 @@ void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& m
     }
   }
   if (!entry) throw EvalError("unknown macro name: " + node->name);
-  const std::shared_ptr<Macro> macro = entry->macro;  // keep it alive if redefined in its body
-  if (static_cast<int>(macro_stack_.size()) >= options_.max_macro_depth) {
-    throw EvalError("maximum macro recursion depth (" + std::to_string(options_.max_macro_depth) +
-                    ") exceeded in macro '" + macro->name + "'");
-  }
-  macro_stack_.push_back(macro);
+  return {entry->macro, scope_macros, scope_symbols};
+}
 
-  Node* body = pool_.Clone(macro->body);
-  auto local_symbols = std::make_shared<Table>(scope_symbols, &table_context_);
-  auto local_macros = std::make_shared<MacroTable>(scope_macros);
-  std::vector<std::string> params = macro->params;
+void Processor::BindMacroArguments(Node* node, const MacroInScope& scope, Table& local_symbols) {
+  const Macro& macro = *scope.macro;
+  std::vector<std::string> params = macro.params;
   for (auto& [key, value] : node->attributes) {
     auto it = std::find(params.begin(), params.end(), key);
     if (it == params.end()) Fail(node, "Invalid parameter \"" + key + "\"");
     params.erase(it);
-    local_symbols->Set(key, EvalText(value, scope_symbols), false);
+    local_symbols.Set(key, EvalText(value, scope.symbols), false);
     value.clear();  // not evaluated again below
   }
-  EvalAll(node, scope_macros, scope_symbols);  // the blocks, in the caller's scope
+  EvalAll(node, scope.macros, scope.symbols);  // the blocks, in the caller's scope
 
   const Node* block = node->FirstChildElement();
   for (auto it = params.begin(); it != params.end();) {
@@ -672,28 +668,28 @@ void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& m
       continue;
     }
     if (!block) Fail(node, "Not enough blocks");
-    local_symbols->Set(*it, Value::Block(block), true);
+    local_symbols.Set(*it, Value::Block(block), true);
     block = block->NextSiblingElement();
     it = params.erase(it);
   }
   if (block) Fail(node, "Unused block \"" + block->name + "\"");
 
   for (auto it = params.begin(); it != params.end();) {
-    auto d = macro->defaults.find(*it);
-    if ((*it)[0] == '*' || d == macro->defaults.end() || (!d->second.forward && !d->second.value)) {
+    auto d = macro.defaults.find(*it);
+    if ((*it)[0] == '*' || d == macro.defaults.end() || (!d->second.forward && !d->second.value)) {
       ++it;
       continue;
     }
     current_ = node;
     Value value;
-    if (d->second.forward && scope_symbols->Contains(*it)) {
-      value = scope_symbols->Get(*it);
+    if (d->second.forward && scope.symbols->Contains(*it)) {
+      value = scope.symbols->Get(*it);
     } else if (d->second.value) {
-      value = EvalText(*d->second.value, scope_symbols);
+      value = EvalText(*d->second.value, scope.symbols);
     } else {
       Fail(node, "Undefined property to forward: " + *it);
     }
-    local_symbols->Set(*it, std::move(value), false);
+    local_symbols.Set(*it, std::move(value), false);
     it = params.erase(it);
   }
   if (!params.empty()) {
@@ -701,6 +697,21 @@ void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& m
     for (const std::string& p : params) list += (list.empty() ? "" : ",") + p;
     Fail(node, "Undefined parameters [" + list + "]");
   }
+}
+
+void Processor::ExpandMacro(Node* node, const std::string& name, const Macros& macros, const Symbols& symbols) {
+  const MacroInScope scope = FindMacro(node, name, macros, symbols);
+  const std::shared_ptr<Macro> macro = scope.macro;  // keep it alive if redefined in its body
+  if (static_cast<int>(macro_stack_.size()) >= options_.max_macro_depth) {
+    throw EvalError("maximum macro recursion depth (" + std::to_string(options_.max_macro_depth) +
+                    ") exceeded in macro '" + macro->name + "'");
+  }
+  macro_stack_.push_back(macro);
+
+  Node* body = pool_.Clone(macro->body);
+  auto local_symbols = std::make_shared<Table>(scope.symbols, &table_context_);
+  auto local_macros = std::make_shared<MacroTable>(scope.macros);
+  BindMacroArguments(node, scope, *local_symbols);
 
   EvalAll(body, local_macros, local_symbols);
   current_ = node;

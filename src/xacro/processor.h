@@ -50,6 +50,16 @@ class Processor : public TextEvaluator {
   void ProcessArg(Node* node, const Symbols& symbols);
   void ProcessCondition(Node* node, const Macros& macros, const Symbols& symbols);
   bool HandleMacroCall(Node* node, const Macros& macros, const Symbols& symbols);
+  // A macro call's steps: the macro a name means in the caller's scope (with the namespace's
+  // macros and properties for ns.name), its parameters bound from the call's attributes, blocks
+  // and defaults, then its body expanded in place of the call.
+  struct MacroInScope {
+    std::shared_ptr<Macro> macro;
+    Macros macros;
+    Symbols symbols;
+  };
+  MacroInScope FindMacro(const Node* node, const std::string& name, const Macros& macros, const Symbols& symbols);
+  void BindMacroArguments(Node* node, const MacroInScope& scope, Table& local_symbols);
   void ExpandMacro(Node* node, const std::string& name, const Macros& macros, const Symbols& symbols);
   void RemovePreviousComments(Node* node);
   // Gives a node that left the document (and its subtree) back to the pool.

@@ -1,5 +1,7 @@
-// The render session: the files a model read (for a live view's reload), forgetting models after
-// an edit, caches that stay bounded over many models, and the outputs asked for (gl).
+// The render session: a request prepared once and drawn with per-frame changes as values (no file
+// read again), each mesh decoded once per process, the files a model read (for a live view's
+// reload), forgetting models after an edit, caches that stay bounded over many models, and the
+// outputs asked for (gl).
 #include "request/render_session.h"
 
 #include <gtest/gtest.h>
@@ -47,12 +49,65 @@ RenderRequest TopView(const std::string& model) {
   return request;
 }
 
-OptionLabel Dashes() {
-  return [](std::string_view name) { return "--" + std::string(name); };
-}
-
 int RobotPixels(const image::LabelImage& labels) {
   return static_cast<int>(std::count_if(labels.labels.begin(), labels.labels.end(), [](auto l) { return l != 0; }));
+}
+
+TEST(RenderSession, PreparesOnceThenDrawsPerFrameChangesWithoutReadingFiles) {
+  URDFSNAP_REQUIRE_GL();
+  const test::TempFolder folder("render_session_prepare");
+  WriteRobot(folder);
+  RenderSession session;
+  Warnings warnings;
+  RenderRequest request = TopView(folder.Path("urdf/robot.urdf.xacro"));
+  request.yaw = "0.3";
+  const Prepared first = session.Prepare(request, CommandLineLabel, warnings);
+  ASSERT_NE(first.robot, nullptr);
+  EXPECT_EQ(first.robot->links()[0].name, "base");
+  EXPECT_EQ(first.positions.size(), first.robot->joints().size());
+  EXPECT_DOUBLE_EQ(first.settings.view.yaw, 0.3);
+  // the same request again: the same prepared robot, not a second one
+  EXPECT_EQ(session.Prepare(request, CommandLineLabel, warnings).renderer, first.renderer);
+
+  // with every file gone, frames are still drawn: a changed view is a value, not text to parse
+  const image::Frame before = session.Draw(first, {false, false, true});
+  fs::remove_all(folder.Path("meshes"));
+  fs::remove_all(folder.Path("urdf"));
+  Prepared turned = first;
+  turned.settings.view.yaw += 0.5;
+  const image::Frame after = session.Draw(turned, {false, false, true});
+  EXPECT_GT(RobotPixels(after.labels), 10);
+  EXPECT_NE(before.labels.labels, after.labels.labels);
+}
+
+TEST(RenderSession, DecodesEachMeshOncePerProcess) {
+  URDFSNAP_REQUIRE_GL();
+  const test::TempFolder folder("render_session_meshes");
+  WriteRobot(folder);
+  const RenderRequest request = TopView(folder.Path("urdf/robot.urdf.xacro"));
+  Warnings warnings;
+  // two sessions (as two commands of one process, or a session and a docs page) share the mesh
+  RenderSession one, two;
+  const Prepared a = one.Prepare(request, CommandLineLabel, warnings);
+  const Prepared b = two.Prepare(request, CommandLineLabel, warnings);
+  ASSERT_NE(a.renderer, b.renderer);
+  const scene::Scene scene_a = a.renderer->Pose(a.positions);
+  const scene::Scene scene_b = b.renderer->Pose(b.positions);
+  ASSERT_EQ(scene_a.items.size(), 1u);
+  ASSERT_EQ(scene_b.items.size(), 1u);
+  EXPECT_EQ(scene_a.items[0].mesh.get(), scene_b.items[0].mesh.get());
+}
+
+TEST(RenderSession, RenderReturnsTheRobotWithTheFrame) {
+  URDFSNAP_REQUIRE_GL();
+  const test::TempFolder folder("render_session_robot");
+  WriteRobot(folder);
+  RenderSession session;
+  Warnings warnings;
+  const Rendered rendered = session.Render(TopView(folder.Path("urdf/robot.urdf.xacro")), CommandLineLabel, warnings);
+  ASSERT_NE(rendered.robot, nullptr);
+  EXPECT_EQ(rendered.robot->name(), "demo");
+  EXPECT_EQ(rendered.frame.colour.width, 64);
 }
 
 TEST(RenderSession, SaysWhichFilesAModelReadAndReadsThemAgainAfterForgetting) {
@@ -63,7 +118,7 @@ TEST(RenderSession, SaysWhichFilesAModelReadAndReadsThemAgainAfterForgetting) {
   RenderSession session;
   Warnings warnings;
   const RenderRequest request = TopView(model);
-  const int before = RobotPixels(session.Render(request, Dashes(), warnings, {false, false, true}).labels);
+  const int before = RobotPixels(session.Render(request, CommandLineLabel, warnings, {false, false, true}).frame.labels);
   EXPECT_GT(before, 10);
   const std::vector<std::string> files = session.Files(request.model);
   ASSERT_EQ(files.size(), 3u);
@@ -75,7 +130,7 @@ TEST(RenderSession, SaysWhichFilesAModelReadAndReadsThemAgainAfterForgetting) {
   folder.Write("meshes/part.stl", Stl(2));
   session.ForgetModels();
   EXPECT_TRUE(session.Files(request.model).empty());
-  const int after = RobotPixels(session.Render(request, Dashes(), warnings, {false, false, true}).labels);
+  const int after = RobotPixels(session.Render(request, CommandLineLabel, warnings, {false, false, true}).frame.labels);
   EXPECT_GT(after, 3 * before);   // twice the size, four times the area
 }
 
@@ -90,7 +145,7 @@ TEST(RenderSession, KeepsOnlyTheMostRecentlyUsedModels) {
     folder.Write(name, "<robot name=\"r\"><link name=\"a\"><visual><geometry><box size=\"1 1 1\"/>"
                        "</geometry></visual></link></robot>");
     requests.push_back(TopView(folder.Path(name)));
-    session.Render(requests.back(), Dashes(), warnings);
+    session.Render(requests.back(), CommandLineLabel, warnings);
   }
   // the first model was the least recently used when the ninth came
   EXPECT_TRUE(session.Files(requests[0].model).empty());

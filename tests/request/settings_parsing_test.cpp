@@ -13,14 +13,12 @@
 namespace urdfsnap::request {
 namespace {
 
-std::string Dashes(std::string_view name) { return "--" + std::string(name); }
-
 render::RenderSettings Parse(const RenderRequest& request) {
   Warnings warnings;
-  return ParseRenderSettings(request, Dashes, warnings);
+  return ParseRenderSettings(request, CommandLineLabel, warnings);
 }
 
-std::string ErrorOf(const RenderRequest& request, const OptionLabel& label = Dashes) {
+std::string ErrorOf(const RenderRequest& request, const OptionLabel& label = CommandLineLabel) {
   Warnings warnings;
   try {
     ParseRenderSettings(request, label, warnings);

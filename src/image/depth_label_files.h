@@ -5,33 +5,41 @@
 //   labels .png: 16-bit, 1 + the link's index (Robot::links() order, as `urdfsnap info` lists the
 //               links), 0 where none; with FILE.json beside FILE.png mapping each value (a decimal
 //               string) to the link's name.
-// All written atomically (temporary file + rename).
+// One encoder per format, used for single files (`render --depth/--labels`, written atomically:
+// temporary file + rename) and for an animation's numbered sequences alike.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "image/image.h"
-#include "model/robot.h"
 
-namespace urdfsnap::render {
+namespace urdfsnap::image {
 
 // Millimetres as the 16-bit depth PNG stores them (0 where there is no robot).
-image::Gray16Image DepthMillimetres(const image::DepthImage& depth);
+Gray16Image DepthMillimetres(const DepthImage& depth);
+
+// The bytes of a depth file with `extension` (".png": 16-bit millimetres; ".npy": float32
+// metres). Throws urdfsnap::Error for another extension.
+std::string EncodeDepth(const DepthImage& depth, const std::string& extension);
+
+// The bytes of a 16-bit label PNG.
+std::string EncodeLabels(const LabelImage& labels);
+
+// The JSON object {"1": "base_link", "2": ...} for the links named `link_names`, in order.
+std::string LabelNamesJson(const std::vector<std::string>& link_names);
 
 // Writes `depth` to `path` by its extension (.png or .npy). Throws urdfsnap::Error naming the
 // path for another extension or a write failure.
-void WriteDepthFile(const image::DepthImage& depth, const std::string& path);
-
-// The JSON object {"1": "base_link", "2": ...} for every link of `robot`.
-std::string LabelNamesJson(const model::Robot& robot);
+void WriteDepthFile(const DepthImage& depth, const std::string& path);
 
 // Writes `labels` to `path` (which must end in .png) and LabelNamesJson beside it (same name,
 // .json). Throws urdfsnap::Error naming the path.
-void WriteLabelFiles(const image::LabelImage& labels, const model::Robot& robot, const std::string& path);
+void WriteLabelFiles(const LabelImage& labels, const std::vector<std::string>& link_names, const std::string& path);
 
 // Throws urdfsnap::Error naming `option` unless `path` has an extension WriteDepthFile (depth) or
 // WriteLabelFiles (labels) takes: for checking command-line options before rendering.
 void CheckDepthPath(const std::string& path, const std::string& option);
 void CheckLabelsPath(const std::string& path, const std::string& option);
 
-}  // namespace urdfsnap::render
+}  // namespace urdfsnap::image

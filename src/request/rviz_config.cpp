@@ -1,10 +1,9 @@
 // ReadRvizConfig: yaml-cpp walks the .rviz file; each RViz property is read the way RViz's
 // property classes load it (src/rviz/properties/*.cpp in ros-visualization/rviz 1.14) and limited
 // to the range RViz gives it.
-#include "render/rviz_config.h"
+#include "request/rviz_config.h"
 
 #include <algorithm>
-#include <charconv>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -12,34 +11,19 @@
 #include <string_view>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
 #include "common/error.h"
 #include "common/file_reading.h"
+#include "common/internal/yaml_section.h"
 #include "common/number_text.h"
 
-namespace urdfsnap::render {
+namespace urdfsnap::request {
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // What a frame property holds when it follows the fixed frame
 // (TfFrameProperty::FIXED_FRAME_STRING, src/rviz/properties/tf_frame_property.cpp).
 constexpr const char* kFixedFrameString = "<Fixed Frame>";
 
-// yaml-cpp's const operator[] gives an invalid node for a missing key, which throws on anything but
-// IsDefined(); the helpers below check that first.
-
-// A yaml-cpp mark's 0-based line as a 1-based line; 0 (the whole file) when the node has none.
-int LineOf(const YAML::Node& node) { return node.IsDefined() ? node.Mark().line + 1 : 0; }
-
-std::string Describe(const YAML::Node& node) {
-  if (!node.IsDefined()) return "nothing";
-  if (node.IsScalar()) return "'" + node.Scalar() + "'";
-  if (node.IsMap()) return "a map";
-  if (node.IsSequence()) return "a list";
-  return "nothing";
-}
+using Section = YamlSection;
 
 std::string_view Trimmed(std::string_view text) {
   const size_t begin = text.find_first_not_of(' ');
@@ -47,147 +31,52 @@ std::string_view Trimmed(std::string_view text) {
   return text.substr(begin, text.find_last_not_of(' ') - begin + 1);
 }
 
-bool ParseInt(std::string_view text, int& out) {
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), out);
-  return error == std::errc() && end == text.data() + text.size() && !text.empty();
+// A section of the file: RViz saves a property with sub-properties as a map with its "Value".
+Section RvizSection(const std::string& path, const YAML::Node& map, const std::string& name) {
+  return Section(path, map, name, Section::Values::kRvizProperties);
 }
 
-// One map of the file (Global Options, a display, the current view) and the name messages give
-// it. The Read functions leave `out` alone when `key` is missing and throw urdfsnap::Error at the
-// value's line when it cannot be read.
-class Section {
- public:
-  Section(const std::string& path, const YAML::Node& map, std::string name)
-      : path_(path), map_(map), name_(std::move(name)) {
-    if (!map_.IsMap()) {
-      throw Error(SourceLocation{path_, LineOf(map_)},
-                  name_ + ": expected a map, got " + Describe(map_));
-    }
-  }
+// A TF frame name; RViz drops a leading '/' (TfFrameProperty::setValue, tf_frame_property.cpp).
+void ReadFrame(const Section& section, const char* key, std::string& out) {
+  section.ReadString(key, out);
+  if (!out.empty() && out.front() == '/') out.erase(0, 1);
+}
 
-  const std::string& path() const { return path_; }
-
-  // The line of `key` itself (a map's own mark is its first entry), else the section's line.
-  int KeyLine(const char* key) const {
-    for (const auto& entry : map_) {
-      if (entry.first.IsScalar() && entry.first.Scalar() == key) return LineOf(entry.first);
-    }
-    return LineOf(map_);
-  }
-
-  // The entry `key` as written (undefined when missing). Goes through the const operator[]:
-  // yaml-cpp's non-const one would add the key.
-  YAML::Node Entry(const char* key) const { return map_[key]; }
-
-  // The value of the property `key`. A property with sub-properties is saved as a map whose
-  // "Value" entry holds its own value (Property::load, src/rviz/properties/property.cpp).
-  YAML::Node Value(const char* key) const {
-    const YAML::Node entry = Entry(key);
-    return entry.IsDefined() && entry.IsMap() ? entry["Value"] : entry;
-  }
-
-  // A section for the map at `key`, or nothing when the key is missing.
-  std::optional<Section> Child(const char* key, const std::string& name) const {
-    const YAML::Node entry = Entry(key);
-    if (!entry.IsDefined()) return std::nullopt;
-    return Section(path_, entry, name);
-  }
-
-  // RViz's FloatProperty clamps what it loads to its min and max (float_property.cpp).
-  void ReadNumber(const char* key, double& out, double min = -kInfinity,
-                  double max = kInfinity) const {
-    const YAML::Node node = Value(key);
-    if (!node.IsDefined()) return;
-    double value = 0;
-    if (!node.IsScalar() || !ParseNumber(node.Scalar(), value)) Fail(key, "a number");
-    out = std::clamp(value, min, max);
-  }
-
-  // RViz's IntProperty clamps to its min (int_property.cpp).
-  void ReadInt(const char* key, int& out, int min) const {
-    const YAML::Node node = Value(key);
-    if (!node.IsDefined()) return;
+// ColorProperty's "R; G; B" with each integer limited to 0..255 (parseColor, parse_color.cpp).
+void ReadColour(const Section& section, const char* key, Eigen::Vector3f& out) {
+  const YAML::Node node = section.Value(key);
+  if (!node.IsDefined()) return;
+  const char* expected = "a colour \"R; G; B\" (three integers)";
+  if (!node.IsScalar()) section.Fail(key, expected);
+  const std::string_view text = node.Scalar();
+  Eigen::Vector3f colour;
+  size_t begin = 0;
+  for (int i = 0; i < 3; ++i) {
+    const size_t end = i < 2 ? text.find(';', begin) : text.size();
     int value = 0;
-    if (!node.IsScalar() || !ParseInt(node.Scalar(), value)) Fail(key, "an integer");
-    out = std::max(value, min);
-  }
-
-  void ReadBool(const char* key, bool& out) const {
-    const YAML::Node node = Value(key);
-    if (!node.IsDefined()) return;
-    if (!node.IsScalar() || !YAML::convert<bool>::decode(node, out)) Fail(key, "true or false");
-  }
-
-  void ReadString(const char* key, std::string& out) const {
-    const YAML::Node node = Value(key);
-    if (!node.IsDefined()) return;
-    if (!node.IsScalar()) Fail(key, "text");
-    out = node.Scalar();
-  }
-
-  // A TF frame name; RViz drops a leading '/' (TfFrameProperty::setValue, tf_frame_property.cpp).
-  void ReadFrame(const char* key, std::string& out) const {
-    ReadString(key, out);
-    if (!out.empty() && out.front() == '/') out.erase(0, 1);
-  }
-
-  // ColorProperty's "R; G; B" with each integer limited to 0..255 (parseColor, parse_color.cpp).
-  void ReadColour(const char* key, Eigen::Vector3f& out) const {
-    const YAML::Node node = Value(key);
-    if (!node.IsDefined()) return;
-    const char* expected = "a colour \"R; G; B\" (three integers)";
-    if (!node.IsScalar()) Fail(key, expected);
-    const std::string_view text = node.Scalar();
-    Eigen::Vector3f colour;
-    size_t begin = 0;
-    for (int i = 0; i < 3; ++i) {
-      const size_t end = i < 2 ? text.find(';', begin) : text.size();
-      int value = 0;
-      if (end == std::string_view::npos ||
-          !ParseInt(Trimmed(text.substr(begin, end - begin)), value)) {
-        Fail(key, expected);
-      }
-      colour[i] = static_cast<float>(std::clamp(value, 0, 255)) / 255.f;
-      begin = end + 1;
+    if (end == std::string_view::npos || !ParseInteger(Trimmed(text.substr(begin, end - begin)), value)) {
+      section.Fail(key, expected);
     }
-    out = colour;
+    colour[i] = static_cast<float>(std::clamp(value, 0, 255)) / 255.f;
+    begin = end + 1;
   }
+  out = colour;
+}
 
-  // VectorProperty's map of X, Y and Z, all three or none (VectorProperty::load,
-  // vector_property.cpp).
-  void ReadVector(const char* key, Eigen::Vector3d& out) const {
-    const YAML::Node node = Entry(key);
-    if (!node.IsDefined()) return;
-    const Section vector(path_, node, name_ + ": '" + key + "'");
-    Eigen::Vector3d value;
-    const char* const axes[] = {"X", "Y", "Z"};
-    for (int i = 0; i < 3; ++i) {
-      if (!vector.Entry(axes[i]).IsDefined()) Fail(key, "a map of X, Y and Z");
-      vector.ReadNumber(axes[i], value[i]);
-    }
-    out = value;
+// VectorProperty's map of X, Y and Z, all three or none (VectorProperty::load,
+// vector_property.cpp).
+void ReadVector(const Section& section, const char* key, Eigen::Vector3d& out) {
+  const YAML::Node node = section.Entry(key);
+  if (!node.IsDefined()) return;
+  const Section vector = RvizSection(section.path(), node, section.name() + ": '" + key + "'");
+  Eigen::Vector3d value;
+  const char* const axes[] = {"X", "Y", "Z"};
+  for (int i = 0; i < 3; ++i) {
+    if (!vector.Entry(axes[i]).IsDefined()) section.Fail(key, "a map of X, Y and Z");
+    vector.ReadNumber(axes[i], value[i]);
   }
-
-  // Warns that the property `key` is set to something urdfsnap does not draw.
-  void Warn(const char* key, const std::string& what, Warnings& warnings) const {
-    warnings.Add(SourceLocation{path_, KeyLine(key)}.ToString() + ": " + name_ + ": '" + key +
-                 "' " + what);
-  }
-
-  // Throws at the offending scalar's line, else at the key's, else at the section's.
-  [[noreturn]] void Fail(const char* key, const std::string& expected) const {
-    const YAML::Node value = Value(key);
-    const YAML::Node shown = value.IsDefined() ? value : Entry(key);
-    const int line = shown.IsDefined() && shown.IsScalar() ? LineOf(shown) : KeyLine(key);
-    throw Error(SourceLocation{path_, line},
-                name_ + ": '" + key + "': expected " + expected + ", got " + Describe(shown));
-  }
-
- private:
-  std::string path_;
-  YAML::Node map_;
-  std::string name_;
-};
+  out = value;
+}
 
 // One entry of the file's display tree, and whether RViz would draw it.
 struct Display {
@@ -211,11 +100,11 @@ void CollectDisplays(const Section& parent, bool parent_enabled, Displays& displ
   for (const YAML::Node& item : list) {
     std::string class_id;
     std::string name;
-    const Section untitled(parent.path(), item, "display");
+    const Section untitled = RvizSection(parent.path(), item, "display");
     untitled.ReadString("Class", class_id);
     untitled.ReadString("Name", name);
     if (class_id.empty()) untitled.Fail("Class", "a display class such as rviz/Grid");
-    const Section section(parent.path(), item, class_id + " display '" + name + "'");
+    const Section section = RvizSection(parent.path(), item, class_id + " display '" + name + "'");
 
     // a display's checkbox: Display::load reads "Value", then "Enabled"; unset means unchecked
     // (src/rviz/display.cpp). A disabled group disables its children (setDisableChildrenIfFalse).
@@ -257,8 +146,8 @@ const Display* Chosen(const std::vector<Display>& displays, Warnings& warnings) 
 void ReadGlobalOptions(const Section& manager, scene::SceneOptions& scene) {
   const std::optional<Section> global = manager.Child("Global Options", "Global Options");
   if (!global) return;
-  global->ReadColour("Background Color", scene.background);
-  global->ReadFrame("Fixed Frame", scene.fixed_frame);
+  ReadColour(*global, "Background Color", scene.background);
+  ReadFrame(*global, "Fixed Frame", scene.fixed_frame);
 }
 
 // The Grid display's properties (src/rviz/default_plugin/grid_display.cpp L50-99).
@@ -268,7 +157,7 @@ void ReadGrid(const Display& display, const std::string& fixed_frame, scene::Gri
   grid.enabled = display.enabled;
   section.ReadInt("Plane Cell Count", grid.plane_cell_count, 1);
   section.ReadNumber("Cell Size", grid.cell_size, 0.0001);
-  section.ReadColour("Color", grid.colour);
+  ReadColour(section, "Color", grid.colour);
   double alpha = grid.alpha;
   section.ReadNumber("Alpha", alpha, 0, 1);
   grid.alpha = static_cast<float>(alpha);
@@ -285,11 +174,11 @@ void ReadGrid(const Display& display, const std::string& fixed_frame, scene::Gri
       section.Fail("Plane", "XY, XZ or YZ");
     }
   }
-  section.ReadVector("Offset", grid.offset);
+  ReadVector(section, "Offset", grid.offset);
 
   // what urdfsnap's grid cannot follow
   std::string frame = kFixedFrameString;
-  section.ReadFrame("Reference Frame", frame);
+  ReadFrame(section, "Reference Frame", frame);
   if (frame != kFixedFrameString && frame != fixed_frame) {
     section.Warn("Reference Frame", "is not the fixed frame; urdfsnap draws the grid in the fixed "
                  "frame", warnings);
@@ -349,13 +238,13 @@ void ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings
   current->ReadNumber("Distance", view.distance, 0.001);
   current->ReadNumber("Yaw", view.yaw);
   current->ReadNumber("Pitch", view.pitch, -kMaxPitch, kMaxPitch);
-  current->ReadVector("Focal Point", view.focal);
+  ReadVector(*current, "Focal Point", view.focal);
   current->ReadNumber("Field of View", view.fov_y, 0.001, std::numbers::pi / 2);
   current->ReadNumber("Near Clip Distance", view.near_clip, 0.001, 10000);
 
   // what urdfsnap's orbit camera cannot follow
   std::string target = kFixedFrameString;
-  current->ReadFrame("Target Frame", target);
+  ReadFrame(*current, "Target Frame", target);
   if (target != kFixedFrameString) {
     current->Warn("Target Frame", "is not <Fixed Frame>; urdfsnap orbits in the fixed frame",
                   warnings);
@@ -363,14 +252,6 @@ void ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings
   bool invert_z = false;
   current->ReadBool("Invert Z Axis", invert_z);
   if (invert_z) current->Warn("Invert Z Axis", "is true; urdfsnap keeps +Z up", warnings);
-}
-
-YAML::Node LoadYaml(const std::string& text, const std::string& path) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw Error(SourceLocation{path, e.mark.line + 1}, "bad YAML: " + e.msg);
-  }
 }
 
 }  // namespace
@@ -392,7 +273,7 @@ RvizConfig ParseRvizConfig(const std::string& text, const std::string& path,
     throw Error(SourceLocation{path, 0},
                 "expected an .rviz file with a 'Visualization Manager' section");
   }
-  const Section manager(path, root["Visualization Manager"], "Visualization Manager");
+  const Section manager = RvizSection(path, root["Visualization Manager"], "Visualization Manager");
 
   RvizConfig config = defaults;
   ReadGlobalOptions(manager, config.scene);
@@ -413,4 +294,4 @@ RvizConfig ParseRvizConfig(const std::string& text, const std::string& path,
   return config;
 }
 
-}  // namespace urdfsnap::render
+}  // namespace urdfsnap::request

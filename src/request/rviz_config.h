@@ -8,7 +8,7 @@
 #include "scene/orbit_view.h"
 #include "scene/scene_options.h"
 
-namespace urdfsnap::render {
+namespace urdfsnap::request {
 
 // The parts of an .rviz file urdfsnap honours, applied on top of the given defaults.
 struct RvizConfig {
@@ -35,4 +35,4 @@ RvizConfig ReadRvizConfig(const std::string& path, const RvizConfig& defaults, W
 RvizConfig ParseRvizConfig(const std::string& text, const std::string& path,
                            const RvizConfig& defaults, Warnings& warnings);
 
-}  // namespace urdfsnap::render
+}  // namespace urdfsnap::request

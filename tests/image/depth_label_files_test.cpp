@@ -1,6 +1,6 @@
 // Depth and label files: millimetres and NaN as ROS's 16UC1/32FC1 conventions have them, the .npy
 // layout numpy.load reads, the label names beside the label image, and bad file names (unit).
-#include "render/frame_files.h"
+#include "image/depth_label_files.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "image/png_reader.h"
 #include "support/temp_folder.h"
 
-namespace urdfsnap::render {
+namespace urdfsnap::image {
 namespace {
 
 constexpr float kNone = NAN;
@@ -25,20 +25,20 @@ std::string Contents(const std::string& path) {
   return text.str();
 }
 
-TEST(FrameFiles, DepthPngHoldsMillimetresAndZeroOffTheRobot) {
+TEST(DepthLabelFiles, DepthPngHoldsMillimetresAndZeroOffTheRobot) {
   const test::TempFolder folder("frame_files");
-  const image::DepthImage depth{3, 2, {kNone, 1.2345f, 0.0002f, 2.0f, 70.0f, 65.535f}};
+  const DepthImage depth{3, 2, {kNone, 1.2345f, 0.0002f, 2.0f, 70.0f, 65.535f}};
   EXPECT_EQ(DepthMillimetres(depth).values, (std::vector<std::uint16_t>{0, 1235, 1, 2000, 65535, 65535}));
   WriteDepthFile(depth, folder.Path("depth.png"));
-  const image::Gray16Image read = image::ReadGray16Png(folder.Path("depth.png"));
+  const Gray16Image read = ReadGray16Png(folder.Path("depth.png"));
   EXPECT_EQ(read.width, 3);
   EXPECT_EQ(read.height, 2);
   EXPECT_EQ(read.values, DepthMillimetres(depth).values);
 }
 
-TEST(FrameFiles, DepthNpyIsFloat32MetresWithNanInNumpysLayout) {
+TEST(DepthLabelFiles, DepthNpyIsFloat32MetresWithNanInNumpysLayout) {
   const test::TempFolder folder("frame_files");
-  const image::DepthImage depth{3, 2, {kNone, 1.5f, 2.25f, 3, 4, 5}};
+  const DepthImage depth{3, 2, {kNone, 1.5f, 2.25f, 3, 4, 5}};
   WriteDepthFile(depth, folder.Path("depth.npy"));
   const std::string bytes = Contents(folder.Path("depth.npy"));
   ASSERT_EQ(bytes.substr(0, 8), std::string("\x93NUMPY\x01\x00", 8));
@@ -55,20 +55,15 @@ TEST(FrameFiles, DepthNpyIsFloat32MetresWithNanInNumpysLayout) {
   EXPECT_EQ(values[5], 5.0f);
 }
 
-TEST(FrameFiles, LabelPngAndItsNamesBesideIt) {
+TEST(DepthLabelFiles, LabelPngAndItsNamesBesideIt) {
   const test::TempFolder folder("frame_files");
-  Warnings warnings;
-  const model::Robot robot = model::LoadRobot(
-      "<robot name=\"r\"><link name=\"base\"/><link name=\"arm\"/><joint name=\"j\" type=\"fixed\">"
-      "<parent link=\"base\"/><child link=\"arm\"/></joint></robot>",
-      "r.urdf", warnings);
-  const image::LabelImage labels{2, 2, {0, 1, 2, 2}};
-  WriteLabelFiles(labels, robot, folder.Path("labels.png"));
-  EXPECT_EQ(image::ReadGray16Png(folder.Path("labels.png")).values, labels.labels);
+  const LabelImage labels{2, 2, {0, 1, 2, 2}};
+  WriteLabelFiles(labels, {"base", "arm"}, folder.Path("labels.png"));
+  EXPECT_EQ(ReadGray16Png(folder.Path("labels.png")).values, labels.labels);
   EXPECT_EQ(Contents(folder.Path("labels.json")), "{\n  \"1\": \"base\",\n  \"2\": \"arm\"\n}\n");
 }
 
-TEST(FrameFiles, BadNamesAreRefusedBeforeAnythingIsWritten) {
+TEST(DepthLabelFiles, BadNamesAreRefusedBeforeAnythingIsWritten) {
   const test::TempFolder folder("frame_files");
   try {
     CheckDepthPath("depth.tiff", "--depth");
@@ -81,5 +76,17 @@ TEST(FrameFiles, BadNamesAreRefusedBeforeAnythingIsWritten) {
   EXPECT_TRUE(folder.Listing().empty());
 }
 
+TEST(DepthLabelFiles, TheExtensionChoosesTheDepthEncoding) {
+  const test::TempFolder folder("depth_encoding");
+  const DepthImage depth{2, 1, {kNone, 1.5f}};
+  for (const std::string extension : {".png", ".npy"}) {
+    WriteDepthFile(depth, folder.Path("depth" + extension));
+    EXPECT_EQ(EncodeDepth(depth, extension), Contents(folder.Path("depth" + extension))) << extension;
+  }
+  EXPECT_EQ(EncodeDepth(depth, ".npy").substr(0, 6), "\x93NUMPY");
+  EXPECT_EQ(EncodeDepth(depth, ".png").substr(1, 3), "PNG");
+  EXPECT_THROW(EncodeDepth(depth, ".tiff"), Error);
+}
+
 }  // namespace
-}  // namespace urdfsnap::render
+}  // namespace urdfsnap::image

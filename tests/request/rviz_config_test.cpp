@@ -1,6 +1,6 @@
 // Reading .rviz files: every honoured property of a file laid out as RViz 1.14 saves it, defaults
 // for missing keys, RViz's limits, errors with file and line, and warnings (unit).
-#include "render/rviz_config.h"
+#include "request/rviz_config.h"
 
 #include <cmath>
 #include <fstream>
@@ -11,7 +11,7 @@
 
 #include "common/error.h"
 
-namespace urdfsnap::render {
+namespace urdfsnap::request {
 namespace {
 
 using ::testing::ElementsAre;
@@ -481,4 +481,4 @@ TEST_F(RvizConfigTest, PropertiesUrdfsnapCannotFollowAreWarnings) {
 }
 
 }  // namespace
-}  // namespace urdfsnap::render
+}  // namespace urdfsnap::request

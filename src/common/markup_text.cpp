@@ -1,7 +1,7 @@
-// EscapeMarkup for the HTML and JUnit reports.
-#include "snapshot/markup_text.h"
+// EscapeMarkup for the snapshot reports (HTML, JUnit XML) and the docs page.
+#include "common/markup_text.h"
 
-namespace urdfsnap::snapshot {
+namespace urdfsnap {
 
 std::string EscapeMarkup(std::string_view text) {
   std::string out;
@@ -20,4 +20,4 @@ std::string EscapeMarkup(std::string_view text) {
   return out;
 }
 
-}  // namespace urdfsnap::snapshot
+}  // namespace urdfsnap

@@ -1,0 +1,74 @@
+// Depth and label files: conversions to the stored units, one encoder per format, and the label
+// names beside the image.
+#include "image/depth_label_files.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "image/gray16_png.h"
+#include "image/npy_writer.h"
+
+namespace urdfsnap::image {
+
+namespace {
+
+std::string Extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
+
+std::string Bytes(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
+
+}  // namespace
+
+Gray16Image DepthMillimetres(const DepthImage& depth) {
+  Gray16Image mm{depth.width, depth.height, std::vector<std::uint16_t>(depth.metres.size())};
+  for (std::size_t i = 0; i < mm.values.size(); ++i) {
+    const float metres = depth.metres[i];
+    // a surface nearer than half a millimetre still reads as "robot here"
+    mm.values[i] = std::isnan(metres) ? 0 : static_cast<std::uint16_t>(std::clamp(std::lround(metres * 1000.0), 1L, 65535L));
+  }
+  return mm;
+}
+
+std::string EncodeDepth(const DepthImage& depth, const std::string& extension) {
+  if (extension == ".npy") return EncodeNpyFloat32(depth.width, depth.height, depth.metres);
+  if (extension == ".png") return Bytes(EncodeGray16Png(DepthMillimetres(depth)));
+  throw Error("a depth file ends in .png (16-bit millimetres) or .npy (float32 metres), not '" + extension + "'");
+}
+
+std::string EncodeLabels(const LabelImage& labels) {
+  return Bytes(EncodeGray16Png({labels.width, labels.height, labels.labels}));
+}
+
+void CheckDepthPath(const std::string& path, const std::string& option) {
+  const std::string extension = Extension(path);
+  if (extension != ".png" && extension != ".npy") {
+    throw Error(option + " '" + path + "': expected a .png (16-bit millimetres) or .npy (float32 metres) file");
+  }
+}
+
+void CheckLabelsPath(const std::string& path, const std::string& option) {
+  if (Extension(path) != ".png") throw Error(option + " '" + path + "': expected a .png file (16-bit labels)");
+}
+
+void WriteDepthFile(const DepthImage& depth, const std::string& path) {
+  CheckDepthPath(path, "depth file");
+  WriteFileAtomically(path, EncodeDepth(depth, Extension(path)));
+}
+
+std::string LabelNamesJson(const std::vector<std::string>& link_names) {
+  nlohmann::ordered_json names = nlohmann::ordered_json::object();
+  for (std::size_t i = 0; i < link_names.size(); ++i) names[std::to_string(i + 1)] = link_names[i];
+  return names.dump(2) + "\n";
+}
+
+void WriteLabelFiles(const LabelImage& labels, const std::vector<std::string>& link_names, const std::string& path) {
+  CheckLabelsPath(path, "labels file");
+  WriteFileAtomically(path, EncodeLabels(labels));
+  WriteFileAtomically(std::filesystem::path(path).replace_extension(".json").string(), LabelNamesJson(link_names));
+}
+
+}  // namespace urdfsnap::image
