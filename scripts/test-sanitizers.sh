@@ -8,6 +8,9 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build-asan
 "$root/scripts/deps.sh" --sanitizers
+# through ccache, as scripts/build.sh: the slowest build of CI compiles only what changed since a
+# build of the same tree on this machine (relative paths, so another clone hits the cache too)
+export CCACHE_BASEDIR=$root
 if [ ! -f "$build/CMakeCache.txt" ]; then
   (cd "$root" && cmake --preset sanitizers >/dev/null)   # CMakePresets.json
 fi
