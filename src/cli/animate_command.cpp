@@ -49,6 +49,7 @@ struct AnimateOptions {
   std::string topic = bag::kDefaultJointStateTopic;
   std::string fps = "30", speed, duration;  // checked as render checks its numbers
   bool turntable = false;
+  bool clamp = false, strict_joints = false;  // how the trajectory's joints meet the model's
   std::string depth, labels;  // optional depth and link-label sequences (patterns)
   std::string print_frame;    // a frame number: print its render options instead of writing
   bool quiet = false;
@@ -159,7 +160,8 @@ void Run(AnimateOptions& o) {
     model::NamedValues defaults;
     if (!r.joint_file.empty()) defaults = model::ReadJointFile(r.joint_file);
     defaults.insert(defaults.end(), r.joints.begin(), r.joints.end());
-    const motion::FramePoses poses(*robot, trajectory, defaults, !r.no_clamp, warnings);
+    const motion::FramePoses poses(*robot, trajectory, defaults,
+                                   {!r.no_clamp, o.clamp, o.strict_joints}, warnings);
     const animation::AnimationFrames frames(renderer, plan, poses,
                                             {settings.view, settings.size, fit, o.turntable}, warnings);
 
@@ -228,6 +230,13 @@ void AddAnimateCommand(CLI::App& app) {
                   "topic echo` prints), or a ROS 2 bag (.mcap file or rosbag2 folder)");
   cmd->add_option("--topic", o->topic,
                   "the sensor_msgs/msg/JointState topic of a bag (default /joint_states)");
+  cmd->add_flag("--clamp", o->clamp,
+                "clamp the trajectory's values to the joint limits as joint_state_publisher's "
+                "slider would (default: drawn as recorded, with one warning per joint that leaves "
+                "its limits)");
+  cmd->add_flag("--strict-joints", o->strict_joints,
+                "stop at a joint of the trajectory that the model does not have (default: such "
+                "joints are ignored with one warning, as robot_state_publisher ignores them)");
   cmd->add_option("--fps", o->fps, "frames per second (default 30); frame k shows time k/fps");
   cmd->add_option("--speed", o->speed,
                   "playback speed of the trajectory: 2 plays it twice as fast (default 1)");

@@ -429,12 +429,49 @@ TEST_F(AnimateTest, DepthAndLabelSequencesAreRendersOfTheSameFrames) {
   EXPECT_FALSE(fs::exists(Path("l/0.json")));
 }
 
-TEST_F(AnimateTest, JointsBeyondTheirLimitsAreClampedWithOneWarningPerJoint) {
-  // mrm's revolute joints reach about +-3.14 (link_01__link_02: +-1.57): two joints leave them in
-  // most frames
+TEST_F(AnimateTest, JointsBeyondTheirLimitsAreDrawnAsRecordedWithOneWarningPerJoint) {
   const std::string far = Write("far.csv", "time,base_link__link_01,link_01__link_02\n0,0,0\n1,9,-4\n2,-9,4\n");
   const Result result = RunUrdfsnap("animate " + mrm_ + " --trajectory " + far + " --fps 10" + kView + " -o " +
                                     Path("far/%02d.png"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("urdfsnap: warning: joint 'link_01__link_02': " + far +
+                               " takes it outside its limits"),
+            std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("drawn as recorded (--clamp clamps it)"), std::string::npos) << result.output;
+  // frame 10 (t = 1 s) shows the values themselves; --print-frame says so with --no-clamp
+  EXPECT_EQ(ReadBytes(Path("far/10.png")),
+            Render(mrm_ + kView + " --no-clamp -j base_link__link_01=9 -j link_01__link_02=-4"));
+  const Result words = RunUrdfsnap("animate " + mrm_ + " --trajectory " + far + " --fps 10 --print-frame 10" + kView);
+  ASSERT_EQ(words.status, 0) << words.output;
+  EXPECT_NE(words.output.find("--no-clamp"), std::string::npos) << words.output;
+}
+
+TEST_F(AnimateTest, JointsTheModelLacksAreIgnoredWithOneWarning) {
+  // a gripper on the same topic as the arm: robot_state_publisher ignores what the model lacks
+  const std::string extra = Write("extra.csv", "time,base_link__link_01,gripper_left,gripper_right\n0,0,0,0\n1,1,0.1,0.1\n");
+  const Result result = RunUrdfsnap("animate " + mrm_ + " --trajectory " + extra + " --fps 2" + kView + " -o " +
+                                    Path("extra/%d.png"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find(extra + ": joints robot 'mrm' does not have are ignored: 'gripper_left', "
+                                       "'gripper_right' (--strict-joints stops instead)"),
+            std::string::npos)
+      << result.output;
+  EXPECT_EQ(ReadBytes(Path("extra/2.png")), Render(mrm_ + kView + " -j base_link__link_01=1"));
+  const Result strict = RunUrdfsnap("animate " + mrm_ + " --trajectory " + extra + " --strict-joints --fps 2" +
+                                    kView + " -o " + Path("strict/%d.png"));
+  EXPECT_EQ(strict.status, 2);
+  EXPECT_NE(strict.output.find(extra + ":1: robot 'mrm' has no joint 'gripper_left'"), std::string::npos)
+      << strict.output;
+  EXPECT_FALSE(fs::exists(Path("strict")));
+}
+
+TEST_F(AnimateTest, ClampKeepsJointsWithinTheirLimitsWithOneWarningPerJoint) {
+  // mrm's revolute joints reach about +-3.14 (link_01__link_02: +-1.57): two joints leave them in
+  // most frames
+  const std::string far = Write("far.csv", "time,base_link__link_01,link_01__link_02\n0,0,0\n1,9,-4\n2,-9,4\n");
+  const Result result = RunUrdfsnap("animate " + mrm_ + " --trajectory " + far + " --clamp --fps 10" + kView +
+                                    " -o " + Path("far/%02d.png"));
   ASSERT_EQ(result.status, 0) << result.output;
   std::istringstream lines(result.output);
   std::vector<std::string> warnings;

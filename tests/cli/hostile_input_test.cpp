@@ -380,7 +380,7 @@ std::vector<HostileCase> Cases() {
       {"anim_times_not_increasing", plan("plan.csv", "time,elbow\n0,0\n1,0.5\n1,0.2\n"),
        kAnimate + "--trajectory {dir}/plan.csv", "plan.csv:4"},
       {"anim_unknown_joint", plan("plan.csv", "time,elbw\n0,0\n1,1\n"), kAnimate + "--trajectory {dir}/plan.csv",
-       "plan.csv:1: robot 'r' has no joint 'elbw'"},
+       "plan.csv:1: robot 'r' has no joint 'elbw'"},  // none of its joints: as --strict-joints
       {"anim_nan_position", plan("plan.csv", "time,elbow\n0,0\n1,nan\n"), kAnimate + "--trajectory {dir}/plan.csv",
        "plan.csv:3"},
       {"anim_infinite_time", plan("plan.csv", "time,elbow\n0,0\ninf,1\n"), kAnimate + "--trajectory {dir}/plan.csv",
