@@ -39,7 +39,7 @@ set(CPACK_DEBIAN_FILE_NAME "urdfsnap_${PROJECT_VERSION}_${urdfsnap_deb_arch}.deb
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "${URDFSNAP_PACKAGE_RUNTIME_DEPENDS}")
 # what find_package(urdfsnap) needs (cmake/urdfsnapConfig.cmake.in: keep the two in step)
-set(CPACK_DEBIAN_PACKAGE_SUGGESTS "liburdfdom-dev, libeigen3-dev, libtinyxml2-dev, libyaml-cpp-dev, nlohmann-json3-dev, zlib1g-dev, libpng-dev, libjpeg-dev, libassimp-dev, libfreetype-dev, libexpat1-dev, pkg-config, libzstd-dev, liblz4-dev, libavcodec-dev, libavformat-dev, libavfilter-dev, libswscale-dev, libavutil-dev, libwebp-dev")
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "liburdfdom-dev, libeigen3-dev, libtinyxml2-dev, libyaml-cpp-dev, nlohmann-json3-dev, zlib1g-dev, libpng-dev, libjpeg-dev, libassimp-dev, libfreetype-dev, libexpat1-dev, pkg-config, libzstd-dev, liblz4-dev, libsqlite3-dev, libavcodec-dev, libavformat-dev, libavfilter-dev, libswscale-dev, libavutil-dev, libwebp-dev")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_STRIP_FILES ON)
 include(CPack)

@@ -227,7 +227,8 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_option("--trajectory", o->trajectory,
                   "the motion: a CSV table (time,<joint>,...), a JointTrajectory, MoveIt "
                   "RobotTrajectory/DisplayTrajectory or JointState stream in YAML/JSON (as `ros2 "
-                  "topic echo` prints), or a ROS 2 bag (.mcap file or rosbag2 folder)");
+                  "topic echo` prints), or a ROS 2 bag (.mcap or .db3 file, or a rosbag2 folder: split, "
+                  "zstd-compressed, MCAP or SQLite storage)");
   cmd->add_option("--topic", o->topic,
                   "the sensor_msgs/msg/JointState topic of a bag (default /joint_states)");
   cmd->add_flag("--clamp", o->clamp,

@@ -15,6 +15,7 @@ namespace urdfsnap::motion {
 namespace {
 
 constexpr char kMcapMagic[] = "\x89MCAP0\r\n";
+constexpr char kSqliteHeader[] = "SQLite format 3";  // a rosbag2 .db3 file
 
 }  // namespace
 
@@ -24,7 +25,8 @@ TrajectoryFormat DetectTrajectoryFormat(const std::string& path, std::string_vie
   if (extension == ".yaml" || extension == ".yml" || extension == ".json") {
     return TrajectoryFormat::kRosMessages;
   }
-  if (extension == ".mcap" || head.starts_with(std::string_view(kMcapMagic, 8))) {
+  if (extension == ".mcap" || extension == ".db3" ||
+      head.starts_with(std::string_view(kMcapMagic, 8)) || head.starts_with(kSqliteHeader)) {
     return TrajectoryFormat::kBag;
   }
   const std::string_view first_line = head.substr(0, head.find('\n'));

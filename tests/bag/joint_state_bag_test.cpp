@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "bag/rosbag2_folder.h"
 #include "support/error_text.h"
 #include "test_bags.h"
 
@@ -53,7 +54,8 @@ TEST(JointStateBagTest, ReadsBothPublishersOfATopic) {
 }
 
 TEST(JointStateBagTest, ReadsTheFilesOfASplitBagFolderInTheirNumberedOrder) {
-  EXPECT_EQ(BagFiles(TestBag("split_bag")).back(), TestBag("split_bag/split_bag_10.mcap"));
+  EXPECT_EQ(FindBagFiles(TestBag("split_bag")).files.back().path,
+            TestBag("split_bag/split_bag_10.mcap"));
   std::vector<std::int64_t> stamps;
   ReadJointStates(TestBag("split_bag"), "/joint_states", [&](const BagJointState& state) {
     stamps.push_back(state.message.StampNanoseconds());
@@ -96,9 +98,9 @@ INSTANTIATE_TEST_SUITE_P(
       return name.substr(0, name.find('.')) + (info.index == 1 ? "_other_topic" : "");
     });
 
-TEST(JointStateBagTest, AFolderWithoutMcapFilesIsAnError) {
-  EXPECT_THAT(test::ErrorText([] { BagFiles(URDFSNAP_SOURCE_DIR "/tests/bag"); }),
-              HasSubstr("a folder without .mcap files"));
+TEST(JointStateBagTest, AFolderWithoutBagFilesIsAnError) {
+  EXPECT_THAT(test::ErrorText([] { FindBagFiles(URDFSNAP_SOURCE_DIR "/tests/bag"); }),
+              HasSubstr("a folder without metadata.yaml, .mcap or .db3 files: not a ROS 2 bag"));
 }
 
 }  // namespace

@@ -382,8 +382,10 @@ TEST_F(AnimateTest, BagsFromTheMcapWriterGiveTheRecordedMotion) {
     EXPECT_LE(difference.max, 64) << name;
     EXPECT_LE(difference.mean, 0.05) << name;
   }
-  // the other compressions, an unchunked bag and a rosbag2 folder of eleven files: the same frames
-  for (const std::string bag : {"joint_states_lz4.mcap", "joint_states_none.mcap", "joint_states_unchunked.mcap"}) {
+  // the other compressions, an unchunked bag, rosbag2 folders of SQLite and compressed MCAP files
+  // (split in two) and a rosbag2 folder of eleven files: the same frames
+  for (const std::string bag : {"joint_states_lz4.mcap", "joint_states_none.mcap", "joint_states_unchunked.mcap",
+                                "rosbag2_sqlite", "rosbag2_mcap_message_zstd"}) {
     Ok("animate " + arm + " --trajectory " + test::TestBag(bag) + " --fps 10" + view + " -o " + Path(bag + "/%02d.png"));
     for (int k = 0; k < 20; k += 6) {
       const std::string frame = "/" + std::string(k < 10 ? "0" : "") + std::to_string(k) + ".png";

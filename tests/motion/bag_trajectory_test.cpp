@@ -95,6 +95,9 @@ TEST(TrajectoryFileTest, DetectsTheFormatByExtensionThenContent) {
   EXPECT_EQ(DetectTrajectoryFormat("a.yml", ""), TrajectoryFormat::kRosMessages);
   EXPECT_EQ(DetectTrajectoryFormat("a.json", ""), TrajectoryFormat::kRosMessages);
   EXPECT_EQ(DetectTrajectoryFormat("a.mcap", ""), TrajectoryFormat::kBag);
+  EXPECT_EQ(DetectTrajectoryFormat("a.db3", ""), TrajectoryFormat::kBag);
+  EXPECT_EQ(DetectTrajectoryFormat("recording", std::string("SQLite format 3\0", 16)),
+            TrajectoryFormat::kBag);
   EXPECT_EQ(DetectTrajectoryFormat("recording", std::string("\x89MCAP0\r\n", 8)),
             TrajectoryFormat::kBag);
   EXPECT_EQ(DetectTrajectoryFormat("plan.txt", "time,a,b\n0,1,2\n"), TrajectoryFormat::kCsv);
