@@ -48,6 +48,7 @@ struct AnimateOptions {
   std::string trajectory;
   std::string topic = bag::kDefaultJointStateTopic;
   std::string fps = "30", speed, duration;  // checked as render checks its numbers
+  std::string start, end;                   // the part of the trajectory played
   bool turntable = false;
   bool clamp = false, strict_joints = false;  // how the trajectory's joints meet the model's
   std::string depth, labels;  // optional depth and link-label sequences (patterns)
@@ -68,14 +69,20 @@ motion::FramePlan Plan(const AnimateOptions& o, const motion::Trajectory& trajec
   const double fps = request::ParseFinite(o.fps, "--fps");
   const std::optional<double> speed = OptionalNumber(o.speed, "--speed");
   const std::optional<double> duration = OptionalNumber(o.duration, "--duration");
+  const std::optional<double> start = OptionalNumber(o.start, "--start");
+  const std::optional<double> end = OptionalNumber(o.end, "--end");
   if (o.trajectory.empty()) {
+    if (start || end) throw Error("animate: --start and --end choose part of a trajectory; there is no --trajectory");
     if (!o.turntable) {
       throw Error("animate: nothing moves: give --trajectory FILE, --turntable or both");
     }
     if (speed) throw Error("animate: --speed plays a trajectory faster or slower; there is no --trajectory");
     return motion::PlanStill(duration.value_or(kStillTurntableSeconds), fps);
   }
-  return motion::PlanFrames(trajectory, fps, speed.value_or(1), duration);
+  motion::TimeWindow window;
+  if (start) window.start = motion::TrajectorySeconds(trajectory, *start, "--start");
+  if (end) window.end = motion::TrajectorySeconds(trajectory, *end, "--end");
+  return motion::PlanFrames(trajectory, fps, speed.value_or(1), duration, window);
 }
 
 // The frame number --print-frame names, within the animation.
@@ -244,6 +251,11 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_flag("--turntable", o->turntable,
                 "turn the camera's yaw once around over the animation; without --trajectory the "
                 "still pose turns for --duration seconds");
+  cmd->add_option("--start", o->start,
+                  "play the trajectory from this time: seconds from its start, or a stamp "
+                  "(seconds since 1970, from 1e9 up) for messages timed by their stamps; frame k "
+                  "shows start + k * speed / fps");
+  cmd->add_option("--end", o->end, "play the trajectory up to this time (as --start)");
   cmd->add_option("--duration", o->duration,
                   "length in seconds (default: the trajectory's length / --speed, past its end the "
                   "last pose holds; a still turntable 6)");

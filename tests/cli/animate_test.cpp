@@ -400,6 +400,22 @@ TEST_F(AnimateTest, BagsFromTheMcapWriterGiveTheRecordedMotion) {
   EXPECT_EQ(ReadBytes(Path("split/05.png")), ReadBytes(Path("zstd/05.png")));
 }
 
+TEST_F(AnimateTest, StartAndEndPlayPartOfABagInSecondsOrStamps) {
+  const std::string arm = Write("arm.urdf", kBagArm);
+  const std::string view = " --size 160x120 --yaw -1.5708 --pitch 0.25 --distance 3.5 --focal 0,0,0.3";
+  const std::string bag = " --trajectory " + test::TestBag("joint_states_zstd.mcap") + " --fps 10" + view;
+  Ok("animate " + arm + bag + " -o " + Path("all/%02d.png"));
+  // from 0.5 s after the first stamp to the stamp 1 s after it: 6 frames, frame k at 0.5 + k / 10 s
+  Ok("animate " + arm + bag + " --start 0.5 --end 1700000001 -o " + Path("part/%02d.png"));
+  EXPECT_TRUE(fs::exists(Path("part/05.png")));
+  EXPECT_FALSE(fs::exists(Path("part/06.png")));
+  EXPECT_EQ(ReadBytes(Path("part/00.png")), ReadBytes(Path("all/05.png")));
+  EXPECT_EQ(ReadBytes(Path("part/05.png")), ReadBytes(Path("all/10.png")));
+  const Result late = RunUrdfsnap("animate " + arm + bag + " --start 5 -o " + Path("late/%02d.png"));
+  EXPECT_EQ(late.status, 2);
+  EXPECT_NE(late.output.find("--start 5 s is outside"), std::string::npos) << late.output;
+}
+
 TEST_F(AnimateTest, BagWithTwoPublishersMovesTheArmAndTheGripper) {
   const std::string arm = Write("arm.urdf", kBagArm);
   const std::string animation = arm + " --trajectory " + test::TestBag("two_publishers.mcap") + " --fps 10";

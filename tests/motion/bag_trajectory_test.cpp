@@ -29,6 +29,9 @@ TEST(BagTrajectoryTest, ReadsTheJointsOfEveryMessage) {
   }
   EXPECT_NEAR(trajectory.EndTime(), 1.99, 1e-9);
   EXPECT_THAT(elbow.named_at, HasSubstr("joint_states_zstd.mcap: message 1 on '/joint_states'"));
+  // time 0 is the first message's stamp, for --start and --end given as stamps
+  ASSERT_TRUE(trajectory.stamp_at_zero.has_value());
+  EXPECT_DOUBLE_EQ(*trajectory.stamp_at_zero, test::kBagStartNanoseconds * 1e-9);
 }
 
 TEST(BagTrajectoryTest, UnstampedMessagesAreTimedByLogTimeWithAWarning) {
