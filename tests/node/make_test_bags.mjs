@@ -419,6 +419,39 @@ const tfBags = {
 for (const [name, messages] of Object.entries(tfBags)) {
   writeFileSync(join(out, name), await writeBag({ channels: tfChannels, messages }));
 }
+// the rover sample (models/rover_description) driving a loop of 1 m radius anticlockwise in
+// `seconds` at `hz`: its wheels on /joint_states (each turning by the distance it rolls over its
+// 0.1 m radius), its head panning, odom -> base_link on /tf, its description on /robot_description
+const roverUrdf = readFileSync(join(dirname(fileURLToPath(import.meta.url)), "../../models/rover_description/urdf/rover.urdf"), "utf8");
+const stringWriter = new MessageWriter([ros2humble["std_msgs/String"]]);
+const kStringSchema = "string data\n";
+function roverLoop(seconds, hz) {
+  const radius = 1, track = 0.46, wheel = 0.1;
+  const channels = [
+    jointStateChannel,
+    { topic: "/tf", schema: tfSchema },
+    { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } },
+  ];
+  const start = { sec: kStartSec, nanosec: 0 };
+  const messages = [[2, nanos(start), stringWriter.writeMessage({ data: roverUrdf })]];
+  const count = Math.round(seconds * hz);
+  for (let i = 0; i <= count; ++i) {
+    const t = i / hz;
+    const heading = (2 * Math.PI * t) / seconds;
+    const nanosec = Math.round((t % 1) * 1e9);
+    const stamp = { sec: kStartSec + Math.floor(t), nanosec: nanosec >= 1e9 ? 0 : nanosec };
+    const left = (heading * (radius - track / 2)) / wheel;
+    const right = (heading * (radius + track / 2)) / wheel;
+    const names = ["front_left_wheel_joint", "rear_left_wheel_joint", "front_right_wheel_joint", "rear_right_wheel_joint", "head_pan_joint"];
+    const state = { header: { stamp, frame_id: "" }, name: names, position: [left, left, right, right, Math.sin(heading * 2)], velocity: [], effort: [] };
+    const base = transform("odom", "base_link", stamp, [radius * Math.sin(heading), radius * (1 - Math.cos(heading)), 0], heading);
+    messages.push([0, nanos(stamp), jointStateWriter.writeMessage(state)]);
+    messages.push([1, nanos(stamp), tfWriter.writeMessage({ transforms: [base] })]);
+  }
+  return writeBag({ channels, messages, chunkSize: 1 << 20 });
+}
+writeFileSync(join(out, "rover_loop.mcap"), await roverLoop(8, 20));
+if (large) writeFileSync(join(out, "rover_loop_60s.mcap"), await roverLoop(60, 100));
 addDb3(join(out, "tf_drive.db3"), tfMessages(), {
   topics: [
     [1, "/tf", "tf2_msgs/msg/TFMessage", "cdr"],

@@ -37,6 +37,18 @@ TEST(BagTransformsTest, BothStoragesGiveTheRecordedTree) {
   }
 }
 
+TEST(BagTransformsTest, TheRoverSampleDrivesItsLoop) {
+  // rover_loop.mcap: a circle of 1 m radius about (0, 1) in 8 s, starting at the origin heading +x
+  const TfBuffer buffer = ReadBagTransforms(test::TestBag("rover_loop.mcap"));
+  const Lookup half = *buffer.Find("odom", "base_link", kStart + 4'000'000'000);
+  EXPECT_TRUE(half.X_TS.translation().isApprox(Eigen::Vector3d(0, 2, 0), 1e-9));
+  EXPECT_TRUE(half.X_TS.linear().col(0).isApprox(Eigen::Vector3d(-1, 0, 0), 1e-9));
+  // between two samples (every 50 ms) the base stays on the circle to within the chord's sagitta
+  const Lookup between = *buffer.Find("odom", "base_link", kStart + 1'025'000'000);
+  EXPECT_NEAR((between.X_TS.translation() - Eigen::Vector3d(0, 1, 0)).norm(), 1, 1e-3);
+  EXPECT_FALSE(between.extrapolated);
+}
+
 TEST(BagTransformsTest, ABagWithoutTfHasAnEmptyTree) {
   EXPECT_TRUE(ReadBagTransforms(test::TestBag("split_bag")).frames().empty());
 }
