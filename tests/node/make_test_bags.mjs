@@ -31,21 +31,24 @@ await zstd.isLoaded;
 const kStartSec = 1700000000;
 const kJoints = ["shoulder", "elbow", "wrist"];
 
-// the schema text rosbag2 stores for sensor_msgs/msg/JointState (ros2msg, dependencies appended)
+// the schema texts rosbag2 stores (ros2msg: the type's .msg, then each type it uses after a line
+// of '=' and "MSG: pkg/Name")
+const kSeparator = "=".repeat(80);
+const kHeaderSections = `${kSeparator}
+MSG: std_msgs/Header
+builtin_interfaces/Time stamp
+string frame_id
+${kSeparator}
+MSG: builtin_interfaces/Time
+int32 sec
+uint32 nanosec
+`;
 const kJointStateSchema = `std_msgs/Header header
 string[] name
 float64[] position
 float64[] velocity
 float64[] effort
-================================================================================
-MSG: std_msgs/Header
-builtin_interfaces/Time stamp
-string frame_id
-================================================================================
-MSG: builtin_interfaces/Time
-int32 sec
-uint32 nanosec
-`;
+${kHeaderSections}`;
 
 const jointStateWriter = new MessageWriter([
   ros2humble["sensor_msgs/JointState"],
@@ -353,29 +356,21 @@ writeFileSync(join(out, "bad_not_sqlite.db3"), "SQLite format 3\0but nothing els
 // yaw = 0.1 i rad, i = 0 .. 10) with its laser on /tf_static (base_link -> laser at 0.1, 0, 0.3),
 // as MCAP with definitions and as SQLite without; and broken trees
 const kTfMessageSchema = `geometry_msgs/TransformStamped[] transforms
-================================================================================
+${kSeparator}
 MSG: geometry_msgs/TransformStamped
 std_msgs/Header header
 string child_frame_id
 Transform transform
-================================================================================
-MSG: std_msgs/Header
-builtin_interfaces/Time stamp
-string frame_id
-================================================================================
-MSG: builtin_interfaces/Time
-int32 sec
-uint32 nanosec
-================================================================================
+${kHeaderSections}${kSeparator}
 MSG: geometry_msgs/Transform
 Vector3 translation
 Quaternion rotation
-================================================================================
+${kSeparator}
 MSG: geometry_msgs/Vector3
 float64 x
 float64 y
 float64 z
-================================================================================
+${kSeparator}
 MSG: geometry_msgs/Quaternion
 float64 x 0
 float64 y 0

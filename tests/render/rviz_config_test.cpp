@@ -503,14 +503,14 @@ Visualization Manager:
       Color: 160; 160; 164
       Enabled: true
       Line Style:
-        Line Width: 0.029999999329447746
+        Line Width: 0.05000000074505806
         Value: Lines
-      Name: Grid
+      Name: Floor
       Normal Cell Count: 0
       Offset:
         X: 0
         Y: 0
-        Z: 0
+        Z: 0.009999999776482582
       Plane: XY
       Plane Cell Count: 20
       Reference Frame: <Fixed Frame>
@@ -531,10 +531,11 @@ Visualization Manager:
           Enabled: true
           Links:
             All Links Enabled: true
-            Expand Joint Details: false
-            Expand Link Details: false
-            Expand Tree: false
-            Link Tree Style: Links in Alphabetic Order
+            base_link:
+              Alpha: 1
+              Show Axes: false
+              Show Trail: false
+              Value: true
           Name: RobotModel
           TF Prefix: ""
           Update Interval: 0
@@ -613,6 +614,7 @@ TEST_F(RvizConfigTest, ReadsRviz2ConfigsAsRviz1Ones) {
   EXPECT_EQ(scene.grid.cell_size, 0.25);
   EXPECT_EQ(scene.grid.plane_cell_count, 20);
   EXPECT_EQ(scene.grid.alpha, 0.5f);
+  EXPECT_NEAR(scene.grid.offset.z(), 0.01, 1e-9);
   EXPECT_FALSE(scene.show_visual);  // in an rviz_common/Group
   EXPECT_TRUE(scene.show_collision);
   EXPECT_EQ(scene.alpha, 0.75);
