@@ -1,7 +1,8 @@
-// `urdfsnap animate`: MODEL + a trajectory (CSV, ROS messages in YAML/JSON, an MCAP bag) and/or a
-// turntable → MP4, WebM, GIF, animated WebP or a PNG sequence, with depth and label sequences from
-// the same frames. Every output appears only when complete; --print-frame K instead prints the
-// `render` options that make frame K.
+// `urdfsnap animate`: MODEL + a trajectory (CSV, ROS messages in YAML/JSON, a ROS 2 bag), or a
+// bag alone as MODEL (its robot description and motion), and/or a turntable → MP4, WebM, GIF,
+// animated WebP or a PNG sequence, with depth and label sequences from the same frames. Every
+// output appears only when complete; --print-frame K instead prints the `render` options that make
+// frame K.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,8 @@
 #include "animation/render_animation.h"
 #include "animation/sequence_outputs.h"
 #include "bag/joint_state_bag.h"
+#include "bag/robot_description.h"
+#include "cli/bag_model.h"
 #include "cli/command.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
@@ -47,6 +50,7 @@ struct AnimateOptions {
   std::string output;
   std::string trajectory;
   std::string topic = bag::kDefaultJointStateTopic;
+  std::string description_topic = bag::kDefaultDescriptionTopic;  // MODEL given as a bag
   std::string fps = "30", speed, duration;  // checked as render checks its numbers
   std::string start, end;                   // the part of the trajectory played
   bool turntable = false;
@@ -133,7 +137,14 @@ void Run(AnimateOptions& o) {
   if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
   request::RenderRequest& r = o.render.request;
+  // MODEL given as a bag: its motion and the robot description it recorded
+  std::optional<BagModel> bag_model;
+  if (o.trajectory.empty() && motion::IsBag(o.model.path)) {
+    o.trajectory = o.model.path;
+    bag_model.emplace(o.model.path, o.description_topic);
+  }
   r.model = o.model.ToRequest();
+  if (bag_model) r.model.path = bag_model->path();
   o.render.ParseJointWords();
   if (o.output.empty() && o.print_frame.empty()) {
     throw Error("animate: give the output with -o FILE: .mp4, .webm, .gif, .webp or a pattern such as "
@@ -212,6 +223,10 @@ void Run(AnimateOptions& o) {
     if (label_names) label_names->Commit();
     folders.Keep();
     PrintNewWarnings(warnings, later);
+  } catch (const Error& e) {
+    PrintWarningsBeforeError(warnings);
+    if (bag_model) throw Error(bag_model->Located(e.what()));
+    throw;
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -238,6 +253,10 @@ void AddAnimateCommand(CLI::App& app) {
                   "zstd-compressed, MCAP or SQLite storage)");
   cmd->add_option("--topic", o->topic,
                   "the sensor_msgs/msg/JointState topic of a bag (default /joint_states)");
+  cmd->add_option("--description-topic", o->description_topic,
+                  "when MODEL is a bag (then also the trajectory): the std_msgs/msg/String topic "
+                  "whose first message is the robot description, as RViz's RobotModel display "
+                  "reads it (default /robot_description)");
   cmd->add_flag("--clamp", o->clamp,
                 "clamp the trajectory's values to the joint limits as joint_state_publisher's "
                 "slider would (default: drawn as recorded, with one warning per joint that leaves "

@@ -44,6 +44,17 @@ Trajectory ParseTrajectoryText(std::string_view text, const std::string& path) {
   return ParseRosMessageTrajectory(text, path);
 }
 
+bool IsBag(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return true;
+  if (!std::filesystem::is_regular_file(path, error)) return false;
+  char head[16];
+  std::ifstream file(path, std::ios::binary);
+  file.read(head, sizeof head);
+  return DetectTrajectoryFormat(path, std::string_view(head, static_cast<std::size_t>(file.gcount()))) ==
+         TrajectoryFormat::kBag;
+}
+
 Trajectory ReadTrajectory(const std::string& path, const TrajectoryOptions& options,
                           Warnings& warnings) {
   std::error_code error;

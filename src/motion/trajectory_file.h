@@ -25,6 +25,10 @@ struct TrajectoryOptions {
 // or SQLite's header makes a bag, a first line with commas and no colon a CSV table, anything else YAML or JSON.
 TrajectoryFormat DetectTrajectoryFormat(const std::string& path, std::string_view head);
 
+// Whether `path` is a bag: a rosbag2 folder, or a file DetectTrajectoryFormat takes for one (by
+// its extension or first bytes). False for a path that cannot be read.
+bool IsBag(const std::string& path);
+
 // Reads the trajectory at `path` (a file, or a rosbag2 folder). Throws Error naming the file and
 // the line (or the bag message) for anything wrong, including an empty trajectory; text files are
 // read up to common/file_reading's limit.

@@ -416,6 +416,30 @@ TEST_F(AnimateTest, StartAndEndPlayPartOfABagInSecondsOrStamps) {
   EXPECT_NE(late.output.find("--start 5 s is outside"), std::string::npos) << late.output;
 }
 
+TEST_F(AnimateTest, ABagAloneIsTheModelAndTheMotion) {
+  // rover_loop.mcap recorded the rover's description on /robot_description: no MODEL needed
+  const std::string rover = test::TestBag("rover_loop.mcap") + " --fps 2 --end 1 --size 160x120 --yaw 0.8 "
+                            "--pitch 0.5 --distance 2.5 --focal 0,0,0.2";
+  Ok("animate " + rover + " -o " + Path("rover/%d.png"));
+  ASSERT_TRUE(fs::exists(Path("rover/2.png")));
+  // frame 2 (t = 1 s) is the sample model with the wheels and head as recorded then
+  EXPECT_EQ(ReadBytes(Path("rover/2.png")),
+            Render((kSource / "models/rover_description/urdf/rover.urdf").string() + " --size 160x120 " +
+                   FrameWords(rover, 2)));
+  // a bag without a description, and one whose description is no URDF
+  const Result none = RunUrdfsnap("animate " + test::TestBag("joint_states_zstd.mcap") + " -o " + Path("none.gif"));
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.output.find("joint_states_zstd.mcap: no robot description: no message on '/robot_description'; "
+                             "its topics are: /camera/image_raw"),
+            std::string::npos)
+      << none.output;
+  const Result junk = RunUrdfsnap("animate " + test::TestBag("description_junk.mcap") + " -o " + Path("junk.gif"));
+  EXPECT_EQ(junk.status, 2);
+  EXPECT_NE(junk.output.find("description_junk.mcap: '/robot_description'"), std::string::npos) << junk.output;
+  EXPECT_EQ(junk.output.find("robot_description.urdf"), std::string::npos) << junk.output;
+  EXPECT_FALSE(fs::exists(Path("none.gif")) || fs::exists(Path("junk.gif")));
+}
+
 TEST_F(AnimateTest, BagWithTwoPublishersMovesTheArmAndTheGripper) {
   const std::string arm = Write("arm.urdf", kBagArm);
   const std::string animation = arm + " --trajectory " + test::TestBag("two_publishers.mcap") + " --fps 10";

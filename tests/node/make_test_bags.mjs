@@ -446,6 +446,11 @@ function roverLoop(seconds, hz) {
   return writeBag({ channels, messages, chunkSize: 1 << 20 });
 }
 writeFileSync(join(out, "rover_loop.mcap"), await roverLoop(8, 20));
+// a description that is no URDF
+writeFileSync(join(out, "description_junk.mcap"), await writeBag({
+  channels: [jointStateChannel, { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } }],
+  messages: [[1, 5n, stringWriter.writeMessage({ data: "<robot name='x'><link name='a'/><joint" })], ...robotMessages(3).filter(([c]) => c === 0)],
+}));
 if (large) writeFileSync(join(out, "rover_loop_60s.mcap"), await roverLoop(60, 100));
 addDb3(join(out, "tf_drive.db3"), tfMessages(), {
   topics: [
