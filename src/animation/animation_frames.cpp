@@ -7,12 +7,14 @@ namespace urdfsnap::animation {
 
 AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motion::FramePlan& plan,
                                  const motion::FramePoses& poses, const CameraRequest& camera,
-                                 Warnings& warnings)
-    : plan_(plan), poses_(poses), size_(camera.size), turntable_(camera.turntable), view_(camera.view) {
+                                 Warnings& warnings, const motion::RootPoses* root)
+    : plan_(plan), poses_(poses), root_(root), size_(camera.size), turntable_(camera.turntable),
+      view_(camera.view) {
   // motion::kMaxFrames keeps the count within FitView's int
   const int count = static_cast<int>(plan_.frame_count);
   const auto pose = [&](int k) { return Positions(k, warnings); };
-  view_ = robot.FitView(camera.fit, camera.view, size_, count, pose);
+  const auto place = [&](int k) { return Place(k, warnings); };
+  view_ = robot.FitView(camera.fit, camera.view, size_, count, pose, place);
   if (!turntable_ || camera.fit == render::Fit::kNone) return;
 
   // one focal point for every side (the centre of all frames' bounds, or the given one); the
@@ -20,8 +22,10 @@ AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motio
   double distance = 0;
   for (int k = 0; k < count; ++k) {
     const std::vector<double> positions = Positions(k, warnings);
+    const Eigen::Isometry3d X_SF = Place(k, warnings);
     scene::OrbitView side = View(k);
-    side = robot.FitView(render::Fit::kKeepFocal, side, size_, 1, [&](int) { return positions; });
+    side = robot.FitView(render::Fit::kKeepFocal, side, size_, 1, [&](int) { return positions; },
+                         [&](int) { return X_SF; });
     distance = std::max(distance, side.distance);
   }
   if (distance > 0) view_.distance = distance;
@@ -29,6 +33,10 @@ AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motio
 
 std::vector<double> AnimationFrames::Positions(std::int64_t k, Warnings& warnings) const {
   return poses_.At(plan_.TrajectoryTime(k), warnings);
+}
+
+Eigen::Isometry3d AnimationFrames::Place(std::int64_t k, Warnings& warnings) const {
+  return root_ ? root_->At(plan_.TrajectoryTime(k), warnings) : Eigen::Isometry3d::Identity();
 }
 
 scene::OrbitView AnimationFrames::View(std::int64_t k) const {

@@ -30,11 +30,13 @@
 #include "model/joint_values.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
+#include "motion/root_poses.h"
 #include "motion/trajectory_file.h"
 #include "render/frame_files.h"
 #include "request/render_session.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
+#include "tf/bag_transforms.h"
 #include "video/frame_encoder.h"
 #include "video/frame_files.h"
 
@@ -162,10 +164,18 @@ void Run(AnimateOptions& o) {
     unfitted.fit = false;
     render::RenderSettings settings;
     std::shared_ptr<const model::Robot> robot;
+    std::string tf_fixed_frame;
     {
       request::RenderSession session;
-      settings = session.ResolveSettings(unfitted, label, warnings);
       robot = session.LoadRobot(r.model, warnings);
+      // a fixed frame outside the robot (odom, map): the bag's TF places the robot in it, as
+      // RViz's Fixed Frame does; the scene is drawn from the root link, then placed
+      if (!r.fixed_frame.empty() && robot->FindLink(r.fixed_frame) < 0 && !o.trajectory.empty() &&
+          motion::IsBag(o.trajectory)) {
+        tf_fixed_frame = r.fixed_frame;
+        unfitted.fixed_frame.clear();
+      }
+      settings = session.ResolveSettings(unfitted, label, warnings);
     }
     const render::Fit fit =
         !r.fit ? render::Fit::kNone : r.focal.empty() ? render::Fit::kFit : render::Fit::kKeepFocal;
@@ -180,8 +190,18 @@ void Run(AnimateOptions& o) {
     defaults.insert(defaults.end(), r.joints.begin(), r.joints.end());
     const motion::FramePoses poses(*robot, trajectory, defaults,
                                    {!r.no_clamp, o.clamp, o.strict_joints}, warnings);
+    std::optional<motion::RootPoses> root;
+    if (!tf_fixed_frame.empty()) {
+      if (!o.print_frame.empty()) {
+        throw Error("--print-frame: the frames are placed by TF in '" + tf_fixed_frame +
+                    "', which `render` cannot do");
+      }
+      root.emplace(tf::ReadBagTransforms(o.trajectory), tf_fixed_frame, robot->links().front().name,
+                   trajectory.stamp_at_zero.value_or(0), o.trajectory);
+    }
     const animation::AnimationFrames frames(renderer, plan, poses,
-                                            {settings.view, settings.size, fit, o.turntable}, warnings);
+                                            {settings.view, settings.size, fit, o.turntable}, warnings,
+                                            root ? &*root : nullptr);
 
     if (!o.print_frame.empty()) {
       const std::int64_t k = FrameNumber(o.print_frame, plan);

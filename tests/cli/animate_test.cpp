@@ -85,6 +85,26 @@ int RobotPixels(const image::Image& frame) {
   return count;
 }
 
+// The centre (x, y in pixels) of the pixels RobotPixels counts.
+std::pair<double, double> RobotCentre(const image::Image& frame) {
+  double x = 0, y = 0;
+  int count = 0;
+  for (std::size_t p = 0; p + 2 < frame.rgb.size(); p += 3) {
+    const int r = frame.rgb[p], g = frame.rgb[p + 1], b = frame.rgb[p + 2];
+    if (std::max({r, g, b}) - std::min({r, g, b}) <= 40) continue;
+    const std::size_t pixel = p / 3, width = static_cast<std::size_t>(frame.width);
+    x += static_cast<double>(pixel % width);
+    y += static_cast<double>(pixel / width);
+    ++count;
+  }
+  return count > 0 ? std::pair(x / count, y / count) : std::pair(0.0, 0.0);
+}
+
+// How far apart two centres are, in pixels.
+double Apart(std::pair<double, double> a, std::pair<double, double> b) {
+  return std::hypot(a.first - b.first, a.second - b.second);
+}
+
 class AnimateTest : public CliTest {
  protected:
   void SetUp() override {
@@ -438,6 +458,27 @@ TEST_F(AnimateTest, ABagAloneIsTheModelAndTheMotion) {
   EXPECT_NE(junk.output.find("description_junk.mcap: '/robot_description'"), std::string::npos) << junk.output;
   EXPECT_EQ(junk.output.find("robot_description.urdf"), std::string::npos) << junk.output;
   EXPECT_FALSE(fs::exists(Path("none.gif")) || fs::exists(Path("junk.gif")));
+}
+
+TEST_F(AnimateTest, AFixedFrameOutsideTheRobotPlacesItWhereTfSays) {
+  // rover_loop.mcap drives a loop of 1 m radius about (0, 1) in 8 s; seen from above its centre
+  const std::string rover = test::TestBag("rover_loop.mcap") +
+                            " --fps 1 --size 160x120 --no-grid --yaw 0 --pitch 1.5 --distance 6 --focal 0,1,0";
+  Ok("animate " + rover + " --fixed-frame odom -o " + Path("odom/%d.png"));
+  Ok("animate " + rover + " -o " + Path("base/%d.png"));
+  // at 0 s odom and base_link coincide
+  EXPECT_EQ(ReadBytes(Path("odom/0.png")), ReadBytes(Path("base/0.png")));
+  // at 4 s the rover is across the loop, 2 m (about 48 pixels) from where it started; in its own
+  // frame it stays where it was
+  const auto centre = [&](const std::string& frame) { return RobotCentre(image::ReadPng(Path(frame))); };
+  EXPECT_GT(Apart(centre("odom/4.png"), centre("odom/0.png")), 35);
+  EXPECT_LT(Apart(centre("base/4.png"), centre("base/0.png")), 5);
+  EXPECT_GT(RobotPixels(image::ReadPng(Path("odom/4.png"))), 100);
+  // a frame TF does not connect to the robot
+  const Result other = RunUrdfsnap("animate " + rover + " --fixed-frame map -o " + Path("map/%d.png"));
+  EXPECT_EQ(other.status, 2);
+  EXPECT_NE(other.output.find("--fixed-frame 'map': neither a link of the robot nor a frame"), std::string::npos)
+      << other.output;
 }
 
 TEST_F(AnimateTest, BagWithTwoPublishersMovesTheArmAndTheGripper) {
