@@ -122,6 +122,7 @@ const std::vector<CommandOption>& Options() {
         {"animate", "--start", Kind::kNumber, "MRM -o OUT.gif --turntable --start {v}"},
         {"animate", "--end", Kind::kNumber, "MRM -o OUT.gif --turntable --end {v}"},
         {"animate", "--clamp", Kind::kFlag},
+        {"animate", "--description-topic", Kind::kText},
         {"animate", "--strict-joints", Kind::kFlag},
         {"animate", "--print-frame", Kind::kNumber, "MRM -o OUT.gif --turntable --print-frame {v}"},
         {"animate", "--turntable", Kind::kFlag},
