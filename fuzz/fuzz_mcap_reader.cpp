@@ -19,9 +19,10 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace urdfsnap;
   if (size > 0 && data[0] != 0x89) {
+    static const bag::MessageSchema schema = *bag::MessageSchema::Shipped(bag::kJointStateType);
     bag::JointStateMessage message;
     try {
-      bag::DecodeJointState({data + 1, size - 1}, message);
+      bag::DecodeJointState(schema, {data + 1, size - 1}, message);
     } catch (const bag::CdrError&) {
     }
     return 0;

@@ -1,6 +1,7 @@
 // Fuzz target: trajectory text as CSV, YAML or JSON (the first byte picks the file name's
-// extension), then, if it parses, its frame plan and a few poses on a small robot (interpolation
-// and clamping with whatever numbers came in; fuzz_robot.h). Only urdfsnap::Error may come out.
+// extension, and its bits the joint rules: clamping, strict joints), then, if it parses, its frame
+// plan and a few poses on a small robot (interpolation, clamping and unknown joints with whatever
+// came in; fuzz_robot.h). Only urdfsnap::Error may come out.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -23,8 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     const motion::Trajectory trajectory = motion::ParseTrajectoryText(text, path);
     Warnings warnings;
-    const motion::FramePoses poses(robot, trajectory, {{"slide", 0.3}}, (data[0] & 4) != 0,
-                                   warnings);
+    const motion::JointRules rules{(data[0] & 4) != 0, (data[0] & 8) != 0, (data[0] & 16) != 0};
+    const motion::FramePoses poses(robot, trajectory, {{"slide", 0.3}}, rules, warnings);
     const motion::FramePlan plan = motion::PlanFrames(trajectory, 7, 1.5);
     for (std::int64_t k = 0; k < plan.frame_count; k += 1 + plan.frame_count / 5) {
       poses.At(plan.TrajectoryTime(k), warnings);

@@ -21,6 +21,10 @@ for package in python3-numpy python3-pil; do
 done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# the mobile sample driving its loop, from its test bag alone (description, wheels and TF inside)
+"$root/scripts/make-test-bags.sh" "$work/bags" >/dev/null
+"$snap" animate "$work/bags/rover_loop.mcap" --fixed-frame odom --fps 10 --size 320x240 --yaw 0.6 \
+  --pitch 0.7 --distance 4.5 --focal 0,1,0 --quiet -o "$root/docs/images/rover_loop.gif"
 "$snap" render "$mrm" -o "$work/colour.png" --size 320x240 --depth "$work/depth.png" --labels "$work/labels.png" \
   -j base_link__link_01=0.5 -j link_01__link_02=-0.8 -j link_02__link_03=1.2 -j link_03__link_04=0.3 \
   --yaw 0.6 --pitch 0.35 --fit 2>/dev/null

@@ -9,6 +9,7 @@
 #include "common/warnings.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
+#include "motion/root_poses.h"
 #include "render/render_settings.h"
 #include "render/robot_renderer.h"
 #include "scene/orbit_view.h"
@@ -31,8 +32,10 @@ class AnimationFrames {
   // frames each frame from its own yaw. Poses are made as they are needed and not kept, so fitting
   // takes time in proportion to the frame count and no memory for it (two poses per frame, four
   // for a fitted turntable). Warnings of the poses (see FramePoses::At) go to `warnings`.
+  // `root`, when given (kept by reference), places the robot in a fixed frame outside it per frame.
   AnimationFrames(const render::RobotRenderer& robot, const motion::FramePlan& plan,
-                  const motion::FramePoses& poses, const CameraRequest& camera, Warnings& warnings);
+                  const motion::FramePoses& poses, const CameraRequest& camera, Warnings& warnings,
+                  const motion::RootPoses* root = nullptr);
 
   std::int64_t count() const { return plan_.frame_count; }
   const motion::FramePlan& plan() const { return plan_; }
@@ -41,12 +44,15 @@ class AnimationFrames {
   // The joint positions of frame `k` (one per robot joint, radians or metres, as
   // model::ResolveJointPositions gives them).
   std::vector<double> Positions(std::int64_t k, Warnings& warnings) const;
+  // Where frame `k` places the robot's fixed link in the scene (identity without `root`).
+  Eigen::Isometry3d Place(std::int64_t k, Warnings& warnings) const;
   // The camera of frame `k`.
   scene::OrbitView View(std::int64_t k) const;
 
  private:
   const motion::FramePlan& plan_;
   const motion::FramePoses& poses_;
+  const motion::RootPoses* root_;
   render::ImageSize size_;
   bool turntable_;
   scene::OrbitView view_;  // frame 0's, fitted

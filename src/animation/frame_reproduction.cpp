@@ -36,8 +36,15 @@ std::vector<std::string> RenderWords(const model::Robot& robot, const std::vecto
           FormatNumber(view.focal.z())};
   const auto& joints = robot.joints();
   model::NamedValues values;
+  bool outside_limits = false;  // a trajectory drawn as recorded: render must not clamp it
   for (std::size_t i = 0; i < joints.size(); ++i) {
     if (joints[i].IsMovable() && joints[i].mimic_leader < 0) values.emplace_back(joints[i].name, positions[i]);
+    outside_limits = outside_limits || (joints[i].has_limits && (positions[i] < joints[i].lower ||
+                                                                 positions[i] > joints[i].upper));
+  }
+  if (clamp && outside_limits) {
+    words.push_back("--no-clamp");
+    clamp = false;
   }
   // mimic joints whose position is not their leader's rule (the trajectory named them)
   Warnings ignored;

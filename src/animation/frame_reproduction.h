@@ -16,7 +16,9 @@ namespace urdfsnap::animation {
 // --focal=X,Y,Z -j NAME=VALUE ...", numbers in their shortest round-trip text so that render reads
 // back exactly the same values. Every movable joint that is no mimic is named; a mimic joint only
 // where its position is not what its leader makes of it (a trajectory that names it). Words are
-// quoted for a POSIX shell where they need it. `clamp` is the animation's (false for --no-clamp).
+// quoted for a POSIX shell where they need it. `clamp` is whether render will clamp -j values
+// (false when the animation's options hold --no-clamp); when it would and a position is outside
+// its limits (a trajectory drawn as recorded), the words add --no-clamp.
 std::vector<std::string> RenderWords(const model::Robot& robot, const std::vector<double>& positions,
                                      const scene::OrbitView& view, bool clamp);
 

@@ -30,7 +30,14 @@ std::string RepresentationName(std::uint16_t id) {
 
 template <typename T>
 T ByteSwapped(T value) {
-  if constexpr (sizeof(T) == 4) {
+  if constexpr (sizeof(T) == 1) {
+    return value;
+  } else if constexpr (sizeof(T) == 2) {
+    std::uint16_t bits;
+    std::memcpy(&bits, &value, 2);
+    bits = __builtin_bswap16(bits);
+    std::memcpy(&value, &bits, 2);
+  } else if constexpr (sizeof(T) == 4) {
     std::uint32_t bits;
     std::memcpy(&bits, &value, 4);
     bits = __builtin_bswap32(bits);
@@ -101,15 +108,51 @@ std::string_view CdrReader::String() {
   return {bytes, length - 1};
 }
 
-std::uint32_t CdrReader::SequenceLength(std::size_t min_element_bytes) {
-  const std::uint32_t count = Primitive<std::uint32_t>("a sequence's length");
+float CdrReader::Float32() { return Primitive<float>("a float32"); }
+
+std::uint64_t CdrReader::Unsigned(std::size_t bytes) {
+  switch (bytes) {
+    case 1: return Primitive<std::uint8_t>("a uint8");
+    case 2: return Primitive<std::uint16_t>("a uint16");
+    case 4: return Primitive<std::uint32_t>("a uint32");
+    default: return Primitive<std::uint64_t>("a uint64");
+  }
+}
+
+std::int64_t CdrReader::Signed(std::size_t bytes) {
+  switch (bytes) {
+    case 1: return Primitive<std::int8_t>("an int8");
+    case 2: return Primitive<std::int16_t>("an int16");
+    case 4: return Primitive<std::int32_t>("an int32");
+    default: return Primitive<std::int64_t>("an int64");
+  }
+}
+
+void CdrReader::SkipWideString() {
+  const std::uint32_t count = Primitive<std::uint32_t>("a wstring's length");
+  CheckFits(count, 4, "a wstring");
+  Take(std::size_t{count} * 4, "a wstring");
+}
+
+void CdrReader::CheckFits(std::uint32_t count, std::size_t min_element_bytes,
+                          const char* what) const {
   const std::size_t left = offset_ <= data_.size() ? data_.size() - offset_ : 0;
   if (min_element_bytes > 0 && count > left / min_element_bytes) {
-    throw CdrError("a sequence of " + std::to_string(count) + " elements at byte " +
+    throw CdrError(std::string(what) + " of " + std::to_string(count) + " elements at byte " +
                    std::to_string(offset_) + ", more than the " + std::to_string(left) +
                    " bytes left can hold");
   }
+}
+
+std::uint32_t CdrReader::SequenceLength(std::size_t min_element_bytes) {
+  const std::uint32_t count = Primitive<std::uint32_t>("a sequence's length");
+  CheckFits(count, min_element_bytes, "a sequence");
   return count;
+}
+
+std::uint32_t CdrReader::FixedLength(std::uint32_t length, std::size_t min_element_bytes) {
+  CheckFits(length, min_element_bytes, "a fixed array");
+  return length;
 }
 
 }  // namespace urdfsnap::bag

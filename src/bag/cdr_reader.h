@@ -27,16 +27,25 @@ class CdrReader {
   std::int32_t Int32();
   std::uint32_t Uint32();
   double Float64();
+  float Float32();
+  // An unsigned or signed integer of 1, 2, 4 or 8 bytes.
+  std::uint64_t Unsigned(std::size_t bytes);
+  std::int64_t Signed(std::size_t bytes);
+  // A wstring (uint32 count of 4-byte characters), skipped.
+  void SkipWideString();
   // A string: uint32 length counting its terminating NUL, the bytes, the NUL (not returned).
   std::string_view String();
   // A sequence's element count, checked against the bytes left when each element takes at least
   // `min_element_bytes` (so that a corrupt count cannot make the caller allocate gigabytes).
   std::uint32_t SequenceLength(std::size_t min_element_bytes);
+  // A fixed array's `length` (no count in the data), checked as SequenceLength checks a count.
+  std::uint32_t FixedLength(std::uint32_t length, std::size_t min_element_bytes);
 
   bool big_endian() const { return big_endian_; }
 
  private:
   void Align(std::size_t size);
+  void CheckFits(std::uint32_t count, std::size_t min_element_bytes, const char* what) const;
   const std::uint8_t* Take(std::size_t size, const char* what);
   template <typename T>
   T Primitive(const char* what);

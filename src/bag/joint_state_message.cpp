@@ -1,24 +1,25 @@
-// DecodeJointState: the fields of std_msgs/Header and sensor_msgs/JointState in declaration order.
+// DecodeJointState: the message decoded by its definition, then header.stamp, name and position
+// taken by field name.
 #include "bag/joint_state_message.h"
 
-#include "bag/cdr_reader.h"
+#include "bag/cdr_message.h"
 
 namespace urdfsnap::bag {
 
-void DecodeJointState(std::span<const std::uint8_t> cdr, JointStateMessage& out) {
-  CdrReader reader(cdr);
-  // std_msgs/Header: builtin_interfaces/Time stamp {int32 sec, uint32 nanosec}, string frame_id
-  out.stamp_sec = reader.Int32();
-  out.stamp_nanosec = reader.Uint32();
-  reader.String();
-  // string[] name: each at least a length and a NUL
-  const std::uint32_t name_count = reader.SequenceLength(4 + 1);
-  out.names.resize(name_count);
-  for (std::string& name : out.names) name = reader.String();
-  // float64[] position
-  const std::uint32_t position_count = reader.SequenceLength(8);
-  out.positions.resize(position_count);
-  for (double& position : out.positions) position = reader.Float64();
+void DecodeJointState(const MessageSchema& schema, std::span<const std::uint8_t> cdr,
+                      JointStateMessage& out) {
+  const MessageValue message = DecodeMessage(schema, cdr);
+  const MessageValue& stamp = message["header"]["stamp"];
+  out.stamp_sec = static_cast<std::int32_t>(stamp["sec"].number);
+  out.stamp_nanosec = static_cast<std::uint32_t>(stamp["nanosec"].number);
+  const MessageValue& names = message["name"];
+  out.names.resize(names.items.size());
+  for (std::size_t i = 0; i < names.items.size(); ++i) out.names[i] = names.items[i].text;
+  const MessageValue& positions = message["position"];
+  out.positions.resize(positions.items.size());
+  for (std::size_t i = 0; i < positions.items.size(); ++i) {
+    out.positions[i] = positions.items[i].number;
+  }
 }
 
 }  // namespace urdfsnap::bag

@@ -1,11 +1,13 @@
-// sensor_msgs/msg/JointState as ROS 2 serialises it in CDR, decoded into the fields urdfsnap needs:
-// header.stamp, name[] and position[] (velocity and effort follow in the message and are not read).
+// sensor_msgs/msg/JointState decoded through its definition (bag/cdr_message.h) into the fields
+// urdfsnap needs: header.stamp, name[] and position[].
 #pragma once
 
 #include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
+
+#include "bag/message_schema.h"
 
 namespace urdfsnap::bag {
 
@@ -24,8 +26,10 @@ struct JointStateMessage {
   }
 };
 
-// Decodes one CDR-encoded JointState into `out`, reusing its vectors' memory. Throws CdrError for
-// malformed data; name and position lists of different non-zero lengths are the caller's to judge.
-void DecodeJointState(std::span<const std::uint8_t> cdr, JointStateMessage& out);
+// Decodes one CDR-encoded JointState, laid out as `schema` defines it, into `out`. Throws CdrError
+// for malformed data or a definition without the fields read; name and position lists of
+// different non-zero lengths are the caller's to judge.
+void DecodeJointState(const MessageSchema& schema, std::span<const std::uint8_t> cdr,
+                      JointStateMessage& out);
 
 }  // namespace urdfsnap::bag

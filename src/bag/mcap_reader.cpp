@@ -7,6 +7,7 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include "bag/byte_reader.h"
 #include "bag/chunk_decompressor.h"
@@ -133,8 +134,11 @@ struct McapReader::State {
     const std::uint16_t id = reader.U16("id");
     std::string name = Text(reader.String("name"));
     std::string encoding = Text(reader.String("encoding"));
-    reader.Skip(reader.U32("data"), "data");
-    if (id != 0) schemas.try_emplace(id, std::move(name), std::move(encoding));  // 0 is invalid
+    const std::span<const std::uint8_t> data = reader.Bytes(reader.U32("data"), "data");
+    if (id != 0) {  // 0 is invalid
+      schemas.try_emplace(id, std::move(name), std::move(encoding),
+                          std::string(data.begin(), data.end()));
+    }
   }
 
   // Stores a channel met for the first time and returns it; nullptr for a repeated one.
@@ -147,8 +151,7 @@ struct McapReader::State {
     reader.Skip(reader.U32("metadata"), "metadata");
     if (channels.contains(channel.id)) return nullptr;  // identical, by the specification
     if (const auto schema = schemas.find(schema_id); schema != schemas.end()) {
-      channel.schema_name = schema->second.first;
-      channel.schema_encoding = schema->second.second;
+      std::tie(channel.schema_name, channel.schema_encoding, channel.schema_data) = schema->second;
     }
     return &channels.emplace(channel.id, std::move(channel)).first->second;
   }
@@ -316,7 +319,7 @@ struct McapReader::State {
   }
 
   FileCursor file;
-  std::map<std::uint16_t, std::pair<std::string, std::string>> schemas;  // name, encoding
+  std::map<std::uint16_t, std::tuple<std::string, std::string, std::string>> schemas;  // name, encoding, data
   std::map<std::uint16_t, McapChannel> channels;
   std::map<std::uint16_t, bool> wanted;
   Buffer record_buffer;  // a record outside chunks

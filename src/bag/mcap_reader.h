@@ -30,6 +30,7 @@ struct McapChannel {
   std::string message_encoding;  // "cdr" for ROS 2
   std::string schema_name;       // "sensor_msgs/msg/JointState"
   std::string schema_encoding;   // "ros2msg"
+  std::string schema_data;       // the definition: .msg text for ros2msg
 };
 
 // One Message record, valid during the callback that receives it.

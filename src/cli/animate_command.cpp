@@ -1,7 +1,8 @@
-// `urdfsnap animate`: MODEL + a trajectory (CSV, ROS messages in YAML/JSON, an MCAP bag) and/or a
-// turntable → MP4, WebM, GIF, animated WebP or a PNG sequence, with depth and label sequences from
-// the same frames. Every output appears only when complete; --print-frame K instead prints the
-// `render` options that make frame K.
+// `urdfsnap animate`: MODEL + a trajectory (CSV, ROS messages in YAML/JSON, a ROS 2 bag), or a
+// bag alone as MODEL (its robot description and motion), and/or a turntable → MP4, WebM, GIF,
+// animated WebP or a PNG sequence, with depth and label sequences from the same frames. Every
+// output appears only when complete; --print-frame K instead prints the `render` options that make
+// frame K.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,8 @@
 #include "animation/render_animation.h"
 #include "animation/sequence_outputs.h"
 #include "bag/joint_state_bag.h"
+#include "bag/robot_description.h"
+#include "cli/bag_model.h"
 #include "cli/command.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
@@ -29,10 +32,12 @@
 #include "gl/rasteriser_threads.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
+#include "motion/root_poses.h"
 #include "motion/trajectory_file.h"
 #include "request/render_session.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
+#include "tf/bag_transforms.h"
 #include "video/frame_encoder.h"
 #include "video/frame_files.h"
 
@@ -48,8 +53,11 @@ struct AnimateOptions {
   std::string output;
   std::string trajectory;
   std::string topic = bag::kDefaultJointStateTopic;
+  std::string description_topic = bag::kDefaultDescriptionTopic;  // MODEL given as a bag
   std::string fps = "30", speed, duration;  // checked as render checks its numbers
+  std::string start, end;                   // the part of the trajectory played
   bool turntable = false;
+  bool clamp = false, strict_joints = false;  // how the trajectory's joints meet the model's
   std::string depth, labels;  // optional depth and link-label sequences (patterns)
   std::string print_frame;    // a frame number: print its render options instead of writing
   bool quiet = false;
@@ -68,14 +76,20 @@ motion::FramePlan Plan(const AnimateOptions& o, const motion::Trajectory& trajec
   const double fps = request::ParseFinite(o.fps, "--fps");
   const std::optional<double> speed = OptionalNumber(o.speed, "--speed");
   const std::optional<double> duration = OptionalNumber(o.duration, "--duration");
+  const std::optional<double> start = OptionalNumber(o.start, "--start");
+  const std::optional<double> end = OptionalNumber(o.end, "--end");
   if (o.trajectory.empty()) {
+    if (start || end) throw Error("animate: --start and --end choose part of a trajectory; there is no --trajectory");
     if (!o.turntable) {
       throw Error("animate: nothing moves: give --trajectory FILE, --turntable or both");
     }
     if (speed) throw Error("animate: --speed plays a trajectory faster or slower; there is no --trajectory");
     return motion::PlanStill(duration.value_or(kStillTurntableSeconds), fps);
   }
-  return motion::PlanFrames(trajectory, fps, speed.value_or(1), duration);
+  motion::TimeWindow window;
+  if (start) window.start = motion::TrajectorySeconds(trajectory, *start, "--start");
+  if (end) window.end = motion::TrajectorySeconds(trajectory, *end, "--end");
+  return motion::PlanFrames(trajectory, fps, speed.value_or(1), duration, window);
 }
 
 // The frame number --print-frame names, within the animation.
@@ -136,6 +150,7 @@ struct PreparedAnimation {
   motion::Trajectory trajectory;
   motion::FramePlan plan;
   std::optional<motion::FramePoses> poses;
+  std::optional<motion::RootPoses> root;   // where the bag's TF puts the robot, for a fixed frame outside it
   std::optional<animation::AnimationFrames> frames;
 };
 
@@ -147,14 +162,39 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
   // --fit frames every frame at once, below, not the first pose alone
   const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
+  // a fixed frame outside the robot (odom, map): the bag's TF places the robot in it, as RViz's
+  // Fixed Frame does; the scene is drawn from the root link, then placed
+  const bool bag_frame = !r.fixed_frame.empty() && !o.trajectory.empty() && motion::IsBag(o.trajectory);
+  if (bag_frame) {
+    resolved.settings.scene.fixed_frame.clear();
+    resolved.fixed_frame_given = false;
+  }
   a.robot = session.Prepare(resolved, warnings);
+  std::string tf_fixed_frame;
+  if (bag_frame && a.robot.robot->FindLink(r.fixed_frame) >= 0) {
+    resolved.settings.scene.fixed_frame = r.fixed_frame;   // a link after all: drawn from it as usual
+    resolved.fixed_frame_given = true;
+    a.robot = session.Prepare(resolved, warnings);
+  } else if (bag_frame) {
+    tf_fixed_frame = r.fixed_frame;
+  }
   if (!o.trajectory.empty()) a.trajectory = motion::ReadTrajectory(o.trajectory, {o.topic}, warnings);
   a.plan = Plan(o, a.trajectory);
   // joints the trajectory does not name: the joint file, then -j, as render takes them
-  a.poses.emplace(*a.robot.robot, a.trajectory, resolved.joints, resolved.clamp, warnings);
+  a.poses.emplace(*a.robot.robot, a.trajectory, resolved.joints,
+                  motion::JointRules{resolved.clamp, o.clamp, o.strict_joints}, warnings);
+  if (!tf_fixed_frame.empty()) {
+    if (!o.print_frame.empty()) {
+      throw Error("--print-frame: the frames are placed by TF in '" + tf_fixed_frame +
+                  "', which `render` cannot do");
+    }
+    a.root.emplace(tf::ReadBagTransforms(o.trajectory), tf_fixed_frame, a.robot.robot->links().front().name,
+                   a.trajectory.stamp_at_zero.value_or(0), o.trajectory);
+  }
   const render::RenderSettings& settings = a.robot.settings;
   a.frames.emplace(*a.robot.renderer, a.plan, *a.poses,
-                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable}, warnings);
+                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable}, warnings,
+                   a.root ? &*a.root : nullptr);
 }
 
 // --print-frame K: the render options that draw frame K, to stdout.
@@ -210,7 +250,15 @@ void Run(AnimateOptions& o) {
   const std::string rasteriser = gl::LeaveCoresToOtherThreads(1);
   if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
-  o.render.request.model = o.model.ToRequest();
+  request::RenderRequest& r = o.render.request;
+  // MODEL given as a bag: its motion and the robot description it recorded
+  std::optional<BagModel> bag_model;
+  if (o.trajectory.empty() && motion::IsBag(o.model.path)) {
+    o.trajectory = o.model.path;
+    bag_model.emplace(o.model.path, o.description_topic);
+  }
+  r.model = o.model.ToRequest();
+  if (bag_model) r.model.path = bag_model->path();
   o.render.ParseJointWords();
   if (o.output.empty() && o.print_frame.empty()) {
     throw Error("animate: give the output with -o FILE: .mp4, .webm, .gif, .webp or a pattern such as "
@@ -227,6 +275,10 @@ void Run(AnimateOptions& o) {
     PrepareAnimation(o, session, animation, warnings);
     if (!o.print_frame.empty()) return PrintFrame(o, animation, warnings);
     WriteAnimation(o, choice, session, animation, warnings);
+  } catch (const Error& e) {
+    PrintWarningsBeforeError(warnings);
+    if (bag_model) throw Error(bag_model->Located(e.what()));
+    throw;
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -249,15 +301,32 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_option("--trajectory", o->trajectory,
                   "the motion: a CSV table (time,<joint>,...), a JointTrajectory, MoveIt "
                   "RobotTrajectory/DisplayTrajectory or JointState stream in YAML/JSON (as `ros2 "
-                  "topic echo` prints), or a ROS 2 bag (.mcap file or rosbag2 folder)");
+                  "topic echo` prints), or a ROS 2 bag (.mcap or .db3 file, or a rosbag2 folder: split, "
+                  "zstd-compressed, MCAP or SQLite storage)");
   cmd->add_option("--topic", o->topic,
                   "the sensor_msgs/msg/JointState topic of a bag (default /joint_states)");
+  cmd->add_option("--description-topic", o->description_topic,
+                  "when MODEL is a bag (then also the trajectory): the std_msgs/msg/String topic "
+                  "whose first message is the robot description, as RViz's RobotModel display "
+                  "reads it (default /robot_description)");
+  cmd->add_flag("--clamp", o->clamp,
+                "clamp the trajectory's values to the joint limits as joint_state_publisher's "
+                "slider would (default: drawn as recorded, with one warning per joint that leaves "
+                "its limits)");
+  cmd->add_flag("--strict-joints", o->strict_joints,
+                "stop at a joint of the trajectory that the model does not have (default: such "
+                "joints are ignored with one warning, as robot_state_publisher ignores them)");
   cmd->add_option("--fps", o->fps, "frames per second (default 30); frame k shows time k/fps");
   cmd->add_option("--speed", o->speed,
                   "playback speed of the trajectory: 2 plays it twice as fast (default 1)");
   cmd->add_flag("--turntable", o->turntable,
                 "turn the camera's yaw once around over the animation; without --trajectory the "
                 "still pose turns for --duration seconds");
+  cmd->add_option("--start", o->start,
+                  "play the trajectory from this time: seconds from its start, or a stamp "
+                  "(seconds since 1970, from 1e9 up) for messages timed by their stamps; frame k "
+                  "shows start + k * speed / fps");
+  cmd->add_option("--end", o->end, "play the trajectory up to this time (as --start)");
   cmd->add_option("--duration", o->duration,
                   "length in seconds (default: the trajectory's length / --speed, past its end the "
                   "last pose holds; a still turntable 6)");

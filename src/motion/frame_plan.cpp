@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "common/error.h"
 #include "common/number_text.h"
@@ -40,14 +41,39 @@ double FramePlan::TurntableYaw(std::int64_t frame, double start_yaw) const {
 }
 
 FramePlan PlanFrames(const Trajectory& trajectory, double fps, double speed,
-                     std::optional<double> duration_seconds) {
+                     std::optional<double> duration_seconds, TimeWindow window) {
   CheckPositive(fps, "the frame rate (frames per second)", kMaxFramesPerSecond);
   CheckPositive(speed, "the playback speed");
   if (duration_seconds) CheckPositive(*duration_seconds, "the duration (seconds)");
   const bool rows = trajectory.time_base == TimeBase::kRows;
+  if (rows && (window.start || window.end)) {
+    throw Error("--start and --end are times; " + trajectory.source +
+                " is a table without a time column (one row per frame)");
+  }
+  const double end = window.end.value_or(trajectory.EndTime());
+  const double start = window.start.value_or(0);
+  if (start < 0 || start > trajectory.EndTime()) {
+    throw Error("--start " + FormatNumber(start) + " s is outside " + trajectory.source + ", which lasts " +
+                FormatNumber(trajectory.EndTime()) + " s");
+  }
+  if (window.end && end <= start) {
+    throw Error("--end " + FormatNumber(end) + " s is not after the start at " + FormatNumber(start) + " s");
+  }
   // a table without times shows row k at frame k (at speed 1)
-  const double end_seconds = rows ? trajectory.EndTime() / fps : trajectory.EndTime();
-  return Plan(duration_seconds.value_or(end_seconds / speed), fps, rows ? speed : speed / fps);
+  const double end_seconds = rows ? trajectory.EndTime() / fps : end - start;
+  FramePlan plan = Plan(duration_seconds.value_or(end_seconds / speed), fps, rows ? speed : speed / fps);
+  plan.trajectory_start = start;
+  return plan;
+}
+
+double TrajectorySeconds(const Trajectory& trajectory, double value, const char* option) {
+  constexpr double kFirstStamp = 1e9;
+  if (value < kFirstStamp) return value;
+  if (!trajectory.stamp_at_zero) {
+    throw Error(std::string(option) + " " + FormatNumber(value) + " is a stamp (seconds since 1970), and " +
+                trajectory.source + " has no stamps; give seconds from its start");
+  }
+  return value - *trajectory.stamp_at_zero;
 }
 
 FramePlan PlanStill(double duration_seconds, double fps) {

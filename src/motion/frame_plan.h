@@ -21,23 +21,40 @@ struct FramePlan {
   std::int64_t frame_count = 1;
   // trajectory time per frame: speed / fps for times in seconds, speed for a table of rows
   double trajectory_step = 0;
+  double trajectory_start = 0;  // the trajectory time of frame 0 (--start)
 
   // The animation time of `frame`, in seconds.
   double Seconds(std::int64_t frame) const { return frame / fps; }
   // The trajectory time `frame` shows (seconds, or rows for a table without times).
-  double TrajectoryTime(std::int64_t frame) const { return frame * trajectory_step; }
+  double TrajectoryTime(std::int64_t frame) const {
+    return trajectory_start + frame * trajectory_step;
+  }
   // The camera yaw of `frame` for a turntable: `start_yaw` (radians) plus 2 pi * frame /
   // frame_count, one full turn over the animation that loops without a repeated frame.
   double TurntableYaw(std::int64_t frame, double start_yaw) const;
 };
 
+// The part of a trajectory to play, in trajectory seconds (see TrajectorySeconds): from `start`
+// (default its beginning) to `end` (default its end).
+struct TimeWindow {
+  std::optional<double> start, end;
+};
+
 // The frames of `trajectory` played at `speed` (2 = twice as fast) and `fps` frames per second:
-// T = trajectory.EndTime() / speed (a table without times: T = rows - 1 frames at speed 1).
-// `duration_seconds`, when given, replaces T; past the trajectory's end its last pose holds.
-// Throws Error for an fps, speed or duration that is not a positive finite number (fps at most
-// kMaxFramesPerSecond), or more than kMaxFrames frames.
+// T = (end - start) / speed (a table without times: T = rows - 1 frames at speed 1), frame k
+// showing trajectory time start + k * speed / fps. `duration_seconds`, when given, replaces T;
+// past the trajectory's end its last pose holds. Throws Error for an fps, speed or duration that
+// is not a positive finite number (fps at most kMaxFramesPerSecond), a window that is empty, starts
+// before 0 or after the trajectory's end, or is given for a table without times, or more than
+// kMaxFrames frames.
 FramePlan PlanFrames(const Trajectory& trajectory, double fps, double speed,
-                     std::optional<double> duration_seconds = {});
+                     std::optional<double> duration_seconds = {}, TimeWindow window = {});
+
+// The trajectory time that `value` of the option `option` (--start, --end) names: seconds from
+// the trajectory's start, or, for a trajectory timed by stamps, an absolute stamp (seconds since
+// 1970) when `value` is 1e9 or more (2001 onwards: no recording lasts 31 years). Throws Error for
+// a stamp given to a trajectory without stamps.
+double TrajectorySeconds(const Trajectory& trajectory, double value, const char* option);
 
 // The frames of a still pose shown for `duration_seconds` (a turntable without a trajectory); every
 // frame samples trajectory time 0. Throws Error as PlanFrames does.

@@ -1,8 +1,9 @@
 // The robot's joint positions in each frame of an animation: a trajectory's joints interpolated at
 // the frame's time, every joint it does not name at the values the caller gives (-j, --joints) or
 // urdfsnap's defaults, all resolved as `render` resolves one pose (model::ResolveJointPositions).
-// Limits are clamped in every frame, with one warning per joint for the whole trajectory rather
-// than one per frame.
+// Recorded and planned values are drawn as they are, as robot_state_publisher and RViz show them:
+// a joint that leaves its limits gets one warning for the whole trajectory, and is clamped only
+// when asked. Joints the robot lacks (a gripper's, a second robot's) are ignored with one warning.
 #pragma once
 
 #include <vector>
@@ -14,16 +15,29 @@
 
 namespace urdfsnap::motion {
 
+// How a trajectory's joints meet the robot's.
+struct JointRules {
+  // the defaults (-j, --joints) clamped to the limits as `render` clamps them (--no-clamp: false)
+  bool clamp_defaults = true;
+  // the trajectory's values clamped to the limits as joint_state_publisher's slider would
+  // (--clamp); otherwise drawn as recorded
+  bool clamp_trajectory = false;
+  // a joint the robot does not have is an error rather than a warning (--strict-joints)
+  bool strict_joints = false;
+};
+
 class FramePoses {
  public:
-  // Checks `trajectory`'s joints against `robot`: a joint it does not have is an Error located
-  // where the trajectory names it ("plan.csv:1: robot 'mrm' has no joint 'elbw'; its movable
-  // joints are: ..."). With `clamp`, adds to `warnings` one warning for each joint whose samples
-  // leave its limits (the furthest value and when), since linear interpolation never goes beyond
-  // the samples; frames are then clamped without further warnings. `defaults` are the values of
-  // the joints the trajectory does not name; where both name a joint, the trajectory wins.
+  // Checks `trajectory`'s joints against `robot`. Joints it does not have get one warning naming
+  // them all ("joints.mcap: joints robot 'panda' does not have are ignored: 'finger1', ..."), or,
+  // with rules.strict_joints, an Error located where the trajectory names the first ("plan.csv:1:
+  // robot 'mrm' has no joint 'elbw'; its movable joints are: ..."), which is also the error when
+  // none of the trajectory's joints is the robot's. Adds one warning for each joint
+  // whose samples leave its limits: how far beyond, its furthest value and when it first left
+  // (linear interpolation never goes beyond the samples). `defaults` are the values of the joints
+  // the trajectory does not name; where both name a joint, the trajectory wins.
   FramePoses(const model::Robot& robot, const Trajectory& trajectory, model::NamedValues defaults,
-             bool clamp, Warnings& warnings);
+             JointRules rules, Warnings& warnings);
 
   // One position per robot.joints() index (radians or metres) at trajectory time `t` (seconds, or
   // rows for a table without times; see FramePlan::TrajectoryTime). Warnings that
@@ -34,10 +48,10 @@ class FramePoses {
  private:
   const model::Robot& robot_;
   const Trajectory& trajectory_;
-  model::NamedValues values_;  // the defaults, then one entry per trajectory track
+  model::NamedValues values_;  // the defaults (clamped if asked), then one entry per used track
   std::size_t first_track_value_ = 0;
-  std::vector<std::pair<double, double>> track_limits_;  // per track; infinite when unclamped
-  bool clamp_;
+  std::vector<std::size_t> used_tracks_;  // the trajectory's tracks of joints the robot has
+  std::vector<std::pair<double, double>> track_limits_;  // per used track; infinite unclamped
 };
 
 }  // namespace urdfsnap::motion

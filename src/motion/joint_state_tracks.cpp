@@ -21,7 +21,7 @@ std::string Seconds(std::int64_t nanoseconds) {
 }  // namespace
 
 JointStateTracks::JointStateTracks(std::string source, std::optional<std::int64_t> origin_ns)
-    : origin_ns_(origin_ns) {
+    : origin_ns_(origin_ns), stamped_(!origin_ns) {
   trajectory_.source = std::move(source);
 }
 
@@ -83,6 +83,7 @@ Trajectory JointStateTracks::Finish() && {
       for (double& time : track.times) time -= earliest;
     }
   }
+  if (stamped_) trajectory_.stamp_at_zero = static_cast<double>(*origin_ns_) * 1e-9 + earliest;
   return std::move(trajectory_);
 }
 

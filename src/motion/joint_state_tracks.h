@@ -33,7 +33,8 @@ class JointStateTracks {
   void Add(std::int64_t time_ns, std::span<const std::string> names,
            std::span<const double> positions, const std::function<std::string()>& where);
 
-  // The trajectory, in seconds from the origin (or the earliest sample, if that is before it).
+  // The trajectory, in seconds from the origin (or the earliest sample, if that is before it),
+  // with the stamp of time 0 when the times were stamps.
   // Throws Error "SOURCE: no joint positions in it: an empty trajectory" when no message had any.
   Trajectory Finish() &&;
 
@@ -44,6 +45,7 @@ class JointStateTracks {
   std::vector<std::size_t> seen_in_message_;  // per track: the message that last named it
   std::size_t messages_ = 0;
   std::optional<std::int64_t> origin_ns_;
+  bool stamped_;  // times are stamps (no origin given): the trajectory keeps its stamp_at_zero
 };
 
 }  // namespace urdfsnap::motion

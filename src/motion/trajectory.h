@@ -5,6 +5,7 @@
 // interpolated linearly.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct Trajectory {
   std::string source;  // the file it was read from
   TimeBase time_base = TimeBase::kSeconds;
   std::vector<JointTrack> tracks;  // one per joint, in the order the input first names them
+  // for messages timed by their stamps (JointState streams, bags): the stamp of time 0, in
+  // seconds since 1970
+  std::optional<double> stamp_at_zero;
 
   // The latest sample time over all tracks (0 for a trajectory of one instant).
   double EndTime() const;

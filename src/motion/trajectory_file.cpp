@@ -15,6 +15,7 @@ namespace urdfsnap::motion {
 namespace {
 
 constexpr char kMcapMagic[] = "\x89MCAP0\r\n";
+constexpr char kSqliteHeader[] = "SQLite format 3";  // a rosbag2 .db3 file
 
 }  // namespace
 
@@ -24,7 +25,8 @@ TrajectoryFormat DetectTrajectoryFormat(const std::string& path, std::string_vie
   if (extension == ".yaml" || extension == ".yml" || extension == ".json") {
     return TrajectoryFormat::kRosMessages;
   }
-  if (extension == ".mcap" || head.starts_with(std::string_view(kMcapMagic, 8))) {
+  if (extension == ".mcap" || extension == ".db3" ||
+      head.starts_with(std::string_view(kMcapMagic, 8)) || head.starts_with(kSqliteHeader)) {
     return TrajectoryFormat::kBag;
   }
   const std::string_view first_line = head.substr(0, head.find('\n'));
@@ -40,6 +42,17 @@ Trajectory ParseTrajectoryText(std::string_view text, const std::string& path) {
     return ParseCsvTrajectory(text, path);
   }
   return ParseRosMessageTrajectory(text, path);
+}
+
+bool IsBag(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return true;
+  if (!std::filesystem::is_regular_file(path, error)) return false;
+  char head[16];
+  std::ifstream file(path, std::ios::binary);
+  file.read(head, sizeof head);
+  return DetectTrajectoryFormat(path, std::string_view(head, static_cast<std::size_t>(file.gcount()))) ==
+         TrajectoryFormat::kBag;
 }
 
 Trajectory ReadTrajectory(const std::string& path, const TrajectoryOptions& options,

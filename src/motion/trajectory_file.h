@@ -1,5 +1,5 @@
 // Reading a trajectory file of any kind urdfsnap animates, the format taken from the extension
-// (.csv, .yaml/.yml, .json, .mcap, a rosbag2 folder) or, for other names, from the content.
+// (.csv, .yaml/.yml, .json, .mcap, .db3, a rosbag2 folder) or, for other names, from the content.
 #pragma once
 
 #include <string>
@@ -14,7 +14,7 @@ namespace urdfsnap::motion {
 enum class TrajectoryFormat {
   kCsv,          // csv_trajectory.h
   kRosMessages,  // YAML or JSON, ros_message_trajectory.h
-  kBag,          // MCAP file or rosbag2 folder, bag_trajectory.h
+  kBag,          // MCAP or SQLite (.db3) file or rosbag2 folder, bag_trajectory.h
 };
 
 struct TrajectoryOptions {
@@ -22,8 +22,12 @@ struct TrajectoryOptions {
 };
 
 // The format of the file at `path` whose first bytes are `head`: by extension, else MCAP's magic
-// makes a bag, a first line with commas and no colon a CSV table, anything else YAML or JSON.
+// or SQLite's header makes a bag, a first line with commas and no colon a CSV table, anything else YAML or JSON.
 TrajectoryFormat DetectTrajectoryFormat(const std::string& path, std::string_view head);
+
+// Whether `path` is a bag: a rosbag2 folder, or a file DetectTrajectoryFormat takes for one (by
+// its extension or first bytes). False for a path that cannot be read.
+bool IsBag(const std::string& path);
 
 // Reads the trajectory at `path` (a file, or a rosbag2 folder). Throws Error naming the file and
 // the line (or the bag message) for anything wrong, including an empty trajectory; text files are

@@ -32,17 +32,22 @@ class RobotRenderer {
   const scene::RobotScene& scene() const { return scene_; }
 
   // The scene for `positions` (one per robot().joints(), radians or metres, mimic joints resolved,
-  // as model::ResolveJointPositions returns them). Throws urdfsnap::Error for a wrong count.
-  scene::Scene Pose(const std::vector<double>& positions) const;
+  // as model::ResolveJointPositions returns them), the fixed link placed at X_SF in the scene (see
+  // scene::RobotScene::Pose). Throws urdfsnap::Error for a wrong count.
+  scene::Scene Pose(const std::vector<double>& positions,
+                    const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
 
-  // Renders one frame of the robot at `positions` through `gl`.
+  // Renders one frame of the robot at `positions` (placed at X_SF) through `gl`.
   image::Frame Render(gl::Renderer& gl, const std::vector<double>& positions, const scene::OrbitView& view,
-                      ImageSize size, const image::FrameOutputs& outputs = {}) const;
+                      ImageSize size, const image::FrameOutputs& outputs = {},
+                      const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
 
-  // The view `fit` makes of `view` for the poses `pose(k)`, k = 0 .. count-1, as one camera for
-  // all of them (an animation's camera does not jump). The poses are asked for twice and not kept.
+  // The view `fit` makes of `view` for the poses `pose(k)` (placed at `place(k)` when given),
+  // k = 0 .. count-1, as one camera for all of them (an animation's camera does not jump). The
+  // poses are asked for twice and not kept.
   scene::OrbitView FitView(Fit fit, const scene::OrbitView& view, ImageSize size, int count,
-                           const std::function<std::vector<double>(int)>& pose) const;
+                           const std::function<std::vector<double>(int)>& pose,
+                           const std::function<Eigen::Isometry3d(int)>& place = {}) const;
 
  private:
   std::shared_ptr<const model::Robot> robot_;

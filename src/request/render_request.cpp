@@ -15,8 +15,9 @@ const std::array kTextOptions{
                "images' render area)",
                &R::size, false},
     TextOption{"rviz",
-               "an RViz .rviz config: background, fixed frame, Grid, RobotModel, TF and Orbit view "
-               "(the options below override it; default none: RViz's built-in defaults)",
+               "an RViz 1 or RViz 2 .rviz config: background, fixed frame, Grid, RobotModel, TF and "
+               "Orbit view (the options below override it; default none: RViz's built-in "
+               "defaults); one with none of these is an error",
                &R::rviz, true},
     TextOption{"yaw", "orbit yaw about +Z in rad (RViz default 0.785398)", &R::yaw, false},
     TextOption{"pitch", "orbit pitch in rad (RViz default 0.785398)", &R::pitch, false},

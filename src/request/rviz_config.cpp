@@ -1,6 +1,7 @@
 // ReadRvizConfig: yaml-cpp walks the .rviz file; each RViz property is read the way RViz's
 // property classes load it (src/rviz/properties/*.cpp in ros-visualization/rviz 1.14) and limited
-// to the range RViz gives it.
+// to the range RViz gives it. RViz 2 (ros2/rviz) saves the same property names under its own class
+// names (request/rviz_class_names.h).
 #include "request/rviz_config.h"
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include "common/file_reading.h"
 #include "common/internal/yaml_section.h"
 #include "common/number_text.h"
+#include "request/rviz_class_names.h"
 
 namespace urdfsnap::request {
 namespace {
@@ -89,6 +91,7 @@ struct Displays {
   std::vector<Display> grids;
   std::vector<Display> robot_models;
   std::vector<Display> tfs;
+  std::vector<std::string> skipped;  // classes urdfsnap does not draw, each once, in file order
 };
 
 // Walks the "Displays" list of the root or of an rviz/Group display.
@@ -113,17 +116,21 @@ void CollectDisplays(const Section& parent, bool parent_enabled, Displays& displ
     section.ReadBool("Enabled", enabled);
     const Display display{section, enabled && parent_enabled};
 
-    if (class_id == "rviz/Grid") {
-      displays.grids.push_back(display);
-    } else if (class_id == "rviz/RobotModel") {
-      displays.robot_models.push_back(display);
-    } else if (class_id == "rviz/TF") {
-      displays.tfs.push_back(display);
-    } else if (class_id == "rviz/Group") {
-      CollectDisplays(section, display.enabled, displays, warnings);
-    } else {
-      warnings.Add(parent.path() + ": skipped display class '" + class_id +
-                   "', which urdfsnap does not draw");
+    switch (ClassifyDisplay(class_id)) {
+      case DisplayClass::kGrid: displays.grids.push_back(display); break;
+      case DisplayClass::kRobotModel: displays.robot_models.push_back(display); break;
+      case DisplayClass::kTf: displays.tfs.push_back(display); break;
+      case DisplayClass::kGroup:
+        CollectDisplays(section, display.enabled, displays, warnings);
+        break;
+      case DisplayClass::kOther:
+        if (std::find(displays.skipped.begin(), displays.skipped.end(), class_id) ==
+            displays.skipped.end()) {
+          displays.skipped.push_back(class_id);
+        }
+        warnings.Add(parent.path() + ": skipped display class '" + class_id +
+                     "', which urdfsnap does not draw");
+        break;
     }
   }
 }
@@ -195,13 +202,21 @@ void ReadGrid(const Display& display, const std::string& fixed_frame, scene::Gri
   }
 }
 
-// The RobotModel display's properties (src/rviz/default_plugin/robot_model_display.cpp L60-86);
-// a disabled display hides the robot.
-void ReadRobotModel(const Display& display, scene::SceneOptions& scene) {
+// The RobotModel display's properties (src/rviz/default_plugin/robot_model_display.cpp L60-86;
+// RViz 2's robot_model_display.cpp L89-146 has the same names); a disabled display hides the robot.
+// Where the description comes from ("Robot Description" in RViz 1, "Description Source", "Topic"
+// and "File" in RViz 2) is the model argument's job.
+void ReadRobotModel(const Display& display, scene::SceneOptions& scene, Warnings& warnings) {
   display.section.ReadBool("Visual Enabled", scene.show_visual);
   display.section.ReadBool("Collision Enabled", scene.show_collision);
   display.section.ReadNumber("Alpha", scene.alpha, 0, 1);
   if (!display.enabled) scene.show_visual = scene.show_collision = false;
+  std::string tf_prefix;
+  display.section.ReadString("TF Prefix", tf_prefix);
+  if (!tf_prefix.empty()) {
+    display.section.Warn("TF Prefix", "is not empty; urdfsnap names frames by their links",
+                         warnings);
+  }
 }
 
 // The TF display's properties (src/rviz/default_plugin/tf_display.cpp L164-191).
@@ -217,22 +232,38 @@ void ReadTf(const Display& display, scene::TfOptions& tf, Warnings& warnings) {
   if (marker_alpha != 1) {
     section.Warn("Marker Alpha", "is not 1; urdfsnap draws opaque TF markers", warnings);
   }
+  // "Frames": "All Enabled" and one checkbox per frame, saved under the frame's name
+  // (TFDisplay::load, rviz_default_plugins/displays/tf/tf_display.cpp)
+  const std::optional<Section> frames = section.Child("Frames", section.name() + ": 'Frames'");
+  if (!frames) return;
+  bool all_enabled = true;
+  frames->ReadBool("All Enabled", all_enabled);
+  bool each_enabled = true;
+  for (const auto& entry : section.Entry("Frames")) {
+    if (!entry.first.IsScalar() || entry.first.Scalar() == "All Enabled") continue;
+    bool enabled = true;
+    frames->ReadBool(entry.first.Scalar().c_str(), enabled);
+    each_enabled = each_enabled && enabled;
+  }
+  if (!all_enabled || !each_enabled) {
+    section.Warn("Frames", "hides some frames; urdfsnap draws every frame", warnings);
+  }
 }
 
 // Views/Current (src/rviz/view_manager.cpp) when it is an Orbit view: its properties in
 // src/rviz/default_plugin/view_controllers/orbit_view_controller.cpp L58-88 and the near clip of
-// src/rviz/view_controller.cpp L58-62, with their limits.
-void ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings) {
+// src/rviz/view_controller.cpp L58-62, with their limits. Returns whether the file has such a view.
+bool ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings) {
   const std::optional<Section> views = manager.Child("Views", "Views");
-  if (!views) return;
+  if (!views) return false;
   const std::optional<Section> current = views->Child("Current", "Views/Current");
-  if (!current) return;
+  if (!current) return false;
   std::string class_id;
   current->ReadString("Class", class_id);
-  if (class_id != "rviz/Orbit") {
+  if (!IsOrbitView(class_id)) {
     current->Warn("Class", "is '" + class_id + "', not rviz/Orbit; urdfsnap keeps its default view",
                   warnings);
-    return;
+    return false;
   }
   constexpr double kMaxPitch = std::numbers::pi / 2 - 0.001;
   current->ReadNumber("Distance", view.distance, 0.001);
@@ -252,6 +283,23 @@ void ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings
   bool invert_z = false;
   current->ReadBool("Invert Z Axis", invert_z);
   if (invert_z) current->Warn("Invert Z Axis", "is true; urdfsnap keeps +Z up", warnings);
+  return true;
+}
+
+// Throws when the file has no display urdfsnap follows and no orbit view: RViz would show nothing
+// urdfsnap can reproduce, so rendering its defaults would hide the mistake.
+void RequireSomethingUsable(const std::string& path, const Displays& displays, bool has_view) {
+  if (has_view || !displays.grids.empty() || !displays.robot_models.empty() ||
+      !displays.tfs.empty()) {
+    return;
+  }
+  std::string skipped;
+  for (const std::string& class_id : displays.skipped) {
+    skipped += (skipped.empty() ? "'" : ", '") + class_id + "'";
+  }
+  throw Error(SourceLocation{path, 0},
+              "nothing urdfsnap can use: no Grid, RobotModel or TF display and no Orbit view" +
+                  (skipped.empty() ? std::string() : "; skipped display classes " + skipped));
 }
 
 }  // namespace
@@ -286,11 +334,12 @@ RvizConfig ParseRvizConfig(const std::string& text, const std::string& path,
     config.scene.grid.enabled = false;  // RViz draws no grid without a Grid display
   }
   if (const Display* robot_model = Chosen(displays.robot_models, warnings)) {
-    ReadRobotModel(*robot_model, config.scene);
+    ReadRobotModel(*robot_model, config.scene, warnings);
   }
   if (const Display* tf = Chosen(displays.tfs, warnings)) ReadTf(*tf, config.scene.tf, warnings);
 
-  ReadView(manager, config.view, warnings);
+  const bool has_view = ReadView(manager, config.view, warnings);
+  RequireSomethingUsable(path, displays, has_view);
   return config;
 }
 

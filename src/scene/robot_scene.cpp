@@ -280,14 +280,16 @@ RobotScene::RobotScene(const model::Robot& robot, SceneOptions options, Warnings
   if (options_.tf.enabled && options_.tf.show_names) tf_names_ = MakeTfNameLabels(robot_, options_.tf);
 }
 
-Scene RobotScene::Pose(const std::vector<Eigen::Isometry3d>& X_RL) const {
+Scene RobotScene::Pose(const std::vector<Eigen::Isometry3d>& X_RL,
+                       const Eigen::Isometry3d& X_SF) const {
   if (X_RL.size() != robot_.links().size()) {
     throw Error("RobotScene::Pose: " + std::to_string(X_RL.size()) + " link poses for " +
                 std::to_string(robot_.links().size()) + " links");
   }
   Scene scene;
   scene.background = options_.background;
-  const Eigen::Isometry3d X_FR = X_RL[fixed_link_].inverse();
+  // (X_FL below is in the scene's frame S, which is F's unless X_SF says otherwise)
+  const Eigen::Isometry3d X_FR = X_SF * X_RL[fixed_link_].inverse();
   std::vector<Eigen::Isometry3d> X_FL(X_RL.size());
   for (size_t i = 0; i < X_RL.size(); ++i) X_FL[i] = X_FR * X_RL[i];
   scene.items.reserve(parts_.size());

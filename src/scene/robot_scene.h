@@ -45,8 +45,11 @@ class RobotScene {
 
   // The scene for link poses X_RL (one per robot.links(), in the root frame R, as
   // model::ComputeLinkPoses returns them), in the fixed frame: draw items with their link index,
-  // TF markers, grid, background. Does no I/O.
-  Scene Pose(const std::vector<Eigen::Isometry3d>& X_RL) const;
+  // TF markers, grid, background. X_SF places the fixed link in the scene's frame: the identity,
+  // or, for a fixed frame outside the robot (odom, map from a bag's TF, as RViz's Fixed Frame), the
+  // pose TF gives the fixed link there. Does no I/O.
+  Scene Pose(const std::vector<Eigen::Isometry3d>& X_RL,
+             const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
 
  private:
   const model::Robot& robot_;

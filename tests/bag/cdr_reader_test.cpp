@@ -1,5 +1,5 @@
-// CDR decoding of JointState from bytes made by hand: alignment counted from after the
-// encapsulation header, both byte orders, and malformed data.
+// CDR decoding of JointState (through the definition urdfsnap ships) from bytes made by hand:
+// alignment counted from after the encapsulation header, both byte orders, and malformed data.
 #include "bag/cdr_reader.h"
 
 #include <gmock/gmock.h>
@@ -52,6 +52,11 @@ class CdrBytes {
   std::vector<std::uint8_t> bytes_;
 };
 
+const MessageSchema& JointStateSchema() {
+  static const MessageSchema schema = *MessageSchema::Shipped("sensor_msgs/msg/JointState");
+  return schema;
+}
+
 CdrBytes JointStateBytes(bool big_endian) {
   CdrBytes cdr(big_endian);
   // stamp, frame_id "base" (4 + 5 bytes: the name list's length then needs 3 bytes of padding)
@@ -67,7 +72,7 @@ TEST(CdrReaderTest, DecodesAJointStateInEitherByteOrder) {
   for (const bool big_endian : {false, true}) {
     SCOPED_TRACE(big_endian ? "big-endian" : "little-endian");
     JointStateMessage message;
-    DecodeJointState(JointStateBytes(big_endian).bytes(), message);
+    DecodeJointState(JointStateSchema(), JointStateBytes(big_endian).bytes(), message);
     EXPECT_EQ(message.stamp_sec, 12);
     EXPECT_EQ(message.stamp_nanosec, 345u);
     EXPECT_EQ(message.StampNanoseconds(), 12'000'000'345);
@@ -95,7 +100,8 @@ class BadCdrTest : public ::testing::TestWithParam<BadCdr> {};
 
 TEST_P(BadCdrTest, IsACdrErrorSayingWhat) {
   JointStateMessage message;
-  EXPECT_THAT(test::ErrorText<CdrError>([&] { DecodeJointState(GetParam().bytes, message); }),
+  EXPECT_THAT(test::ErrorText<CdrError>(
+                  [&] { DecodeJointState(JointStateSchema(), GetParam().bytes, message); }),
               HasSubstr(GetParam().error));
 }
 

@@ -1,10 +1,13 @@
-// ReadJointStates: the values the TypeScript writer stored, split rosbag2 folders, and the errors
-// for a bag without the topic, with another type on it, without messages or with a bad message.
+// ReadJointStates: the values the TypeScript writer stored in every storage (MCAP files, rosbag2
+// folders of MCAP or SQLite files, compressed or not, a bare .db3), split rosbag2 folders, and the
+// errors for a bag without the topic, with another type on it, without messages or with a bad
+// message.
 #include "bag/joint_state_bag.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "bag/rosbag2_folder.h"
 #include "support/error_text.h"
 #include "test_bags.h"
 
@@ -37,7 +40,14 @@ INSTANTIATE_TEST_SUITE_P(Bags, JointStateValuesTest,
                                            std::pair("joint_states_zstd.mcap", 200),
                                            std::pair("joint_states_lz4.mcap", 200),
                                            std::pair("joint_states_unchunked.mcap", 200),
-                                           std::pair("joint_states_big_endian.mcap", 50)),
+                                           std::pair("joint_states_big_endian.mcap", 50),
+                                           // rosbag2 folders split in two, and a bare .db3
+                                           std::pair("rosbag2_mcap", 200),
+                                           std::pair("rosbag2_sqlite", 200),
+                                           std::pair("rosbag2_mcap_file_zstd", 200),
+                                           std::pair("rosbag2_mcap_message_zstd", 200),
+                                           std::pair("rosbag2_sqlite_file_zstd", 200),
+                                           std::pair("joint_states.db3", 100)),
                          [](const auto& info) {
                            std::string name = info.param.first;
                            return name.substr(0, name.find('.'));
@@ -53,7 +63,8 @@ TEST(JointStateBagTest, ReadsBothPublishersOfATopic) {
 }
 
 TEST(JointStateBagTest, ReadsTheFilesOfASplitBagFolderInTheirNumberedOrder) {
-  EXPECT_EQ(BagFiles(TestBag("split_bag")).back(), TestBag("split_bag/split_bag_10.mcap"));
+  EXPECT_EQ(FindBagFiles(TestBag("split_bag")).files.back().path,
+            TestBag("split_bag/split_bag_10.mcap"));
   std::vector<std::int64_t> stamps;
   ReadJointStates(TestBag("split_bag"), "/joint_states", [&](const BagJointState& state) {
     stamps.push_back(state.message.StampNanoseconds());
@@ -90,15 +101,26 @@ INSTANTIATE_TEST_SUITE_P(
         BadTopic{"no_messages.mcap", "/joint_states", "no messages on '/joint_states'"},
         BadTopic{"garbage_message.mcap", "/joint_states",
                  "garbage_message.mcap: message 1 on '/joint_states' (log time 0.000000005 s): "
-                 "not a JointState in CDR: "}),
+                 "not a JointState in CDR: "},
+        // SQLite files that are no rosbag2 bags (written by Python's sqlite3 module)
+        BadTopic{"bad_not_sqlite.db3", "/joint_states",
+                 "bad_not_sqlite.db3: not a rosbag2 SQLite file: file is not a database"},
+        BadTopic{"bad_no_messages_table.db3", "/joint_states",
+                 "bad_no_messages_table.db3: not a rosbag2 SQLite file: no such table: messages"},
+        BadTopic{"bad_text_data.db3", "/joint_states",
+                 "bad_text_data.db3: not a rosbag2 SQLite file: row 4 of 'messages' holds "
+                 "something other than a blob in 'data'"},
+        BadTopic{"bad_null_name.db3", "/joint_states",
+                 "bad_null_name.db3: not a rosbag2 SQLite file: row 2 of 'topics' holds something "
+                 "other than text in 'name'"}),
     [](const auto& info) {
       std::string name = info.param.file;
       return name.substr(0, name.find('.')) + (info.index == 1 ? "_other_topic" : "");
     });
 
-TEST(JointStateBagTest, AFolderWithoutMcapFilesIsAnError) {
-  EXPECT_THAT(test::ErrorText([] { BagFiles(URDFSNAP_SOURCE_DIR "/tests/bag"); }),
-              HasSubstr("a folder without .mcap files"));
+TEST(JointStateBagTest, AFolderWithoutBagFilesIsAnError) {
+  EXPECT_THAT(test::ErrorText([] { FindBagFiles(URDFSNAP_SOURCE_DIR "/tests/bag"); }),
+              HasSubstr("a folder without metadata.yaml, .mcap or .db3 files: not a ROS 2 bag"));
 }
 
 }  // namespace

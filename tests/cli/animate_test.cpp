@@ -85,6 +85,26 @@ int RobotPixels(const image::Image& frame) {
   return count;
 }
 
+// The centre (x, y in pixels) of the pixels RobotPixels counts.
+std::pair<double, double> RobotCentre(const image::Image& frame) {
+  double x = 0, y = 0;
+  int count = 0;
+  for (std::size_t p = 0; p + 2 < frame.rgb.size(); p += 3) {
+    const int r = frame.rgb[p], g = frame.rgb[p + 1], b = frame.rgb[p + 2];
+    if (std::max({r, g, b}) - std::min({r, g, b}) <= 40) continue;
+    const std::size_t pixel = p / 3, width = static_cast<std::size_t>(frame.width);
+    x += static_cast<double>(pixel % width);
+    y += static_cast<double>(pixel / width);
+    ++count;
+  }
+  return count > 0 ? std::pair(x / count, y / count) : std::pair(0.0, 0.0);
+}
+
+// How far apart two centres are, in pixels.
+double Apart(std::pair<double, double> a, std::pair<double, double> b) {
+  return std::hypot(a.first - b.first, a.second - b.second);
+}
+
 class AnimateTest : public CliTest {
  protected:
   void SetUp() override {
@@ -382,8 +402,10 @@ TEST_F(AnimateTest, BagsFromTheMcapWriterGiveTheRecordedMotion) {
     EXPECT_LE(difference.max, 64) << name;
     EXPECT_LE(difference.mean, 0.05) << name;
   }
-  // the other compressions, an unchunked bag and a rosbag2 folder of eleven files: the same frames
-  for (const std::string bag : {"joint_states_lz4.mcap", "joint_states_none.mcap", "joint_states_unchunked.mcap"}) {
+  // the other compressions, an unchunked bag, rosbag2 folders of SQLite and compressed MCAP files
+  // (split in two) and a rosbag2 folder of eleven files: the same frames
+  for (const std::string bag : {"joint_states_lz4.mcap", "joint_states_none.mcap", "joint_states_unchunked.mcap",
+                                "rosbag2_sqlite", "rosbag2_mcap_message_zstd"}) {
     Ok("animate " + arm + " --trajectory " + test::TestBag(bag) + " --fps 10" + view + " -o " + Path(bag + "/%02d.png"));
     for (int k = 0; k < 20; k += 6) {
       const std::string frame = "/" + std::string(k < 10 ? "0" : "") + std::to_string(k) + ".png";
@@ -396,6 +418,67 @@ TEST_F(AnimateTest, BagsFromTheMcapWriterGiveTheRecordedMotion) {
   EXPECT_TRUE(fs::exists(Path("split/05.png")));
   EXPECT_FALSE(fs::exists(Path("split/06.png")));
   EXPECT_EQ(ReadBytes(Path("split/05.png")), ReadBytes(Path("zstd/05.png")));
+}
+
+TEST_F(AnimateTest, StartAndEndPlayPartOfABagInSecondsOrStamps) {
+  const std::string arm = Write("arm.urdf", kBagArm);
+  const std::string view = " --size 160x120 --yaw -1.5708 --pitch 0.25 --distance 3.5 --focal 0,0,0.3";
+  const std::string bag = " --trajectory " + test::TestBag("joint_states_zstd.mcap") + " --fps 10" + view;
+  Ok("animate " + arm + bag + " -o " + Path("all/%02d.png"));
+  // from 0.5 s after the first stamp to the stamp 1 s after it: 6 frames, frame k at 0.5 + k / 10 s
+  Ok("animate " + arm + bag + " --start 0.5 --end 1700000001 -o " + Path("part/%02d.png"));
+  EXPECT_TRUE(fs::exists(Path("part/05.png")));
+  EXPECT_FALSE(fs::exists(Path("part/06.png")));
+  EXPECT_EQ(ReadBytes(Path("part/00.png")), ReadBytes(Path("all/05.png")));
+  EXPECT_EQ(ReadBytes(Path("part/05.png")), ReadBytes(Path("all/10.png")));
+  const Result late = RunUrdfsnap("animate " + arm + bag + " --start 5 -o " + Path("late/%02d.png"));
+  EXPECT_EQ(late.status, 2);
+  EXPECT_NE(late.output.find("--start 5 s is outside"), std::string::npos) << late.output;
+}
+
+TEST_F(AnimateTest, ABagAloneIsTheModelAndTheMotion) {
+  // rover_loop.mcap recorded the rover's description on /robot_description: no MODEL needed
+  const std::string rover = test::TestBag("rover_loop.mcap") + " --fps 2 --end 1 --size 160x120 --yaw 0.8 "
+                            "--pitch 0.5 --distance 2.5 --focal 0,0,0.2";
+  Ok("animate " + rover + " -o " + Path("rover/%d.png"));
+  ASSERT_TRUE(fs::exists(Path("rover/2.png")));
+  // frame 2 (t = 1 s) is the sample model with the wheels and head as recorded then
+  EXPECT_EQ(ReadBytes(Path("rover/2.png")),
+            Render((kSource / "models/rover_description/urdf/rover.urdf").string() + " --size 160x120 " +
+                   FrameWords(rover, 2)));
+  // a bag without a description, and one whose description is no URDF
+  const Result none = RunUrdfsnap("animate " + test::TestBag("joint_states_zstd.mcap") + " -o " + Path("none.gif"));
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.output.find("joint_states_zstd.mcap: no robot description: no message on '/robot_description'; "
+                             "its topics are: /camera/image_raw"),
+            std::string::npos)
+      << none.output;
+  const Result junk = RunUrdfsnap("animate " + test::TestBag("description_junk.mcap") + " -o " + Path("junk.gif"));
+  EXPECT_EQ(junk.status, 2);
+  EXPECT_NE(junk.output.find("description_junk.mcap: '/robot_description'"), std::string::npos) << junk.output;
+  EXPECT_EQ(junk.output.find("robot_description.urdf"), std::string::npos) << junk.output;
+  EXPECT_FALSE(fs::exists(Path("none.gif")) || fs::exists(Path("junk.gif")));
+}
+
+TEST_F(AnimateTest, AFixedFrameOutsideTheRobotPlacesItWhereTfSays) {
+  // rover_loop.mcap drives a loop of 1 m radius about (0, 1) in 8 s; seen from above its centre
+  const std::string rover = test::TestBag("rover_loop.mcap") +
+                            " --fps 1 --size 160x120 --no-grid --yaw 0 --pitch 1.5 --distance 6 --focal 0,1,0";
+  Ok("animate " + rover + " --fixed-frame odom -o " + Path("odom/%d.png"));
+  Ok("animate " + rover + " -o " + Path("base/%d.png"));
+  // at 0 s odom and base_link coincide
+  EXPECT_EQ(ReadBytes(Path("odom/0.png")), ReadBytes(Path("base/0.png")));
+  // at 4 s the rover is across the loop, 2 m (about 48 pixels) from where it started; in its own
+  // frame it stays where it was
+  const auto centre = [&](const std::string& frame) { return RobotCentre(image::ReadPng(Path(frame))); };
+  EXPECT_GT(Apart(centre("odom/4.png"), centre("odom/0.png")), 35);
+  EXPECT_LT(Apart(centre("base/4.png"), centre("base/0.png")), 5);
+  EXPECT_GT(RobotPixels(image::ReadPng(Path("odom/4.png"))), 100);
+  // a frame TF does not connect to the robot
+  const Result other = RunUrdfsnap("animate " + rover + " --fixed-frame map -o " + Path("map/%d.png"));
+  EXPECT_EQ(other.status, 2);
+  EXPECT_NE(other.output.find("--fixed-frame 'map': neither a link of the robot nor a frame"), std::string::npos)
+      << other.output;
 }
 
 TEST_F(AnimateTest, BagWithTwoPublishersMovesTheArmAndTheGripper) {
@@ -429,12 +512,49 @@ TEST_F(AnimateTest, DepthAndLabelSequencesAreRendersOfTheSameFrames) {
   EXPECT_FALSE(fs::exists(Path("l/0.json")));
 }
 
-TEST_F(AnimateTest, JointsBeyondTheirLimitsAreClampedWithOneWarningPerJoint) {
-  // mrm's revolute joints reach about +-3.14 (link_01__link_02: +-1.57): two joints leave them in
-  // most frames
+TEST_F(AnimateTest, JointsBeyondTheirLimitsAreDrawnAsRecordedWithOneWarningPerJoint) {
   const std::string far = Write("far.csv", "time,base_link__link_01,link_01__link_02\n0,0,0\n1,9,-4\n2,-9,4\n");
   const Result result = RunUrdfsnap("animate " + mrm_ + " --trajectory " + far + " --fps 10" + kView + " -o " +
                                     Path("far/%02d.png"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("urdfsnap: warning: joint 'link_01__link_02': " + far +
+                               " takes it outside its limits"),
+            std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("drawn as recorded (--clamp clamps it)"), std::string::npos) << result.output;
+  // frame 10 (t = 1 s) shows the values themselves; --print-frame says so with --no-clamp
+  EXPECT_EQ(ReadBytes(Path("far/10.png")),
+            Render(mrm_ + kView + " --no-clamp -j base_link__link_01=9 -j link_01__link_02=-4"));
+  const Result words = RunUrdfsnap("animate " + mrm_ + " --trajectory " + far + " --fps 10 --print-frame 10" + kView);
+  ASSERT_EQ(words.status, 0) << words.output;
+  EXPECT_NE(words.output.find("--no-clamp"), std::string::npos) << words.output;
+}
+
+TEST_F(AnimateTest, JointsTheModelLacksAreIgnoredWithOneWarning) {
+  // a gripper on the same topic as the arm: robot_state_publisher ignores what the model lacks
+  const std::string extra = Write("extra.csv", "time,base_link__link_01,gripper_left,gripper_right\n0,0,0,0\n1,1,0.1,0.1\n");
+  const Result result = RunUrdfsnap("animate " + mrm_ + " --trajectory " + extra + " --fps 2" + kView + " -o " +
+                                    Path("extra/%d.png"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find(extra + ": joints robot 'mrm' does not have are ignored: 'gripper_left', "
+                                       "'gripper_right' (--strict-joints stops instead)"),
+            std::string::npos)
+      << result.output;
+  EXPECT_EQ(ReadBytes(Path("extra/2.png")), Render(mrm_ + kView + " -j base_link__link_01=1"));
+  const Result strict = RunUrdfsnap("animate " + mrm_ + " --trajectory " + extra + " --strict-joints --fps 2" +
+                                    kView + " -o " + Path("strict/%d.png"));
+  EXPECT_EQ(strict.status, 2);
+  EXPECT_NE(strict.output.find(extra + ":1: robot 'mrm' has no joint 'gripper_left'"), std::string::npos)
+      << strict.output;
+  EXPECT_FALSE(fs::exists(Path("strict")));
+}
+
+TEST_F(AnimateTest, ClampKeepsJointsWithinTheirLimitsWithOneWarningPerJoint) {
+  // mrm's revolute joints reach about +-3.14 (link_01__link_02: +-1.57): two joints leave them in
+  // most frames
+  const std::string far = Write("far.csv", "time,base_link__link_01,link_01__link_02\n0,0,0\n1,9,-4\n2,-9,4\n");
+  const Result result = RunUrdfsnap("animate " + mrm_ + " --trajectory " + far + " --clamp --fps 10" + kView +
+                                    " -o " + Path("far/%02d.png"));
   ASSERT_EQ(result.status, 0) << result.output;
   std::istringstream lines(result.output);
   std::vector<std::string> warnings;

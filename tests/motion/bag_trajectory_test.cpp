@@ -29,6 +29,9 @@ TEST(BagTrajectoryTest, ReadsTheJointsOfEveryMessage) {
   }
   EXPECT_NEAR(trajectory.EndTime(), 1.99, 1e-9);
   EXPECT_THAT(elbow.named_at, HasSubstr("joint_states_zstd.mcap: message 1 on '/joint_states'"));
+  // time 0 is the first message's stamp, for --start and --end given as stamps
+  ASSERT_TRUE(trajectory.stamp_at_zero.has_value());
+  EXPECT_DOUBLE_EQ(*trajectory.stamp_at_zero, test::kBagStartNanoseconds * 1e-9);
 }
 
 TEST(BagTrajectoryTest, UnstampedMessagesAreTimedByLogTimeWithAWarning) {
@@ -95,6 +98,9 @@ TEST(TrajectoryFileTest, DetectsTheFormatByExtensionThenContent) {
   EXPECT_EQ(DetectTrajectoryFormat("a.yml", ""), TrajectoryFormat::kRosMessages);
   EXPECT_EQ(DetectTrajectoryFormat("a.json", ""), TrajectoryFormat::kRosMessages);
   EXPECT_EQ(DetectTrajectoryFormat("a.mcap", ""), TrajectoryFormat::kBag);
+  EXPECT_EQ(DetectTrajectoryFormat("a.db3", ""), TrajectoryFormat::kBag);
+  EXPECT_EQ(DetectTrajectoryFormat("recording", std::string("SQLite format 3\0", 16)),
+            TrajectoryFormat::kBag);
   EXPECT_EQ(DetectTrajectoryFormat("recording", std::string("\x89MCAP0\r\n", 8)),
             TrajectoryFormat::kBag);
   EXPECT_EQ(DetectTrajectoryFormat("plan.txt", "time,a,b\n0,1,2\n"), TrajectoryFormat::kCsv);

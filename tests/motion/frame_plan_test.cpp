@@ -55,6 +55,34 @@ TEST(FramePlanTest, ADurationReplacesTheTrajectoryLength) {
   EXPECT_EQ(PlanFrames(EndingAt(0.0), 30, 1).frame_count, 1);
 }
 
+TEST(FramePlanTest, AWindowPlaysPartOfTheTrajectoryFromItsStart) {
+  // 10 s, from 2.5 s to 4 s at 10 frames/s: 16 frames, frame k at 2.5 + k / 10
+  const FramePlan plan = PlanFrames(EndingAt(10.0), 10, 1, {}, {2.5, 4.0});
+  EXPECT_EQ(plan.frame_count, 16);
+  EXPECT_DOUBLE_EQ(plan.TrajectoryTime(0), 2.5);
+  EXPECT_DOUBLE_EQ(plan.TrajectoryTime(15), 4.0);
+  EXPECT_DOUBLE_EQ(plan.Seconds(15), 1.5);
+  EXPECT_EQ(PlanFrames(EndingAt(10.0), 10, 2, {}, {8.0, {}}).frame_count, 11);  // 2 s at speed 2
+  EXPECT_THAT(test::ErrorText([] { PlanFrames(EndingAt(10.0), 10, 1, {}, {4.0, 4.0}); }),
+              HasSubstr("--end 4 s is not after the start at 4 s"));
+  EXPECT_THAT(test::ErrorText([] { PlanFrames(EndingAt(10.0), 10, 1, {}, {12.0, {}}); }),
+              HasSubstr("--start 12 s is outside"));
+  EXPECT_THAT(test::ErrorText([] { PlanFrames(EndingAt(9, TimeBase::kRows), 10, 1, {}, {1.0, {}}); }),
+              HasSubstr("a table without a time column"));
+}
+
+TEST(FramePlanTest, StampsNameTimesOfStampedTrajectories) {
+  Trajectory stamped = EndingAt(10.0);
+  stamped.stamp_at_zero = 1700000000.0;
+  EXPECT_DOUBLE_EQ(TrajectorySeconds(stamped, 1700000002.5, "--start"), 2.5);
+  EXPECT_DOUBLE_EQ(TrajectorySeconds(stamped, 2.5, "--start"), 2.5);
+  Trajectory plan = EndingAt(10.0);
+  plan.source = "plan.yaml";
+  EXPECT_THAT(test::ErrorText([&] { TrajectorySeconds(plan, 1700000002.5, "--end"); }),
+              HasSubstr("--end 1700000002.5 is a stamp (seconds since 1970), and plan.yaml has no "
+                        "stamps"));
+}
+
 TEST(FramePlanTest, TurntableTurnsOnceWithoutRepeatingTheFirstFrame) {
   const FramePlan plan = PlanStill(1.0, 4);  // 5 frames
   EXPECT_DOUBLE_EQ(plan.TurntableYaw(0, 0.5), 0.5);

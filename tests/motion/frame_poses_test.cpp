@@ -1,5 +1,6 @@
 // Poses per frame on a small robot: interpolated trajectory joints, defaults for the others, mimic
-// joints following, unknown joints located in the trajectory, one clamp warning per joint.
+// joints following, unknown joints ignored with one warning (located errors when strict), values
+// drawn as recorded or clamped with one warning per joint.
 #include "motion/frame_poses.h"
 
 #include <gmock/gmock.h>
@@ -45,7 +46,7 @@ class FramePosesTest : public ::testing::Test {
 TEST_F(FramePosesTest, InterpolatesTheTrajectoryAndTakesDefaultsForTheRest) {
   Warnings warnings;
   const Trajectory wave = Wave();
-  const FramePoses poses(robot_, wave, {{"shoulder", 0.5}, {"elbow", 9.0}}, true, warnings);
+  const FramePoses poses(robot_, wave, {{"shoulder", 0.5}, {"elbow", 9.0}}, {}, warnings);
   // shoulder from the defaults, elbow and finger interpolated (the trajectory wins over the
   // default for elbow), finger2 mimics finger, the fixed joint stays 0
   EXPECT_THAT(poses.At(0.5, warnings), ElementsAre(0.5, 1.0, 0.01, 0.02, 0.0));
@@ -53,44 +54,92 @@ TEST_F(FramePosesTest, InterpolatesTheTrajectoryAndTakesDefaultsForTheRest) {
   EXPECT_TRUE(warnings.empty()) << warnings.messages()[0];
 }
 
-TEST_F(FramePosesTest, AnUnknownJointIsLocatedInTheTrajectory) {
+TEST_F(FramePosesTest, JointsTheRobotLacksAreIgnoredWithOneWarning) {
+  // a gripper's and a second robot's joints on the same topic
+  Trajectory trajectory = Wave();
+  trajectory.tracks.push_back({"gripper_left", {0, 1}, {0, 0.01}, "wave.csv:1"});
+  trajectory.tracks.push_back({"other_arm", {0, 1}, {0, 1}, "wave.csv:1"});
+  Warnings warnings;
+  const FramePoses poses(robot_, trajectory, {}, {}, warnings);
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre("wave.csv: joints robot 'arm' does not have are ignored: "
+                          "'gripper_left', 'other_arm' (--strict-joints stops instead)"));
+  EXPECT_THAT(poses.At(0.5, warnings), ElementsAre(0.0, 1.0, 0.01, 0.02, 0.0));
+  EXPECT_EQ(warnings.messages().size(), 1u);
+
+  // none of them the robot's: another robot's trajectory, an error at the first
+  Trajectory other;
+  other.tracks = {{"wheel", {0, 1}, {0, 1}, "other.csv:1"}};
+  EXPECT_EQ(test::ErrorText([&] { FramePoses(robot_, other, {}, {}, warnings); }),
+            "other.csv:1: robot 'arm' has no joint 'wheel'; its movable joints are: shoulder, "
+            "elbow, finger");
+}
+
+TEST_F(FramePosesTest, StrictJointsLocateAnUnknownJointInTheTrajectory) {
   Trajectory trajectory = Wave();
   trajectory.tracks[1].joint = "fingr";
   trajectory.tracks[1].named_at = "wave.csv:1";
   Warnings warnings;
-  EXPECT_EQ(test::ErrorText([&] { FramePoses(robot_, trajectory, {}, true, warnings); }),
+  EXPECT_EQ(test::ErrorText([&] {
+              FramePoses(robot_, trajectory, {}, {.strict_joints = true}, warnings);
+            }),
             "wave.csv:1: robot 'arm' has no joint 'fingr'; its movable joints are: shoulder, "
             "elbow, finger");
 }
 
-TEST_F(FramePosesTest, ClampsEveryFrameButWarnsOncePerJoint) {
+TEST_F(FramePosesTest, ValuesOutsideTheLimitsAreDrawnAsRecordedWithOneWarningPerJoint) {
+  Trajectory trajectory;
+  trajectory.source = "swing.csv";
+  trajectory.tracks = {{"shoulder", {0, 1, 2, 3}, {0, 1.5, -2.5, 0}, "swing.csv:1"},
+                       {"finger", {0, 1}, {0, 0.04}, "swing.csv:1"}};
+  Warnings warnings;
+  const FramePoses poses(robot_, trajectory, {}, {}, warnings);
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre("joint 'shoulder': swing.csv takes it outside its limits [-1, 1] at "
+                          "1 s, furthest to -2.5 at 2 s (1.5 beyond); drawn as recorded "
+                          "(--clamp clamps it)"));
+  EXPECT_DOUBLE_EQ(poses.At(2, warnings)[0], -2.5);
+  EXPECT_DOUBLE_EQ(poses.At(1, warnings)[0], 1.5);
+  EXPECT_EQ(warnings.messages().size(), 1u);
+}
+
+TEST_F(FramePosesTest, ClampTrajectoryClampsEveryFrameButWarnsOncePerJoint) {
   Trajectory trajectory;
   trajectory.source = "swing.csv";
   trajectory.tracks = {{"shoulder", {0, 1, 2, 3}, {0, 1.5, -2.5, 0}, "swing.csv:1"}};
   Warnings warnings;
-  const FramePoses poses(robot_, trajectory, {}, true, warnings);
-  ASSERT_EQ(warnings.messages().size(), 1u);
-  EXPECT_EQ(warnings.messages()[0],
-            "joint 'shoulder': swing.csv moves it to -2.5 at 2 s, outside its limits [-1, 1]; "
-            "clamped in every frame as joint_state_publisher's slider would (--no-clamp keeps it)");
+  const FramePoses poses(robot_, trajectory, {}, {.clamp_trajectory = true}, warnings);
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre("joint 'shoulder': swing.csv takes it outside its limits [-1, 1] at "
+                          "1 s, furthest to -2.5 at 2 s (1.5 beyond); clamped in every frame as "
+                          "joint_state_publisher's slider would"));
   for (double t = 0; t <= 3; t += 0.1) {
     const double shoulder = poses.At(t, warnings)[0];
     EXPECT_GE(shoulder, -1.0);
     EXPECT_LE(shoulder, 1.0);
   }
   EXPECT_EQ(warnings.messages().size(), 1u);
+}
 
+TEST_F(FramePosesTest, DefaultsAreClampedAsRenderClampsThemUnlessTold) {
+  const Trajectory wave = Wave();
+  Warnings warnings;
+  const FramePoses clamped(robot_, wave, {{"shoulder", 5.0}}, {}, warnings);
+  EXPECT_EQ(clamped.At(0, warnings)[0], 1.0);
+  EXPECT_THAT(warnings.messages(), ElementsAre(HasSubstr("joint 'shoulder': 5 is outside its "
+                                                         "limits [-1, 1]; clamped to 1")));
   Warnings unclamped_warnings;
-  const FramePoses unclamped(robot_, trajectory, {}, false, unclamped_warnings);
+  const FramePoses unclamped(robot_, wave, {{"shoulder", 5.0}}, {.clamp_defaults = false},
+                             unclamped_warnings);
+  EXPECT_EQ(unclamped.At(0, unclamped_warnings)[0], 5.0);
   EXPECT_TRUE(unclamped_warnings.empty());
-  EXPECT_DOUBLE_EQ(unclamped.At(2, unclamped_warnings)[0], -2.5);
 }
 
 TEST_F(FramePosesTest, AFixedJointInTheTrajectoryWarnsOnceAcrossFrames) {
   Trajectory trajectory;
   trajectory.tracks = {{"tool_joint", {0, 1}, {0, 1}, "t.csv:1"}};
   Warnings warnings;
-  const FramePoses poses(robot_, trajectory, {}, true, warnings);
+  const FramePoses poses(robot_, trajectory, {}, {}, warnings);
   for (double t = 0; t <= 1; t += 0.25) poses.At(t, warnings);
   ASSERT_EQ(warnings.messages().size(), 1u);
   EXPECT_THAT(warnings.messages()[0], HasSubstr("joint 'tool_joint' is fixed"));

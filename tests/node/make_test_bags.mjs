@@ -1,6 +1,7 @@
 // Writes the MCAP bags urdfsnap's tests read, with the MCAP project's own TypeScript writer
 // (@mcap/core) and Foxglove's ROS 2 CDR serialiser, so that urdfsnap's reader is checked against
-// implementations it shares no code with. Also writes corrupt and truncated variants.
+// implementations it shares no code with; rosbag2 folders (split, SQLite through write_db3.py,
+// zstd-compressed per file or per message). Also writes corrupt and truncated variants.
 // usage: node make_test_bags.mjs OUT_DIR [--large] [--seeds SEED_DIR]
 //   --large: also a ~350 MB bag for benchmarks; --seeds: also tiny bags (a few messages, one with
 //   its chunk CRC zeroed so that mutations inside the chunk get past the check) as fuzz seeds, e.g.
@@ -9,8 +10,10 @@
 // Every JointState bag carries message i (i = 0, 1, ...) with header.stamp = 1700000000 s + i * 10 ms,
 // log time = stamp + 1 ms, and positions shoulder = 0.01 i, elbow = -0.02 i, wrist = 0.5 (the C++
 // tests recompute these).
-import { mkdirSync, writeFileSync, readFileSync } from "node:fs";
-import { join } from "node:path";
+import { execFileSync } from "node:child_process";
+import { mkdirSync, writeFileSync, readFileSync, rmSync } from "node:fs";
+import { dirname, join } from "node:path";
+import { fileURLToPath } from "node:url";
 import { McapWriter } from "@mcap/core";
 import { CdrWriter, EncapsulationKind } from "@foxglove/cdr";
 import { ros2humble } from "@foxglove/rosmsg-msgs-common";
@@ -28,21 +31,24 @@ await zstd.isLoaded;
 const kStartSec = 1700000000;
 const kJoints = ["shoulder", "elbow", "wrist"];
 
-// the schema text rosbag2 stores for sensor_msgs/msg/JointState (ros2msg, dependencies appended)
+// the schema texts rosbag2 stores (ros2msg: the type's .msg, then each type it uses after a line
+// of '=' and "MSG: pkg/Name")
+const kSeparator = "=".repeat(80);
+const kHeaderSections = `${kSeparator}
+MSG: std_msgs/Header
+builtin_interfaces/Time stamp
+string frame_id
+${kSeparator}
+MSG: builtin_interfaces/Time
+int32 sec
+uint32 nanosec
+`;
 const kJointStateSchema = `std_msgs/Header header
 string[] name
 float64[] position
 float64[] velocity
 float64[] effort
-================================================================================
-MSG: std_msgs/Header
-builtin_interfaces/Time stamp
-string frame_id
-================================================================================
-MSG: builtin_interfaces/Time
-int32 sec
-uint32 nanosec
-`;
+${kHeaderSections}`;
 
 const jointStateWriter = new MessageWriter([
   ros2humble["sensor_msgs/JointState"],
@@ -285,6 +291,183 @@ for (let part = 0; part <= 10; ++part) {
   writeFileSync(join(split, `split_bag_${part}.mcap`), await writeBag({ channels: [jointStateChannel], messages }));
 }
 writeFileSync(join(split, "metadata.yaml"), "rosbag2_bagfile_information:\n  storage_identifier: mcap\n");
+
+// rosbag2 folders as `ros2 bag record` writes them, each split into two files of 100 joint states
+// (with /tf rows beside them): metadata.yaml naming the storage, the files and their compression
+function metadataYaml(storage, files, compressionMode = "") {
+  return [
+    "rosbag2_bagfile_information:",
+    "  version: 5",
+    `  storage_identifier: ${storage}`,
+    "  relative_file_paths:",
+    ...files.map((file) => `    - ${file}`),
+    `  compression_format: "${compressionMode ? "zstd" : ""}"`,
+    `  compression_mode: "${compressionMode}"`,
+    "",
+  ].join("\n");
+}
+const hex = (bytes) => Buffer.from(bytes).toString("hex");
+function splitMessages(part) {
+  return robotMessages(200).filter(([channel]) => channel !== 2).slice(part * 200, part * 200 + 200);
+}
+const db3Specs = [];
+function addDb3(file, messages, { sql = [], topics } = {}) {
+  db3Specs.push({
+    file,
+    topics: topics ?? [
+      [1, "/joint_states", "sensor_msgs/msg/JointState", "cdr"],
+      [2, "/tf", "tf2_msgs/msg/TFMessage", "cdr"],
+    ],
+    messages: messages.map(([channel, logTime, data]) => [channel + 1, Number(logTime), hex(data)]),
+    sql,
+  });
+}
+for (const [name, storage, mode] of [
+  ["rosbag2_sqlite", "sqlite3", ""],
+  ["rosbag2_mcap", "mcap", ""],
+  ["rosbag2_mcap_file_zstd", "mcap", "FILE"],
+  ["rosbag2_mcap_message_zstd", "mcap", "MESSAGE"],
+  ["rosbag2_sqlite_file_zstd", "sqlite3", "FILE"],
+]) {
+  const folder = join(out, name);
+  mkdirSync(folder, { recursive: true });
+  const extension = storage === "mcap" ? "mcap" : "db3";
+  const files = [0, 1].map((part) => `${name}_${part}.${extension}${mode === "FILE" ? ".zstd" : ""}`);
+  for (const part of [0, 1]) {
+    let messages = splitMessages(part);
+    if (mode === "MESSAGE") messages = messages.map(([c, t, data]) => [c, t, zstd.compress(data, 3)]);
+    const path = join(folder, files[part]);
+    if (storage === "sqlite3") {
+      addDb3(mode === "FILE" ? `${path}.db3` : path, messages);
+    } else {
+      const bytes = await writeBag({ channels: [jointStateChannel, tfChannel], messages });
+      writeFileSync(path, mode === "FILE" ? zstd.compress(bytes, 3) : bytes);
+    }
+  }
+  writeFileSync(join(folder, "metadata.yaml"), metadataYaml(storage, files, mode));
+}
+// a bare .db3 file, and SQLite files that are no rosbag2 bags
+addDb3(join(out, "joint_states.db3"), splitMessages(0));
+addDb3(join(out, "bad_no_messages_table.db3"), splitMessages(0), { sql: ["DROP TABLE messages"] });
+addDb3(join(out, "bad_text_data.db3"), splitMessages(0), { sql: ["UPDATE messages SET data = 'junk' WHERE id = 4"] });
+addDb3(join(out, "bad_null_name.db3"), splitMessages(0), { sql: ["UPDATE topics SET name = x'00ff' WHERE id = 2"] });
+writeFileSync(join(out, "bad_not_sqlite.db3"), "SQLite format 3\0but nothing else");
+// transforms: a base driving +x while turning on /tf (odom -> base_link every 100 ms, x = 0.1 i m,
+// yaw = 0.1 i rad, i = 0 .. 10) with its laser on /tf_static (base_link -> laser at 0.1, 0, 0.3),
+// as MCAP with definitions and as SQLite without; and broken trees
+const kTfMessageSchema = `geometry_msgs/TransformStamped[] transforms
+${kSeparator}
+MSG: geometry_msgs/TransformStamped
+std_msgs/Header header
+string child_frame_id
+Transform transform
+${kHeaderSections}${kSeparator}
+MSG: geometry_msgs/Transform
+Vector3 translation
+Quaternion rotation
+${kSeparator}
+MSG: geometry_msgs/Vector3
+float64 x
+float64 y
+float64 z
+${kSeparator}
+MSG: geometry_msgs/Quaternion
+float64 x 0
+float64 y 0
+float64 z 0
+float64 w 1
+`;
+const tfWriter = new MessageWriter([
+  ros2humble["tf2_msgs/TFMessage"], ros2humble["geometry_msgs/TransformStamped"], ros2humble["std_msgs/Header"],
+  ros2humble["builtin_interfaces/Time"], ros2humble["geometry_msgs/Transform"], ros2humble["geometry_msgs/Vector3"],
+  ros2humble["geometry_msgs/Quaternion"],
+]);
+const tfSchema = { name: "tf2_msgs/msg/TFMessage", encoding: "ros2msg", data: new TextEncoder().encode(kTfMessageSchema) };
+const tfChannels = [{ topic: "/tf", schema: tfSchema }, { topic: "/tf_static", schema: tfSchema }];
+function transform(parent, child, stamp, [x, y, z], yaw, rotation = null) {
+  return {
+    header: { stamp, frame_id: parent },
+    child_frame_id: child,
+    transform: {
+      translation: { x, y, z },
+      rotation: rotation ?? { x: 0, y: 0, z: Math.sin(yaw / 2), w: Math.cos(yaw / 2) },
+    },
+  };
+}
+function tfMessages(change = (i, t) => t) {
+  const start = { sec: kStartSec, nanosec: 0 };
+  const messages = [[1, nanos(start), tfWriter.writeMessage({ transforms: [transform("base_link", "laser", start, [0.1, 0, 0.3], 0)] })]];
+  for (let i = 0; i <= 10; ++i) {
+    const stamp = { sec: kStartSec + Math.floor(i / 10), nanosec: (i % 10) * 100_000_000 };
+    const t = change(i, transform("odom", "base_link", stamp, [0.1 * i, 0, 0], 0.1 * i));
+    messages.push([0, nanos(stamp), tfWriter.writeMessage({ transforms: [t] })]);
+  }
+  return messages;
+}
+const tfBags = {
+  "tf_drive.mcap": tfMessages(),
+  "tf_nan.mcap": tfMessages((i, t) => (i === 2 ? { ...t, transform: { ...t.transform, rotation: { x: NaN, y: 0, z: 0, w: 1 } } } : t)),
+  "tf_loop.mcap": tfMessages((i, t) => (i === 3 ? transform("laser", "odom", t.header.stamp, [0, 0, 0], 0) : t)),
+  "tf_two_parents.mcap": tfMessages((i, t) => (i === 4 ? { ...t, header: { ...t.header, frame_id: "map" } } : t)),
+  "tf_backwards.mcap": tfMessages((i, t) => (i === 5 ? { ...t, header: { ...t.header, stamp: { sec: kStartSec, nanosec: 0 } } } : t)),
+};
+for (const [name, messages] of Object.entries(tfBags)) {
+  writeFileSync(join(out, name), await writeBag({ channels: tfChannels, messages }));
+}
+// the rover sample (models/rover_description) driving a loop of 1 m radius anticlockwise in
+// `seconds` at `hz`: its wheels on /joint_states (each turning by the distance it rolls over its
+// 0.1 m radius), its head panning, odom -> base_link on /tf, its description on /robot_description
+const roverUrdf = readFileSync(join(dirname(fileURLToPath(import.meta.url)), "../../models/rover_description/urdf/rover.urdf"), "utf8");
+const stringWriter = new MessageWriter([ros2humble["std_msgs/String"]]);
+const kStringSchema = "string data\n";
+function roverLoop(seconds, hz) {
+  const radius = 1, track = 0.46, wheel = 0.1;
+  const channels = [
+    jointStateChannel,
+    { topic: "/tf", schema: tfSchema },
+    { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } },
+  ];
+  const start = { sec: kStartSec, nanosec: 0 };
+  const messages = [[2, nanos(start), stringWriter.writeMessage({ data: roverUrdf })]];
+  const count = Math.round(seconds * hz);
+  for (let i = 0; i <= count; ++i) {
+    const t = i / hz;
+    const heading = (2 * Math.PI * t) / seconds;
+    const nanosec = Math.round((t % 1) * 1e9);
+    const stamp = { sec: kStartSec + Math.floor(t), nanosec: nanosec >= 1e9 ? 0 : nanosec };
+    const left = (heading * (radius - track / 2)) / wheel;
+    const right = (heading * (radius + track / 2)) / wheel;
+    const names = ["front_left_wheel_joint", "rear_left_wheel_joint", "front_right_wheel_joint", "rear_right_wheel_joint", "head_pan_joint"];
+    const state = { header: { stamp, frame_id: "" }, name: names, position: [left, left, right, right, Math.sin(heading * 2)], velocity: [], effort: [] };
+    const base = transform("odom", "base_link", stamp, [radius * Math.sin(heading), radius * (1 - Math.cos(heading)), 0], heading);
+    messages.push([0, nanos(stamp), jointStateWriter.writeMessage(state)]);
+    messages.push([1, nanos(stamp), tfWriter.writeMessage({ transforms: [base] })]);
+  }
+  return writeBag({ channels, messages, chunkSize: 1 << 20 });
+}
+writeFileSync(join(out, "rover_loop.mcap"), await roverLoop(8, 20));
+// a description that is no URDF
+writeFileSync(join(out, "description_junk.mcap"), await writeBag({
+  channels: [jointStateChannel, { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } }],
+  messages: [[1, 5n, stringWriter.writeMessage({ data: "<robot name='x'><link name='a'/><joint" })], ...robotMessages(3).filter(([c]) => c === 0)],
+}));
+if (large) writeFileSync(join(out, "rover_loop_60s.mcap"), await roverLoop(60, 100));
+addDb3(join(out, "tf_drive.db3"), tfMessages(), {
+  topics: [
+    [1, "/tf", "tf2_msgs/msg/TFMessage", "cdr"],
+    [2, "/tf_static", "tf2_msgs/msg/TFMessage", "cdr"],
+  ],
+});
+const specFile = join(out, "db3_specs.json");
+writeFileSync(specFile, JSON.stringify(db3Specs));
+execFileSync("python3", [join(dirname(fileURLToPath(import.meta.url)), "write_db3.py"), specFile]);
+// whole-file compression of the .db3 splits, once SQLite has written them
+for (const part of [0, 1]) {
+  const path = join(out, "rosbag2_sqlite_file_zstd", `rosbag2_sqlite_file_zstd_${part}.db3.zstd`);
+  writeFileSync(path, zstd.compress(readFileSync(`${path}.db3`), 3));
+  rmSync(`${path}.db3`);
+}
+rmSync(specFile);
 
 // for benchmarks: 1 kHz joint states for 20 s beside 30 Hz 640x480 RGB camera images whose noise
 // lets zstd shrink them only by about a third, as real images (553 MB of messages, ~350 MB file)

@@ -1,5 +1,6 @@
-// Reading .rviz files: every honoured property of a file laid out as RViz 1.14 saves it, defaults
-// for missing keys, RViz's limits, errors with file and line, and warnings (unit).
+// Reading .rviz files: every honoured property of a file laid out as RViz 1.14 saves it and of one
+// as RViz 2 saves it, defaults for missing keys, RViz's limits, errors with file and line, and
+// warnings (unit).
 #include "request/rviz_config.h"
 
 #include <cmath>
@@ -263,8 +264,9 @@ TEST_F(RvizConfigTest, MissingKeysKeepTheDefaults) {
 }
 
 TEST_F(RvizConfigTest, GridIsOffWithoutAnEnabledGridDisplay) {
-  EXPECT_FALSE(Read("Visualization Manager:\n  Displays: []\n").scene.grid.enabled);
-  EXPECT_FALSE(Read("Visualization Manager:\n  Class: \"\"\n").scene.grid.enabled);
+  const std::string orbit = "  Views:\n    Current:\n      Class: rviz/Orbit\n";
+  EXPECT_FALSE(Read("Visualization Manager:\n  Displays: []\n" + orbit).scene.grid.enabled);
+  EXPECT_FALSE(Read("Visualization Manager:\n  Class: \"\"\n" + orbit).scene.grid.enabled);
   EXPECT_FALSE(Read(R"(Visualization Manager:
   Displays:
     - Class: rviz/Grid
@@ -412,6 +414,9 @@ TEST_F(RvizConfigTest, UnknownDisplayClassesWarnOncePerClass) {
     - Class: rviz/PointCloud2
       Enabled: true
       Name: Cloud
+  Views:
+    Current:
+      Class: rviz/Orbit
 )");
   EXPECT_THAT(warnings.messages(),
               ElementsAre(path + ": skipped display class 'rviz/MarkerArray', which urdfsnap "
@@ -429,6 +434,8 @@ TEST_F(RvizConfigTest, OtherViewsKeepTheDefaultViewWithAWarning) {
     Current:
       Class: rviz/TopDownOrtho
       Scale: 10
+  Displays:
+    - Class: rviz/Grid
 )",
                                  defaults);
   EXPECT_EQ(config.view.yaw, 1.25);
@@ -478,6 +485,191 @@ TEST_F(RvizConfigTest, PropertiesUrdfsnapCannotFollowAreWarnings) {
                   path + ":24: Views/Current: 'Target Frame' is not <Fixed Frame>; urdfsnap "
                          "orbits in the fixed frame",
                   path + ":23: Views/Current: 'Invert Z Axis' is true; urdfsnap keeps +Z up"));
+}
+
+// Laid out as RViz 2 (Humble) saves a package's view_robot.rviz, as ur_description ships one, with
+// a TF display added: rviz_default_plugins/* and rviz_common/* classes, QoS maps for topics.
+constexpr const char* kRviz2Config = R"(Panels:
+  - Class: rviz_common/Displays
+    Name: Displays
+  - Class: rviz_common/Views
+    Name: Views
+Visualization Manager:
+  Class: ""
+  Displays:
+    - Alpha: 0.5
+      Cell Size: 0.25
+      Class: rviz_default_plugins/Grid
+      Color: 160; 160; 164
+      Enabled: true
+      Line Style:
+        Line Width: 0.05000000074505806
+        Value: Lines
+      Name: Floor
+      Normal Cell Count: 0
+      Offset:
+        X: 0
+        Y: 0
+        Z: 0.009999999776482582
+      Plane: XY
+      Plane Cell Count: 20
+      Reference Frame: <Fixed Frame>
+      Value: true
+    - Class: rviz_common/Group
+      Displays:
+        - Alpha: 0.75
+          Class: rviz_default_plugins/RobotModel
+          Collision Enabled: true
+          Description File: ""
+          Description Source: Topic
+          Description Topic:
+            Depth: 5
+            Durability Policy: Volatile
+            History Policy: Keep Last
+            Reliability Policy: Reliable
+            Value: /robot_description
+          Enabled: true
+          Links:
+            All Links Enabled: true
+            base_link:
+              Alpha: 1
+              Show Axes: false
+              Show Trail: false
+              Value: true
+          Name: RobotModel
+          TF Prefix: ""
+          Update Interval: 0
+          Value: true
+          Visual Enabled: false
+      Enabled: true
+      Name: Robot
+    - Class: rviz_default_plugins/TF
+      Enabled: true
+      Filter (blacklist): ""
+      Filter (whitelist): ""
+      Frame Timeout: 15
+      Frames:
+        All Enabled: true
+        base_link:
+          Value: true
+        tool0:
+          Value: true
+      Marker Scale: 0.5
+      Name: TF
+      Show Arrows: true
+      Show Axes: true
+      Show Names: false
+      Tree:
+        base_link:
+          tool0:
+            {}
+      Update Interval: 0
+      Value: true
+    - Class: rviz_default_plugins/LaserScan
+      Enabled: true
+      Name: LaserScan
+  Enabled: true
+  Global Options:
+    Background Color: 48; 48; 48
+    Fixed Frame: base_link
+    Frame Rate: 30
+  Name: root
+  Tools:
+    - Class: rviz_default_plugins/Interact
+      Hide Inactive Objects: true
+  Transformation:
+    Current:
+      Class: rviz_default_plugins/TF
+  Value: true
+  Views:
+    Current:
+      Class: rviz_default_plugins/Orbit
+      Distance: 3.493516445159912
+      Enable Stereo Rendering:
+        Stereo Eye Separation: 0.05999999865889549
+        Stereo Focal Distance: 1
+        Swap Stereo Eyes: false
+        Value: false
+      Focal Point:
+        X: -0.0457618348300457
+        Y: -0.07058511674404144
+        Z: 0.49734944105148315
+      Focal Shape Fixed Size: true
+      Focal Shape Size: 0.05000000074505806
+      Invert Z Axis: false
+      Name: Current View
+      Near Clip Distance: 0.009999999776482582
+      Pitch: 0.15039828419685364
+      Target Frame: <Fixed Frame>
+      Value: Orbit (rviz)
+      Yaw: 0.5353983640670776
+    Saved: ~
+)";
+
+TEST_F(RvizConfigTest, ReadsRviz2ConfigsAsRviz1Ones) {
+  const RvizConfig config = Read(kRviz2Config);
+  const scene::SceneOptions& scene = config.scene;
+  EXPECT_EQ(scene.fixed_frame, "base_link");
+  EXPECT_TRUE(scene.grid.enabled);
+  EXPECT_EQ(scene.grid.cell_size, 0.25);
+  EXPECT_EQ(scene.grid.plane_cell_count, 20);
+  EXPECT_EQ(scene.grid.alpha, 0.5f);
+  EXPECT_NEAR(scene.grid.offset.z(), 0.01, 1e-9);
+  EXPECT_FALSE(scene.show_visual);  // in an rviz_common/Group
+  EXPECT_TRUE(scene.show_collision);
+  EXPECT_EQ(scene.alpha, 0.75);
+  EXPECT_TRUE(scene.tf.enabled);
+  EXPECT_FALSE(scene.tf.show_names);
+  EXPECT_EQ(scene.tf.marker_scale, 0.5);
+  EXPECT_NEAR(config.view.distance, 3.4935164, 1e-6);
+  EXPECT_NEAR(config.view.yaw, 0.5353984, 1e-6);
+  EXPECT_NEAR(config.view.pitch, 0.1503983, 1e-6);
+  EXPECT_TRUE(config.view.focal.isApprox(Eigen::Vector3d(-0.0457618, -0.0705851, 0.4973494), 1e-6));
+  EXPECT_NEAR(config.view.near_clip, 0.01, 1e-9);
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre(path + ": skipped display class 'rviz_default_plugins/LaserScan', which "
+                                 "urdfsnap does not draw"));
+}
+
+TEST_F(RvizConfigTest, NothingUsableIsAnErrorNamingWhatWasSkipped) {
+  EXPECT_EQ(ErrorFor(R"(Visualization Manager:
+  Displays:
+    - Class: rviz_default_plugins/LaserScan
+      Name: Scan
+    - Class: rviz_default_plugins/Map
+      Name: Map
+  Views:
+    Current:
+      Class: rviz_default_plugins/TopDownOrtho
+)"),
+            path + ": nothing urdfsnap can use: no Grid, RobotModel or TF display and no Orbit "
+                   "view; skipped display classes 'rviz_default_plugins/LaserScan', "
+                   "'rviz_default_plugins/Map'");
+  EXPECT_EQ(ErrorFor("Visualization Manager:\n  Displays: []\n"),
+            path + ": nothing urdfsnap can use: no Grid, RobotModel or TF display and no Orbit "
+                   "view");
+}
+
+TEST_F(RvizConfigTest, Rviz2PropertiesUrdfsnapCannotFollowAreWarnings) {
+  Read(R"(Visualization Manager:
+  Displays:
+    - Class: rviz_default_plugins/RobotModel
+      Enabled: true
+      Name: Robot
+      TF Prefix: left
+    - Class: rviz_default_plugins/TF
+      Enabled: true
+      Name: TF
+      Frames:
+        All Enabled: true
+        base_link:
+          Value: false
+)");
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre(path + ":6: rviz_default_plugins/RobotModel display 'Robot': 'TF "
+                                 "Prefix' is not empty; urdfsnap names frames by their links",
+                          path + ":10: rviz_default_plugins/TF display 'TF': 'Frames' hides some "
+                                 "frames; urdfsnap draws every frame"));
 }
 
 }  // namespace

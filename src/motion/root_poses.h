@@ -1,0 +1,33 @@
+// Where the robot stands in a fixed frame outside it (RViz's Fixed Frame set to odom or map): at
+// each moment of a bag, the pose its TF gives the robot's root link in that frame, so that a mobile
+// robot drives across the grid as RViz shows it.
+#pragma once
+
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "common/warnings.h"
+#include "tf/tf_buffer.h"
+
+namespace urdfsnap::motion {
+
+class RootPoses {
+ public:
+  // `buffer`: the bag's transforms (tf::ReadBagTransforms of `bag`); `root`: the robot's root link;
+  // `stamp_at_zero`: the stamp (seconds since 1970) of trajectory time 0. Throws urdfsnap::Error
+  // "--fixed-frame 'map': ..." when TF does not connect the fixed frame to the root.
+  RootPoses(tf::TfBuffer buffer, std::string fixed_frame, std::string root, double stamp_at_zero,
+            const std::string& bag);
+
+  // X_FR, the root's pose in the fixed frame at trajectory time `t` (seconds). Outside the
+  // recorded transforms the nearest one holds, with one warning (the same for every frame).
+  Eigen::Isometry3d At(double t, Warnings& warnings) const;
+
+ private:
+  tf::TfBuffer buffer_;
+  std::string fixed_frame_, root_, bag_;
+  double stamp_at_zero_;
+};
+
+}  // namespace urdfsnap::motion
