@@ -120,9 +120,6 @@ void PrintNewWarnings(const Warnings& printed, const Warnings& later) {
 
 void Run(AnimateOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
-  // the encoder thread keeps a core busy while frames are drawn (before any thread starts)
-  const std::string rasteriser = gl::LeaveCoresToOtherThreads(1);
-  if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
   request::RenderRequest& r = o.render.request;
   r.model = o.model.ToRequest();
@@ -151,6 +148,11 @@ void Run(AnimateOptions& o) {
     const render::Fit fit =
         !r.fit ? render::Fit::kNone : r.focal.empty() ? render::Fit::kFit : render::Fit::kKeepFocal;
     const render::RobotRenderer renderer(robot, settings.scene, warnings);
+    // the encoder thread keeps a core busy while frames are drawn, unless drawing outweighs it
+    // (set while no other thread runs: before the encoder opens and the GL context reads it)
+    gl_loading.wait();
+    const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, renderer.scene().triangle_count());
+    if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
 
     motion::Trajectory trajectory;
     if (!o.trajectory.empty()) trajectory = motion::ReadTrajectory(o.trajectory, {o.topic}, warnings);
