@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds urdfsnap and runs its benchmarks, printing their tables (the C++ ones, then the time and
-# memory of whole commands). Timings only; nothing asserts.
+# memory of whole commands, the published robots last: set URDFSNAP_FRANKA_DESCRIPTION and
+# URDFSNAP_PR2_DESCRIPTION, see bench/robots/robots_bench.sh). Timings only; nothing asserts.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"
@@ -11,3 +12,5 @@ for b in "$root"/build/*_bench; do
 done
 echo "== docs_bench"
 "$root/bench/docs/docs_bench.sh" "$root/build/urdfsnap"
+echo "== robots_bench"
+"$root/bench/robots/robots_bench.sh" "$root/build/urdfsnap"
