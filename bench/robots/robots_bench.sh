@@ -23,7 +23,7 @@ frames_tool=$(dirname "$snap")/urdfsnap_robot_frames
 work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_robots_bench.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-# timed OUT_PREFIX COMMAND...: runs it under /usr/bin/time; sets wall, cpu (s) and peak (MB)
+# timed COMMAND...: runs it under /usr/bin/time; sets wall, cpu (s) and peak (MB)
 timed() {
   /usr/bin/time -f '%e %U %S %M' -o "$work/time" "$@" >/dev/null 2>"$work/stderr" || {
     echo "robots_bench: failed: $*" >&2; cat "$work/stderr" >&2; exit 1; }
@@ -63,6 +63,7 @@ row() {
   # docs
   rm -rf "$work/page"
   timed "$snap" docs "${args[@]}" --no-shard -o "$work/page"
+  # shellcheck disable=SC2059
   printf "$format" "$name" "$triangles" "$render_ms" "$render_cpu" "$render_mb" "$draw_ms" "$draw_cpu" \
     "${fps[@]}" "$(printf %.1f "$wall")" "$(printf %.1f "$cpu")" "$peak"
 }
