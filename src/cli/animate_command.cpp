@@ -246,9 +246,6 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
 
 void Run(AnimateOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
-  // the encoder thread keeps a core busy while frames are drawn (before any thread starts)
-  const std::string rasteriser = gl::LeaveCoresToOtherThreads(1);
-  if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
   request::RenderRequest& r = o.render.request;
   // MODEL given as a bag: its motion and the robot description it recorded
@@ -274,6 +271,12 @@ void Run(AnimateOptions& o) {
     PreparedAnimation animation;
     PrepareAnimation(o, session, animation, warnings);
     if (!o.print_frame.empty()) return PrintFrame(o, animation, warnings);
+    // the encoder thread keeps a core busy while frames are drawn, unless drawing outweighs it
+    // (set while no other thread runs: before the encoder opens and the GL context reads it)
+    gl_loading.wait();
+    const std::string rasteriser =
+        gl::LeaveCoresToOtherThreads(1, animation.robot.renderer->scene().triangle_count());
+    if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
     WriteAnimation(o, choice, session, animation, warnings);
   } catch (const Error& e) {
     PrintWarningsBeforeError(warnings);

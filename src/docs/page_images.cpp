@@ -27,14 +27,14 @@ class PageRenderer {
                const std::vector<PageImage>& files, const std::filesystem::path& folder, Warnings& warnings,
                const Progress& progress)
       : robot_(robot), page_(page), look_(look), folder_(folder), warnings_(warnings), progress_(progress),
-        total_(ImageCount(files)), gl_(look.settings.samples, look.backend) {
+        total_(ImageCount(files)), gl_(look.settings.samples, look.backend),
+        visual_(robot, look.settings.scene, warnings) {
     for (const PageImage& file : files) wanted_.insert(file.file);
   }
 
   void Views() {
     scene::SceneOptions options = look_.settings.scene;
-    const render::RobotRenderer visual(robot_, options, warnings_);
-    if (Wanted(page_.hero_file)) Still(visual, page_.hero_file);
+    if (Wanted(page_.hero_file)) Still(visual_, page_.hero_file);
 
     if (Wanted(page_.collision_file)) {
       options.show_visual = false;
@@ -49,7 +49,7 @@ class PageRenderer {
       Still(render::RobotRenderer(robot_, options, warnings_), page_.tf_file);
     }
 
-    if (Wanted(page_.turntable_file)) Turntable(visual);
+    if (Wanted(page_.turntable_file)) Turntable(visual_);
   }
 
   void Section(const JointSection& section) {
@@ -159,6 +159,10 @@ class PageRenderer {
   const std::int64_t total_;
   std::int64_t done_ = 0;
   gl::Renderer gl_;
+  // the robot as shown, kept for the whole page: while it holds the mesh files and textures, every
+  // faded variant gets the same ones from their caches and gl_ keeps them uploaded (dropped with
+  // each variant, the PR2's were decoded and uploaded again for each of its 39 joint sections)
+  const render::RobotRenderer visual_;
   std::set<std::string> wanted_;
 };
 

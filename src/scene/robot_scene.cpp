@@ -280,6 +280,12 @@ RobotScene::RobotScene(const model::Robot& robot, SceneOptions options, Warnings
   if (options_.tf.enabled && options_.tf.show_names) tf_names_ = MakeTfNameLabels(robot_, options_.tf);
 }
 
+std::size_t RobotScene::triangle_count() const {
+  std::size_t triangles = 0;
+  for (const LinkPart& part : parts_) triangles += part.mesh->indices.size() / 3;
+  return triangles;
+}
+
 Scene RobotScene::Pose(const std::vector<Eigen::Isometry3d>& X_RL,
                        const Eigen::Isometry3d& X_SF) const {
   if (X_RL.size() != robot_.links().size()) {

@@ -40,6 +40,8 @@ class RobotScene {
   const model::Robot& robot() const { return robot_; }
   const SceneOptions& options() const { return options_; }
   const std::vector<LinkPart>& parts() const { return parts_; }
+  // The triangles of all parts: what each frame draws of the robot.
+  std::size_t triangle_count() const;
   // The mesh and texture files read, resolved and without repeats, in the order first used.
   const std::vector<std::string>& files() const { return files_; }
 

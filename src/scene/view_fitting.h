@@ -13,7 +13,9 @@ namespace urdfsnap::scene {
 // every scene `scene_of(k)`, k = 0 .. count-1 (when keep_focal is false), and the smallest
 // distance at which all their vertices project inside the image shrunk by `margin` (a fraction of
 // each side) at that yaw, pitch and field of view. Scenes are asked for twice (bounds, then
-// distance) and not kept, so memory does not grow with `count`. No vertices: `view` unchanged.
+// distance; once with keep_focal) and not kept, so memory does not grow with `count`; a scene
+// placed exactly as the one before it adds nothing and its vertices are not visited again. No
+// vertices: `view` unchanged.
 OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitView view, double aspect,
                   bool keep_focal, double margin = 0.05);
 
