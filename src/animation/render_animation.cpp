@@ -1,7 +1,7 @@
 // RenderAnimation: RunPipeline with image::Frame items (colour, and depth and labels when asked).
 #include "animation/render_animation.h"
 
-#include "animation/sequence_outputs.h"
+#include "render/frame_files.h"
 #include "stream/pipeline.h"
 
 namespace urdfsnap::animation {
@@ -17,9 +17,9 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const
   const auto write = [&](std::int64_t i, const image::Frame& frame) {
     outputs.colour->Write(frame.colour);
     if (outputs.depth) {
-      outputs.depth->Write(DepthFileBytes(frame.depth, outputs.depth->pattern().pattern()));
+      outputs.depth->Write(render::DepthFileBytes(frame.depth, outputs.depth->pattern().pattern()));
     }
-    if (outputs.labels) outputs.labels->Write(LabelFileBytes(frame.labels));
+    if (outputs.labels) outputs.labels->Write(render::LabelFileBytes(frame.labels));
     if (progress) progress->Update(i + 1);
   };
   stream::RunPipeline<image::Frame>(range.size(), depth, render, write);

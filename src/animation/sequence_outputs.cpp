@@ -1,12 +1,10 @@
-// Depth and label sequences: pattern checks, render's file formats as bytes, the names file.
+// Depth and label sequences: pattern checks, their place in the output plan, the names file.
 #include "animation/sequence_outputs.h"
 
 #include <filesystem>
 #include <regex>
 
 #include "common/error.h"
-#include "image/gray16_png.h"
-#include "image/npy_writer.h"
 #include "render/frame_files.h"
 #include "video/frame_pattern.h"
 
@@ -26,8 +24,6 @@ void CheckPattern(const std::string& pattern, const std::string& option) {
   }
 }
 
-std::string Bytes(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
-
 }  // namespace
 
 void CheckDepthPattern(const std::string& pattern, const std::string& option) {
@@ -40,15 +36,10 @@ void CheckLabelsPattern(const std::string& pattern, const std::string& option) {
   render::CheckLabelsPath(pattern, option);
 }
 
-std::string DepthFileBytes(const image::DepthImage& depth, const std::string& file) {
-  if (std::filesystem::path(file).extension() == ".npy") {
-    return image::EncodeNpyFloat32(depth.width, depth.height, depth.metres);
-  }
-  return Bytes(image::EncodeGray16Png(render::DepthMillimetres(depth)));
-}
-
-std::string LabelFileBytes(const image::LabelImage& labels) {
-  return Bytes(image::EncodeGray16Png({labels.width, labels.height, labels.labels}));
+void PlanOutput(OutputPlan& plan, const std::string& path, const std::string& role) {
+  if (!video::FramePattern::IsPattern(path)) return plan.AddFile(path, role);
+  const video::FramePattern pattern(path);
+  plan.AddSequence(path, pattern.prefix(), pattern.suffix(), role);
 }
 
 std::string LabelNamesPath(const std::string& pattern) {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "image/image.h"
+#include "common/output_plan.h"
 
 namespace urdfsnap::animation {
 
@@ -14,10 +14,8 @@ namespace urdfsnap::animation {
 void CheckDepthPattern(const std::string& pattern, const std::string& option);
 void CheckLabelsPattern(const std::string& pattern, const std::string& option);
 
-// The bytes `render --depth FILE` writes for `depth`, FILE's extension choosing the format.
-std::string DepthFileBytes(const image::DepthImage& depth, const std::string& file);
-// The bytes `render --labels FILE.png` writes into FILE.png.
-std::string LabelFileBytes(const image::LabelImage& labels);
+// Adds the output `path` to `plan`: the numbered files of a frame pattern, or one file.
+void PlanOutput(OutputPlan& plan, const std::string& path, const std::string& role);
 
 // Where a label sequence's link names (render::LabelNamesJson) go, once for the whole sequence:
 // the pattern without its frame number and the separator before it, as .json

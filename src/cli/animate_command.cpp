@@ -18,8 +18,6 @@
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "cli/shard_options.h"
-#include "common/atomic_file.h"
-#include "common/created_folders.h"
 #include "common/error.h"
 #include "common/number_text.h"
 #include "gl/gl_context.h"
@@ -30,6 +28,7 @@
 #include "motion/trajectory_file.h"
 #include "render/frame_files.h"
 #include "request/render_session.h"
+#include "request/request_inputs.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
 #include "video/frame_encoder.h"
@@ -134,6 +133,19 @@ void Run(AnimateOptions& o) {
   const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
+  // no output may be another output or an input; their folders are made (removed again on failure)
+  OutputPlan outputs;
+  if (o.print_frame.empty()) {
+    request::AddRequestInputs(outputs, r);
+    outputs.AddInput(o.trajectory, "--trajectory");
+    animation::PlanOutput(outputs, o.output, "-o");
+    if (!o.depth.empty()) animation::PlanOutput(outputs, o.depth, "--depth");
+    if (!o.labels.empty()) {
+      animation::PlanOutput(outputs, o.labels, "--labels");
+      outputs.AddFile(animation::LabelNamesPath(o.labels), "the link names of --labels");
+    }
+    outputs.Prepare();
+  }
 
   Warnings warnings;
   try {
@@ -176,19 +188,13 @@ void Run(AnimateOptions& o) {
 
     // every output opened (and so checked writable) before the first frame
     frames.Positions(0, warnings);  // a pose's warnings are every frame's: print them first
-    CreatedFolders folders;
-    for (const std::string* file : {&o.output, &o.depth, &o.labels}) {
-      if (!file->empty()) folders.MakeParents(*file);
-    }
     const auto encoder = video::OpenFrameEncoder(
         o.output, {settings.size.width, settings.size.height, plan.fps, range.first}, warnings);
     std::optional<video::FrameFiles> depth, labels;
-    std::optional<AtomicFile> label_names;
     if (!o.depth.empty()) depth.emplace(o.depth, range.first);
     if (!o.labels.empty()) {
       labels.emplace(o.labels, range.first);
-      label_names.emplace(animation::LabelNamesPath(o.labels));
-      label_names->Write(render::LabelNamesJson(*robot));
+      outputs.Write(animation::LabelNamesPath(o.labels), render::LabelNamesJson(*robot));
     }
     PrintWarnings(warnings);   // --strict ends here, before any frame
 
@@ -200,8 +206,7 @@ void Run(AnimateOptions& o) {
     animation::RenderAnimation(renderer, gl, frames, range,
                                {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr},
                                &bar, later);
-    if (label_names) label_names->Commit();
-    folders.Keep();
+    outputs.Commit();
     PrintNewWarnings(warnings, later);
   } catch (...) {
     PrintWarningsBeforeError(warnings);

@@ -1,5 +1,6 @@
 // `urdfsnap docs`: a robot's documentation page (README.md, index.html and their pictures) written
 // into a folder that appears only when complete, or `--check`ed against a fresh one for CI.
+#include <filesystem>
 #include <memory>
 
 #include "cli/command.h"
@@ -16,6 +17,7 @@
 #include "gl/gl_context.h"
 #include "request/model_request.h"
 #include "request/render_request.h"
+#include "request/request_inputs.h"
 #include "request/settings_parsing.h"
 #include "stream/progress_bar.h"
 
@@ -52,6 +54,16 @@ void Run(DocsOptions& o) {
     throw Error("docs: give -o DIR to write a page, or --check DIR to compare a committed page with a fresh one");
   }
   o.request.model = o.model.ToRequest();
+  // the page replaces its folder as a whole: no file the page is made from may be in it
+  OutputPlan outputs;
+  if (!o.output.empty()) {
+    request::AddRequestInputs(outputs, o.request);
+    outputs.AddFolder(o.output, "-o");
+    outputs.Prepare();
+  } else if (std::error_code error; std::filesystem::exists(o.check, error) &&
+                                    !std::filesystem::is_directory(o.check, error)) {
+    throw Error("--check '" + o.check + "': exists and is not a folder");
+  }
   const shard::ShardChoice choice =
       o.sharding.Choose(o.check.empty() ? "" : "docs --check compares the whole page with a fresh one");
   Warnings warnings;
@@ -94,6 +106,7 @@ void Run(DocsOptions& o) {
     bar.Finish();
     PrintWarnings(warnings);
     folder.Commit();
+    outputs.Commit();
   } catch (const CommandExit&) {
     throw;
   } catch (...) {

@@ -7,10 +7,12 @@
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
+#include "common/output_plan.h"
 #include "image/png_writer.h"
 #include "render/frame_files.h"
 #include "gl/gl_context.h"
 #include "request/render_session.h"
+#include "request/request_inputs.h"
 
 namespace urdfsnap::cli {
 
@@ -37,6 +39,17 @@ void Run(RenderCommandOptions& o) {
   o.render.ParseJointWords();
   if (!o.depth.empty()) render::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) render::CheckLabelsPath(o.labels, "--labels");
+  // every output checked, and its folder made, before drawing; all written, or none
+  const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
+  OutputPlan plan;
+  request::AddRequestInputs(plan, o.render.request);
+  plan.AddFile(output, o.output.empty() ? "the output" : "-o");
+  if (!o.depth.empty()) plan.AddFile(o.depth, "--depth");
+  if (!o.labels.empty()) {
+    plan.AddFile(o.labels, "--labels");
+    plan.AddFile(render::LabelNamesFile(o.labels), "the link names of --labels");
+  }
+  plan.Prepare();
   Warnings warnings;
   request::RenderSession session(backend);
   image::Frame frame;
@@ -51,11 +64,13 @@ void Run(RenderCommandOptions& o) {
     throw;
   }
   PrintWarnings(warnings);
-  const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
-  if (o.output.empty()) std::filesystem::create_directories("output");
-  image::WritePng(frame.colour, output);
-  if (!o.depth.empty()) render::WriteDepthFile(frame.depth, o.depth);
-  if (!o.labels.empty()) render::WriteLabelFiles(frame.labels, *robot, o.labels);
+  plan.Write(output, image::EncodePng(frame.colour));
+  if (!o.depth.empty()) plan.Write(o.depth, render::DepthFileBytes(frame.depth, o.depth));
+  if (!o.labels.empty()) {
+    plan.Write(o.labels, render::LabelFileBytes(frame.labels));
+    plan.Write(render::LabelNamesFile(o.labels), render::LabelNamesJson(*robot));
+  }
+  plan.Commit();
 }
 
 }  // namespace

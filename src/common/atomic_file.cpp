@@ -19,19 +19,8 @@ namespace {
   throw Error(path + ": cannot write: " + std::system_category().message(error_number));
 }
 
-// Six random letters and digits, as mkstemp would pick (mkstemp itself makes files mode 0600;
-// an output image should get the usual 0666 less the umask).
-std::string RandomSuffix() {
-  static constexpr char kAlphabet[] =
-      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
-  std::random_device device;
-  std::uniform_int_distribution<int> pick(0, sizeof kAlphabet - 2);
-  std::string suffix;
-  for (int i = 0; i < 6; ++i) suffix += kAlphabet[pick(device)];
-  return suffix;
-}
-
-// Opens a new temporary file beside `path`; returns its descriptor and fills `temp_path`.
+// Opens a new temporary file beside `path` (not with mkstemp, which makes files mode 0600; an
+// output image should get the usual 0666 less the umask); returns its descriptor and fills `temp_path`.
 int CreateTemporary(const std::string& path, std::string& temp_path) {
   for (int attempt = 0; attempt < 100; ++attempt) {
     temp_path = path + ".tmp-" + RandomSuffix();
@@ -59,6 +48,16 @@ int WriteAll(int fd, std::string_view bytes, std::int64_t offset = -1) {
 }
 
 }  // namespace
+
+std::string RandomSuffix() {
+  // lower case only: the names stay distinct on case-insensitive file systems
+  static constexpr char kAlphabet[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+  std::random_device device;
+  std::uniform_int_distribution<int> pick(0, sizeof kAlphabet - 2);
+  std::string suffix;
+  for (int i = 0; i < 6; ++i) suffix += kAlphabet[pick(device)];
+  return suffix;
+}
 
 void WriteFileAtomically(const std::string& path, std::string_view bytes) {
   AtomicFile file(path);
@@ -89,15 +88,18 @@ void AtomicFile::WriteAt(std::uint64_t offset, std::string_view bytes) {
   }
 }
 
+void AtomicFile::Close() {
+  if (fd_ < 0) return;
+  const int error_number = ::close(fd_) != 0 ? errno : 0;
+  fd_ = -1;
+  if (error_number != 0) ThrowWriteError(path_, error_number);  // the destructor unlinks
+}
+
 void AtomicFile::Commit() {
   // no fsync: the promise is "never a partial file after a failed run", not durability across a
   // power cut, and fsync would cost more than encoding an image
-  int error_number = ::close(fd_) != 0 ? errno : 0;
-  fd_ = -1;
-  if (error_number == 0 && std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
-    error_number = errno;
-  }
-  if (error_number != 0) ThrowWriteError(path_, error_number);  // the destructor unlinks
+  Close();
+  if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) ThrowWriteError(path_, errno);  // the destructor unlinks
   committed_ = true;
 }
 

@@ -7,9 +7,9 @@
 #include <sys/stat.h>
 
 #include <cerrno>
-#include <random>
 #include <system_error>
 
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/file_reading.h"
 
@@ -21,15 +21,6 @@ namespace {
 
 [[noreturn]] void Fail(const fs::path& path, const std::string& what, int error_number) {
   throw Error(path.string() + ": " + what + ": " + std::system_category().message(error_number));
-}
-
-std::string RandomSuffix() {
-  static constexpr char kAlphabet[] = "abcdefghijklmnopqrstuvwxyz0123456789";
-  std::random_device device;
-  std::uniform_int_distribution<int> pick(0, sizeof kAlphabet - 2);
-  std::string suffix;
-  for (int i = 0; i < 6; ++i) suffix += kAlphabet[pick(device)];
-  return suffix;
 }
 
 // True when `folder` holds an index.html made by urdfsnap docs.

@@ -7,7 +7,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "common/atomic_file.h"
 #include "common/error.h"
 #include "image/gray16_png.h"
 #include "image/npy_writer.h"
@@ -17,6 +16,8 @@ namespace urdfsnap::render {
 namespace {
 
 std::string Extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
+
+std::string Bytes(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
 
 }  // namespace
 
@@ -41,13 +42,14 @@ void CheckLabelsPath(const std::string& path, const std::string& option) {
   if (Extension(path) != ".png") throw Error(option + " '" + path + "': expected a .png file (16-bit labels)");
 }
 
-void WriteDepthFile(const image::DepthImage& depth, const std::string& path) {
+std::string DepthFileBytes(const image::DepthImage& depth, const std::string& path) {
   CheckDepthPath(path, "depth file");
-  if (Extension(path) == ".npy") {
-    image::WriteNpyFloat32(depth.width, depth.height, depth.metres, path);
-  } else {
-    image::WriteGray16Png(DepthMillimetres(depth), path);
-  }
+  if (Extension(path) == ".npy") return image::EncodeNpyFloat32(depth.width, depth.height, depth.metres);
+  return Bytes(image::EncodeGray16Png(DepthMillimetres(depth)));
+}
+
+std::string LabelFileBytes(const image::LabelImage& labels) {
+  return Bytes(image::EncodeGray16Png({labels.width, labels.height, labels.labels}));
 }
 
 std::string LabelNamesJson(const model::Robot& robot) {
@@ -56,10 +58,8 @@ std::string LabelNamesJson(const model::Robot& robot) {
   return names.dump(2) + "\n";
 }
 
-void WriteLabelFiles(const image::LabelImage& labels, const model::Robot& robot, const std::string& path) {
-  CheckLabelsPath(path, "labels file");
-  image::WriteGray16Png({labels.width, labels.height, labels.labels}, path);
-  WriteFileAtomically(std::filesystem::path(path).replace_extension(".json").string(), LabelNamesJson(robot));
+std::string LabelNamesFile(const std::string& path) {
+  return std::filesystem::path(path).replace_extension(".json").string();
 }
 
 }  // namespace urdfsnap::render

@@ -5,7 +5,8 @@
 //   labels .png: 16-bit, 1 + the link's index (Robot::links() order, as `urdfsnap info` lists the
 //               links), 0 where none; with FILE.json beside FILE.png mapping each value (a decimal
 //               string) to the link's name.
-// All written atomically (temporary file + rename).
+// As bytes: the command writing them plans its outputs (common/output_plan.h) and writes them all
+// or none.
 #pragma once
 
 #include <string>
@@ -18,19 +19,21 @@ namespace urdfsnap::render {
 // Millimetres as the 16-bit depth PNG stores them (0 where there is no robot).
 image::Gray16Image DepthMillimetres(const image::DepthImage& depth);
 
-// Writes `depth` to `path` by its extension (.png or .npy). Throws urdfsnap::Error naming the
-// path for another extension or a write failure.
-void WriteDepthFile(const image::DepthImage& depth, const std::string& path);
+// The bytes of the depth file `path` for `depth`, by its extension (.png or .npy). Throws
+// urdfsnap::Error naming the path for another extension.
+std::string DepthFileBytes(const image::DepthImage& depth, const std::string& path);
+
+// The bytes of a label image file (.png).
+std::string LabelFileBytes(const image::LabelImage& labels);
 
 // The JSON object {"1": "base_link", "2": ...} for every link of `robot`.
 std::string LabelNamesJson(const model::Robot& robot);
 
-// Writes `labels` to `path` (which must end in .png) and LabelNamesJson beside it (same name,
-// .json). Throws urdfsnap::Error naming the path.
-void WriteLabelFiles(const image::LabelImage& labels, const model::Robot& robot, const std::string& path);
+// Where the link names of the label image `path` go: beside it, the same name with .json.
+std::string LabelNamesFile(const std::string& path);
 
-// Throws urdfsnap::Error naming `option` unless `path` has an extension WriteDepthFile (depth) or
-// WriteLabelFiles (labels) takes: for checking command-line options before rendering.
+// Throws urdfsnap::Error naming `option` unless `path` has an extension DepthFileBytes (depth) or
+// LabelFileBytes (labels, .png) takes: for checking command-line options before rendering.
 void CheckDepthPath(const std::string& path, const std::string& option);
 void CheckLabelsPath(const std::string& path, const std::string& option);
 

@@ -1,13 +1,11 @@
 // Depth and label files: millimetres and NaN as ROS's 16UC1/32FC1 conventions have them, the .npy
-// layout numpy.load reads, the label names beside the label image, and bad file names (unit).
+// layout numpy.load reads, the label names and their file, and bad file names (unit).
 #include "render/frame_files.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "common/error.h"
 #include "image/npy_writer.h"
@@ -19,18 +17,11 @@ namespace {
 
 constexpr float kNone = NAN;
 
-std::string Contents(const std::string& path) {
-  std::ostringstream text;
-  text << std::ifstream(path, std::ios::binary).rdbuf();
-  return text.str();
-}
-
 TEST(FrameFiles, DepthPngHoldsMillimetresAndZeroOffTheRobot) {
   const test::TempFolder folder("frame_files");
   const image::DepthImage depth{3, 2, {kNone, 1.2345f, 0.0002f, 2.0f, 70.0f, 65.535f}};
   EXPECT_EQ(DepthMillimetres(depth).values, (std::vector<std::uint16_t>{0, 1235, 1, 2000, 65535, 65535}));
-  WriteDepthFile(depth, folder.Path("depth.png"));
-  const image::Gray16Image read = image::ReadGray16Png(folder.Path("depth.png"));
+  const image::Gray16Image read = image::ReadGray16Png(folder.Write("depth.png", DepthFileBytes(depth, "depth.png")));
   EXPECT_EQ(read.width, 3);
   EXPECT_EQ(read.height, 2);
   EXPECT_EQ(read.values, DepthMillimetres(depth).values);
@@ -39,8 +30,7 @@ TEST(FrameFiles, DepthPngHoldsMillimetresAndZeroOffTheRobot) {
 TEST(FrameFiles, DepthNpyIsFloat32MetresWithNanInNumpysLayout) {
   const test::TempFolder folder("frame_files");
   const image::DepthImage depth{3, 2, {kNone, 1.5f, 2.25f, 3, 4, 5}};
-  WriteDepthFile(depth, folder.Path("depth.npy"));
-  const std::string bytes = Contents(folder.Path("depth.npy"));
+  const std::string bytes = DepthFileBytes(depth, "out/depth.npy");
   ASSERT_EQ(bytes.substr(0, 8), std::string("\x93NUMPY\x01\x00", 8));
   const size_t header_length = static_cast<unsigned char>(bytes[8]) | static_cast<unsigned char>(bytes[9]) << 8;
   EXPECT_EQ((10 + header_length) % 64, 0u);   // the data start 64-byte aligned
@@ -63,13 +53,12 @@ TEST(FrameFiles, LabelPngAndItsNamesBesideIt) {
       "<parent link=\"base\"/><child link=\"arm\"/></joint></robot>",
       "r.urdf", warnings);
   const image::LabelImage labels{2, 2, {0, 1, 2, 2}};
-  WriteLabelFiles(labels, robot, folder.Path("labels.png"));
-  EXPECT_EQ(image::ReadGray16Png(folder.Path("labels.png")).values, labels.labels);
-  EXPECT_EQ(Contents(folder.Path("labels.json")), "{\n  \"1\": \"base\",\n  \"2\": \"arm\"\n}\n");
+  EXPECT_EQ(image::ReadGray16Png(folder.Write("labels.png", LabelFileBytes(labels))).values, labels.labels);
+  EXPECT_EQ(LabelNamesJson(robot), "{\n  \"1\": \"base\",\n  \"2\": \"arm\"\n}\n");
+  EXPECT_EQ(LabelNamesFile("out/seg.labels.png"), "out/seg.labels.json");
 }
 
-TEST(FrameFiles, BadNamesAreRefusedBeforeAnythingIsWritten) {
-  const test::TempFolder folder("frame_files");
+TEST(FrameFiles, BadNamesAreRefused) {
   try {
     CheckDepthPath("depth.tiff", "--depth");
     FAIL();
@@ -77,8 +66,7 @@ TEST(FrameFiles, BadNamesAreRefusedBeforeAnythingIsWritten) {
     EXPECT_STREQ(e.what(), "--depth 'depth.tiff': expected a .png (16-bit millimetres) or .npy (float32 metres) file");
   }
   EXPECT_THROW(CheckLabelsPath("labels.npy", "--labels"), Error);
-  EXPECT_THROW(WriteDepthFile({1, 1, {1.0f}}, folder.Path("no/such/folder/depth.png")), Error);
-  EXPECT_TRUE(folder.Listing().empty());
+  EXPECT_THROW(DepthFileBytes({1, 1, {1.0f}}, "depth.jpg"), Error);
 }
 
 }  // namespace
