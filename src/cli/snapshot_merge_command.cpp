@@ -47,12 +47,12 @@ void Merge(const MergeOptions& o) {
   for (const snapshot::CaseRecord& r : merged.cases) names.push_back(r.name);
   snapshot::PlanReports(outputs, {o.report_dir, o.junit, o.results}, names);
   outputs.Prepare();
+  if (!o.report_dir.empty()) snapshot::CollectReportImages(outputs, merged, o.report_dir);
   for (const snapshot::CaseRecord& r : merged.cases) {
     if (r.status == snapshot::CaseStatus::kPassed) continue;
     PrintCaseLine(snapshot::StatusWord(r.status), r.name, r.message + " (shard " + r.shard + ")");
   }
   if (!o.report_dir.empty()) {
-    snapshot::CollectReportImages(outputs, merged, o.report_dir);
     snapshot::WriteHtmlReport(outputs, o.report_dir, merged.suite.path, merged.cases);
   }
   if (!o.junit.empty()) snapshot::WriteJunitReport(outputs, o.junit, merged.suite.path, merged.cases);

@@ -19,11 +19,10 @@
 #include <utility>
 #include <vector>
 
+#include "common/atomic_file.h"
 #include "common/created_folders.h"
 
 namespace urdfsnap {
-
-class AtomicFile;
 
 class OutputPlan {
  public:

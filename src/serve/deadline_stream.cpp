@@ -47,7 +47,10 @@ bool DeadlineStream::Poll(short events, Clock::time_point deadline) const {
   for (;;) {
     if (listening_.load() == INVALID_SOCKET) return false;
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-    if (left.count() <= 0) return false;
+    if (left.count() <= 0) {
+      spent_ = true;
+      return false;
+    }
     pollfd p{fd_, events, 0};
     const int ready = ::poll(&p, 1, static_cast<int>(std::min(left, kStopSlice).count()));
     if (ready > 0) return true;   // readable, writable, or closed (the read or write then says)
@@ -71,7 +74,7 @@ bool DeadlineStream::is_writable() const {
 
 ssize_t DeadlineStream::read(char* ptr, size_t size) {
   if (taken_ == buffered_) {
-    if (bytes_read_ >= limits_.request_bytes || !Poll(POLLIN, read_deadline_)) return -1;
+    if (!Poll(POLLIN, read_deadline_)) return -1;
     ssize_t got;
     do {
       got = ::recv(fd_, buffer_, sizeof buffer_, 0);
@@ -80,8 +83,12 @@ ssize_t DeadlineStream::read(char* ptr, size_t size) {
     buffered_ = static_cast<std::size_t>(got);
     taken_ = 0;
   }
-  const std::size_t n = std::min({size, buffered_ - taken_, limits_.request_bytes - std::min(bytes_read_, limits_.request_bytes)});
-  if (n == 0) return -1;  // the request's byte budget is spent
+  const std::size_t budget = limits_.request_bytes - std::min(bytes_read_, limits_.request_bytes);
+  const std::size_t n = std::min({size, buffered_ - taken_, budget});
+  if (n == 0) {
+    spent_ = true;  // the request's byte budget
+    return -1;
+  }
   std::memcpy(ptr, buffer_ + taken_, n);
   taken_ += n;
   bytes_read_ += n;

@@ -28,6 +28,9 @@ class DeadlineStream : public httplib::Stream {
   // Waits until the client sends something (true), or the request's time ends, the client closes
   // or the server stops (false).
   bool WaitForRequest();
+  // Whether the request's time or bytes ran out (the library then answers 400 and would read the
+  // rest as the next request: the connection is to be closed instead).
+  bool spent() const { return spent_; }
 
   bool is_readable() const override;
   bool is_writable() const override;
@@ -39,7 +42,8 @@ class DeadlineStream : public httplib::Stream {
 
  private:
   using Clock = std::chrono::steady_clock;
-  // Polls for `events` until `deadline`, in slices so that a stopping server is noticed.
+  // Polls for `events` until `deadline`, in slices so that a stopping server is noticed; false
+  // (and spent_ set) when the deadline passes first.
   bool Poll(short events, Clock::time_point deadline) const;
 
   int fd_;
@@ -47,6 +51,7 @@ class DeadlineStream : public httplib::Stream {
   StreamLimits limits_;
   Clock::time_point read_deadline_, write_deadline_;
   bool writing_ = false;       // the response of the current request has begun
+  mutable bool spent_ = false;
   std::size_t bytes_read_ = 0;  // of the current request
   char buffer_[4096];           // the library reads lines a byte at a time
   std::size_t buffered_ = 0, taken_ = 0;

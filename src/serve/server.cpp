@@ -91,7 +91,7 @@ class GuardedHttpServer : public httplib::Server {
       if (!stream.WaitForRequest()) break;
       bool closed = false;
       ok = process_request(stream, count == 1, closed, nullptr);
-      if (closed) break;
+      if (closed || stream.spent()) break;
     }
     connections_.Close(current_connection);
     current_connection = 0;

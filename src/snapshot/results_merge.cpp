@@ -120,8 +120,8 @@ void CollectReportImages(OutputPlan& outputs, const MergedResults& merged, const
   std::vector<std::pair<fs::path, fs::path>> copies;
   for (std::size_t i = 0; i < merged.cases.size(); ++i) {
     const CaseRecord& r = merged.cases[i];
-    for (const std::string& file : ReportImageFiles(r)) {
-      const std::string where = merged.sources[i] + ": the report image '" + file + "' of case '" + r.name + "'";
+    for (const auto& [key, file] : ReportImageFiles(r)) {
+      const std::string where = merged.sources[i] + ": case '" + r.name + "': " + key;
       if (merged.image_dirs[i].empty()) {
         throw Error(where + ": the file names no report_dir (its run had no --report)");
       }
