@@ -43,11 +43,12 @@ void Run(RenderCommandOptions& o) {
   const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
   OutputPlan plan;
   request::AddRequestInputs(plan, o.render.request);
-  plan.AddFile(output, o.output.empty() ? "the output" : "-o");
-  if (!o.depth.empty()) plan.AddFile(o.depth, "--depth");
+  // (the default output/ folder is made; a folder given must exist)
+  plan.AddFile(output, o.output.empty() ? "the output" : "-o", o.output.empty());
+  if (!o.depth.empty()) plan.AddFile(o.depth, "--depth", false);
   if (!o.labels.empty()) {
-    plan.AddFile(o.labels, "--labels");
-    plan.AddFile(render::LabelNamesFile(o.labels), "the link names of --labels");
+    plan.AddFile(o.labels, "--labels", false);
+    plan.AddFile(render::LabelNamesFile(o.labels), "the link names of --labels", false);
   }
   plan.Prepare();
   Warnings warnings;

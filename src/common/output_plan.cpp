@@ -81,6 +81,7 @@ struct OutputPlan::Entry {
   std::string path, role;   // as given, for messages
   std::string canonical;    // the canonical path; for a sequence its prefix
   std::string suffix;       // of a sequence
+  bool make_folders = true;  // missing folders above it are made
   bool exists = false;      // a file or folder is there (inode set)
   dev_t device = 0;
   ino_t inode = 0;
@@ -104,8 +105,8 @@ std::string OutputPlan::Canonical(const std::string& path, bool follow_leaf) {
   return (fs::path(at->second) / name).string();
 }
 
-void OutputPlan::AddFile(const std::string& path, const std::string& role) {
-  entries_.push_back({Entry::Kind::kFile, path, role, Canonical(path, true), ""});
+void OutputPlan::AddFile(const std::string& path, const std::string& role, bool make_folders) {
+  entries_.push_back({Entry::Kind::kFile, path, role, Canonical(path, true), "", make_folders});
 }
 
 void OutputPlan::AddSequence(const std::string& pattern, const std::string& prefix, const std::string& suffix,
@@ -129,22 +130,9 @@ void OutputPlan::AddInput(const std::string& path, const std::string& role) {
 }
 
 void OutputPlan::Check(const Entry& entry) {
-  if (entry.kind != Entry::Kind::kFile && entry.kind != Entry::Kind::kFolder) return;
-  // no file stands where a folder of the output should be
   std::error_code error;
-  for (fs::path folder = fs::path(entry.canonical).parent_path(); !folder.empty();
-       folder = folder.parent_path()) {
-    const fs::file_status status = fs::status(folder, error);
-    if (fs::exists(status)) {
-      if (!fs::is_directory(status)) {
-        throw Error(Quoted(entry.role, entry.path) + ": '" + folder.string() + "' is not a folder");
-      }
-      break;
-    }
-    if (folder == folder.parent_path()) break;
-  }
   if (entry.kind == Entry::Kind::kFile && entry.exists && fs::is_directory(entry.canonical, error)) {
-    throw Error(Quoted(entry.role, entry.path) + ": is a folder");
+    throw Error(entry.path + ": cannot write: " + std::make_error_code(std::errc::is_a_directory).message());
   }
   if (entry.kind == Entry::Kind::kFolder && entry.exists && !fs::is_directory(entry.canonical, error)) {
     throw Error(Quoted(entry.role, entry.path) + ": exists and is not a folder");
@@ -201,20 +189,15 @@ void OutputPlan::Prepare() {
     }
   }
   for (const Entry& entry : entries_) Check(entry);
-  // the folders made, and one file tried in each
+  // the folders made where asked, and one file tried in each folder
   std::set<std::string> tried;
   for (const Entry& entry : entries_) {
     if (entry.kind == Entry::Kind::kInput) continue;
-    const std::string file = entry.kind == Entry::Kind::kSequence ? entry.canonical + "0" + entry.suffix
-                                                                  : entry.canonical;
-    folders_.MakeParents(file);
+    const bool numbered = entry.kind == Entry::Kind::kSequence;
+    if (entry.make_folders) folders_.MakeParents(numbered ? entry.canonical + "0" + entry.suffix : entry.path);
     if (entry.kind == Entry::Kind::kFolder) continue;
-    if (tried.insert(fs::path(file).parent_path().string()).second) {
-      try {
-        AtomicFile probe(file);  // made and removed
-      } catch (const Error& e) {
-        throw Error(Quoted(entry.role, entry.path) + ": " + e.what());
-      }
+    if (tried.insert(fs::path(entry.canonical).parent_path().string()).second) {
+      AtomicFile probe(numbered ? entry.canonical + "0" + entry.suffix : entry.path);  // made and removed
     }
   }
 }

@@ -33,7 +33,8 @@ class OutputPlan {
   OutputPlan& operator=(const OutputPlan&) = delete;
 
   // An output file; `role` names it in messages ("-o", "--depth", "the link names of --labels").
-  void AddFile(const std::string& path, const std::string& role);
+  // Without `make_folders` a missing folder above it is an error ("PATH: cannot write: ...").
+  void AddFile(const std::string& path, const std::string& role, bool make_folders = true);
   // Numbered output files `pattern` (as given, for messages): `prefix`, a frame number of one or
   // more digits, then `suffix` ("frames/" and ".png" for frames/%05d.png). The files are written
   // by their own writer.
@@ -48,8 +49,10 @@ class OutputPlan {
 
   // Checks the outputs against each other and against the inputs, then makes the folders they
   // need and checks that a file can be made in each. Throws urdfsnap::Error
-  // "ROLE 'PATH': the same file as ROLE 'PATH'", "... is a folder", "... is inside ROLE 'PATH'",
-  // "... 'DIR' is not a folder", "...: cannot write: <reason>".
+  // "ROLE 'PATH': the same file as ROLE 'PATH'" (or "may name the same file(s) as", "holds",
+  // "is inside"), "ROLE 'PATH': exists and is not a folder" (a folder output), "PATH: cannot
+  // write: <reason>" (an existing folder, a missing one or a file in the way, no permission),
+  // "PATH: cannot make the folder 'DIR': <reason>".
   void Prepare();
 
   // A new temporary file beside `path` (an output of this plan), written by the caller piece by

@@ -102,13 +102,17 @@ TEST_F(OutputPlanTest, PlacesThatCannotHoldTheOutputAreRefused) {
   fs::create_directories(Path("adir"));
   OutputPlan under_file;
   under_file.AddFile(Path("afile/depth.png"), "--depth");
-  EXPECT_EQ(Refusal(under_file), "--depth '" + Path("afile/depth.png") + "': '" + Path("afile") + "' is not a folder");
+  EXPECT_EQ(Refusal(under_file), Path("afile/depth.png") + ": cannot write: Not a directory");
   OutputPlan on_folder;
   on_folder.AddFile(Path("adir"), "the link names of --labels");
-  EXPECT_EQ(Refusal(on_folder), "the link names of --labels '" + Path("adir") + "': is a folder");
+  EXPECT_EQ(Refusal(on_folder), Path("adir") + ": cannot write: Is a directory");
   OutputPlan folder_on_file;
   folder_on_file.AddFolder(Path("afile"), "-o");
   EXPECT_EQ(Refusal(folder_on_file), "-o '" + Path("afile") + "': exists and is not a folder");
+  OutputPlan missing_folder;
+  missing_folder.AddFile(Path("no/such/out.png"), "-o", false);
+  EXPECT_EQ(Refusal(missing_folder), Path("no/such/out.png") + ": cannot write: No such file or directory");
+  EXPECT_FALSE(fs::exists(Path("no")));
 }
 
 TEST_F(OutputPlanTest, AllOrNothing) {
