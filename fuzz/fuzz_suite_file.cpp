@@ -19,8 +19,9 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace urdfsnap;
+  const std::string path = fuzz::WriteInput("suite.yaml", data, size);
   try {
-    const snapshot::Suite suite = snapshot::ReadSuite(fuzz::WriteInput("suite.yaml", data, size));
+    const snapshot::Suite suite = snapshot::ReadSuite(path);
     const auto cases = snapshot::SelectCases(suite, {}, shard::Shard{1, 2});
     OutputPlan check;
     snapshot::AddSuiteInputs(check, suite, cases, true);

@@ -2,7 +2,9 @@
 // report, suite errors located, and the suite rendering exactly what `render` renders, byte for
 // byte, whatever LP_NUM_THREADS is.
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -43,6 +45,46 @@ TEST_F(SnapshotTest, MissingGoldenFailsCheckAndUpdateCreatesIt) {
   EXPECT_TRUE(Contains(r.output, "same     home")) << r.output;
   EXPECT_TRUE(Contains(RunUrdfsnap("snapshot update --force " + suite).output, "wrote    home"));
   EXPECT_EQ(ReadBytes(Path("goldens/home.png")), golden);
+}
+
+// Cases that cannot be rendered: each one stderr line naming the suite file and line (where CI logs
+// and scripts look), an ERROR line on stdout, an <error> in JUnit and a section in the report; the
+// others are checked (and updated) as usual, and the run exits 2.
+TEST_F(SnapshotTest, CasesThatCannotBeRenderedAreErrorsOnStderrAndInTheReports) {
+  URDFSNAP_REQUIRE_GL();
+  Write("pose.yaml", "nope: 1\n");
+  const std::string suite = Write("suite.yaml", "defaults:\n  model: " + kMrm + "\n  size: 80x60\ncases:\n"
+                                  "  - name: good\n"
+                                  "  - name: no_model\n    model: nothing.urdf\n"
+                                  "  - name: bad_joint\n    joints: pose.yaml\n"
+                                  "  - name: huge\n    size: 100000x100000\n"
+                                  "  - name: not_rviz\n    rviz: pose.yaml\n");
+  const auto err_lines = [&](const std::string& file) {
+    std::vector<std::string> lines;
+    std::istringstream in(ReadBytes(file));
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  };
+  Result r = RunUrdfsnap("snapshot update " + suite + " 2> " + Path("update.err"));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(fs::exists(Path("good.png")));
+  r = RunUrdfsnap("snapshot check " + suite + " --report " + Path("report") + " --junit " + Path("junit.xml") +
+                  " 2> " + Path("check.err"));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(Contains(r.output, "ERROR    no_model: " + suite + ":6:")) << r.output;
+  for (const std::string& file : {Path("update.err"), Path("check.err")}) {
+    const std::vector<std::string> lines = err_lines(file);
+    ASSERT_EQ(lines.size(), 4u) << ReadBytes(file);
+    const std::string lines_of_cases[] = {":6: case 'no_model': ", ":9: case 'bad_joint': ", ":11: size",
+                                          ":13: case 'not_rviz': "};
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      EXPECT_EQ(lines[i].rfind("urdfsnap: error: " + suite + lines_of_cases[i], 0), 0u) << lines[i];
+    }
+  }
+  const std::string junit = ReadBytes(Path("junit.xml"));
+  EXPECT_TRUE(Contains(junit, "errors=\"4\"")) << junit;
+  EXPECT_TRUE(Contains(junit, "<error type=\"ERROR\" message=\"" + suite + ":9: case &apos;bad_joint&apos;")) << junit;
+  EXPECT_TRUE(Contains(ReadBytes(Path("report/index.html")), "no_model")) ;
 }
 
 // The machinery's reason to exist: mrm_elbow's golden against the arm moved by 0.01 rad.

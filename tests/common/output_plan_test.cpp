@@ -7,8 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "common/error.h"
 #include "support/temp_folder.h"
@@ -17,12 +15,6 @@ namespace urdfsnap {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Contents(const std::string& path) {
-  std::ostringstream text;
-  text << std::ifstream(path, std::ios::binary).rdbuf();
-  return text.str();
-}
 
 class OutputPlanTest : public testing::Test {
  protected:
@@ -126,10 +118,10 @@ TEST_F(OutputPlanTest, AllOrNothing) {
     EXPECT_TRUE(fs::is_directory(Path("new/deeper")));
     plan.Write(Path("old.png"), std::string_view("new bytes"));
     plan.Write(Path("new/deeper/depth.png"), std::string_view("depth"));
-    EXPECT_EQ(Contents(Path("old.png")), "old bytes");
+    EXPECT_EQ(folder_.Read("old.png"), "old bytes");
   }
   EXPECT_EQ(folder_.Listing(), std::vector<std::string>{"old.png"});
-  EXPECT_EQ(Contents(Path("old.png")), "old bytes");
+  EXPECT_EQ(folder_.Read("old.png"), "old bytes");
   OutputPlan plan;
   plan.AddFile(Path("old.png"), "-o");
   plan.AddFile(Path("new/depth.png"), "--depth");
@@ -139,8 +131,8 @@ TEST_F(OutputPlanTest, AllOrNothing) {
   depth.Write("de");
   depth.Write("pth");
   plan.Commit();
-  EXPECT_EQ(Contents(Path("old.png")), "new bytes");
-  EXPECT_EQ(Contents(Path("new/depth.png")), "depth");
+  EXPECT_EQ(folder_.Read("old.png"), "new bytes");
+  EXPECT_EQ(folder_.Read("new/depth.png"), "depth");
   EXPECT_EQ(folder_.Listing(), (std::vector<std::string>{"new", "old.png"}));
 }
 
