@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 
 std::string ResolveInside(const std::string& folder, const std::string& path) {
   std::error_code error;
-  const fs::path base = fs::weakly_canonical(fs::absolute(folder.empty() ? "." : folder), error);
+  const fs::path base = fs::weakly_canonical(fs::absolute(folder.empty() ? "." : folder, error), error);
   if (error) return "";
   const fs::path resolved = fs::weakly_canonical(base / path, error);
   if (error) return "";

@@ -39,6 +39,13 @@ bool IsInside(const std::string& path, const std::string& folder) {
 
 std::string Quoted(const std::string& role, const std::string& path) { return role + " '" + path + "'"; }
 
+// `path` with every symbolic link resolved; as named when it cannot be looked into.
+std::string Resolved(const fs::path& path) {
+  std::error_code error;
+  const fs::path resolved = fs::weakly_canonical(path, error);
+  return error ? path.string() : resolved.string();
+}
+
 }  // namespace
 
 bool NumberedNamesMeet(std::string_view prefix_a, std::string_view suffix_a, std::string_view prefix_b,
@@ -91,17 +98,16 @@ OutputPlan::OutputPlan() = default;
 OutputPlan::~OutputPlan() = default;
 
 std::string OutputPlan::Canonical(const std::string& path, bool follow_leaf) {
-  const fs::path absolute = fs::absolute(fs::path(path)).lexically_normal();
   std::error_code error;
-  if (follow_leaf && fs::is_symlink(fs::symlink_status(absolute, error))) {
-    return fs::weakly_canonical(absolute, error).string();
-  }
+  const fs::path absolute = fs::absolute(fs::path(path), error).lexically_normal();
+  if (follow_leaf && fs::is_symlink(fs::symlink_status(absolute, error))) return Resolved(absolute);
   // the folder part resolved once per folder; "a/b/" names the folder b
-  fs::path folder = absolute.parent_path(), name = absolute.filename();
-  if (name.empty()) return Canonical(folder.string(), follow_leaf);
+  const fs::path folder = absolute.parent_path(), name = absolute.filename();
+  if (name.empty() && folder != absolute) return Canonical(folder.string(), follow_leaf);
+  if (name.empty()) return absolute.string();  // the root
   auto [at, added] = canonical_folders_.emplace(folder.string(), "");
-  if (added) at->second = fs::weakly_canonical(folder, error).string();
-  if (name == "." || name == "..") return fs::weakly_canonical(absolute, error).string();
+  if (added) at->second = Resolved(folder);
+  if (name == "." || name == "..") return Resolved(absolute);
   return (fs::path(at->second) / name).string();
 }
 
