@@ -24,7 +24,7 @@ std::set<std::string> Listing(const fs::path& folder) {
   std::set<std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(folder)) {
     if (entry.is_directory() && !entry.is_symlink()) continue;
-    const std::string file = fs::relative(entry.path(), folder).generic_string();
+    const std::string file = entry.path().lexically_relative(folder).generic_string();
     ConfineRegularFile(folder.string(), file, folder.string() + ": the page's file '" + file + "'");
     files.insert(file);
   }

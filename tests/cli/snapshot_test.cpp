@@ -59,31 +59,34 @@ TEST_F(SnapshotTest, CasesThatCannotBeRenderedAreErrorsOnStderrAndInTheReports) 
                                   "  - name: bad_joint\n    joints: pose.yaml\n"
                                   "  - name: huge\n    size: 100000x100000\n"
                                   "  - name: not_rviz\n    rviz: pose.yaml\n");
-  const auto err_lines = [&](const std::string& file) {
+  // the "urdfsnap: error: " lines (stderr, merged into the output here)
+  const auto error_lines = [](const std::string& output) {
     std::vector<std::string> lines;
-    std::istringstream in(ReadBytes(file));
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    std::istringstream in(output);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("urdfsnap: error: ", 0) == 0) lines.push_back(line);
+    }
     return lines;
   };
-  Result r = RunUrdfsnap("snapshot update " + suite + " 2> " + Path("update.err"));
-  EXPECT_EQ(r.status, 2) << r.output;
+  const Result update = RunUrdfsnap("snapshot update " + suite);
+  EXPECT_EQ(update.status, 2) << update.output;
   EXPECT_TRUE(fs::exists(Path("good.png")));
-  r = RunUrdfsnap("snapshot check " + suite + " --report " + Path("report") + " --junit " + Path("junit.xml") +
-                  " 2> " + Path("check.err"));
-  EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_TRUE(Contains(r.output, "ERROR    no_model: " + suite + ":6:")) << r.output;
-  for (const std::string& file : {Path("update.err"), Path("check.err")}) {
-    const std::vector<std::string> lines = err_lines(file);
-    ASSERT_EQ(lines.size(), 4u) << ReadBytes(file);
-    const std::string lines_of_cases[] = {":6: case 'no_model': ", ":9: case 'bad_joint': ", ":11: size",
-                                          ":13: case 'not_rviz': "};
+  const Result check = RunUrdfsnap("snapshot check " + suite + " --report " + Path("report") + " --junit " +
+                                   Path("junit.xml"));
+  EXPECT_EQ(check.status, 2) << check.output;
+  EXPECT_TRUE(Contains(check.output, "ERROR    no_model: " + suite + ":6:")) << check.output;
+  for (const Result& r : {update, check}) {
+    const std::vector<std::string> lines = error_lines(r.output);
+    ASSERT_EQ(lines.size(), 4u) << r.output;
+    const std::string lines_of_cases[] = {":6: case 'no_model': ", ":8: case 'bad_joint': ", ":11: size",
+                                          ":12: case 'not_rviz': "};
     for (std::size_t i = 0; i < lines.size(); ++i) {
       EXPECT_EQ(lines[i].rfind("urdfsnap: error: " + suite + lines_of_cases[i], 0), 0u) << lines[i];
     }
   }
   const std::string junit = ReadBytes(Path("junit.xml"));
   EXPECT_TRUE(Contains(junit, "errors=\"4\"")) << junit;
-  EXPECT_TRUE(Contains(junit, "<error type=\"ERROR\" message=\"" + suite + ":9: case &apos;bad_joint&apos;")) << junit;
+  EXPECT_TRUE(Contains(junit, "<error type=\"ERROR\" message=\"" + suite + ":8: case &apos;bad_joint&apos;")) << junit;
   EXPECT_TRUE(Contains(ReadBytes(Path("report/index.html")), "no_model")) ;
 }
 
