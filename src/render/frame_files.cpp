@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "image/gray16_png.h"
 #include "image/npy_writer.h"
@@ -60,6 +61,16 @@ std::string LabelNamesJson(const model::Robot& robot) {
 
 std::string LabelNamesFile(const std::string& path) {
   return std::filesystem::path(path).replace_extension(".json").string();
+}
+
+void WriteDepthFile(const image::DepthImage& depth, const std::string& path) {
+  WriteFileAtomically(path, DepthFileBytes(depth, path));
+}
+
+void WriteLabelFiles(const image::LabelImage& labels, const model::Robot& robot, const std::string& path) {
+  CheckLabelsPath(path, "labels file");
+  WriteFileAtomically(path, LabelFileBytes(labels));
+  WriteFileAtomically(LabelNamesFile(path), LabelNamesJson(robot));
 }
 
 }  // namespace urdfsnap::render

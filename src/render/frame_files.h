@@ -32,6 +32,12 @@ std::string LabelNamesJson(const model::Robot& robot);
 // Where the link names of the label image `path` go: beside it, the same name with .json.
 std::string LabelNamesFile(const std::string& path);
 
+// For C++ API users writing one frame's files: DepthFileBytes into `path`, and LabelFileBytes into
+// `path` with LabelNamesJson into LabelNamesFile(path), each atomically (temporary file + rename).
+// Throws urdfsnap::Error naming the path. (The commands plan all their outputs together instead.)
+void WriteDepthFile(const image::DepthImage& depth, const std::string& path);
+void WriteLabelFiles(const image::LabelImage& labels, const model::Robot& robot, const std::string& path);
+
 // Throws urdfsnap::Error naming `option` unless `path` has an extension DepthFileBytes (depth) or
 // LabelFileBytes (labels, .png) takes: for checking command-line options before rendering.
 void CheckDepthPath(const std::string& path, const std::string& option);

@@ -58,6 +58,19 @@ TEST(FrameFiles, LabelPngAndItsNamesBesideIt) {
   EXPECT_EQ(LabelNamesFile("out/seg.labels.png"), "out/seg.labels.json");
 }
 
+TEST(FrameFiles, TheApiWritesOneFramesFiles) {
+  const test::TempFolder folder("frame_files");
+  Warnings warnings;
+  const model::Robot robot = model::LoadRobot("<robot name=\"r\"><link name=\"base\"/></robot>", "r.urdf", warnings);
+  WriteDepthFile({1, 1, {1.5f}}, folder.Path("d.png"));
+  WriteLabelFiles({1, 1, {1}}, robot, folder.Path("l.png"));
+  EXPECT_EQ(image::ReadGray16Png(folder.Path("d.png")).values, std::vector<std::uint16_t>{1500});
+  EXPECT_EQ(image::ReadGray16Png(folder.Path("l.png")).values, std::vector<std::uint16_t>{1});
+  EXPECT_EQ(folder.Read("l.json"), LabelNamesJson(robot));
+  EXPECT_THROW(WriteDepthFile({1, 1, {1.0f}}, folder.Path("no/such/folder/d.png")), Error);
+  EXPECT_EQ(folder.Listing(), (std::vector<std::string>{"d.png", "l.json", "l.png"}));
+}
+
 TEST(FrameFiles, BadNamesAreRefused) {
   try {
     CheckDepthPath("depth.tiff", "--depth");
