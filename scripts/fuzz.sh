@@ -13,7 +13,7 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] &&
   targets=(xacro_processor xacro_expression urdf_loader joint_file rviz_config png_reader
-    mcap_reader trajectory_text animation_reader)
+    mcap_reader trajectory_text animation_reader results_file suite_file)
 build=${URDFSNAP_FUZZ_BUILD:-$root/build-fuzz}
 
 "$root/scripts/deps.sh" --sanitizers

@@ -1,4 +1,4 @@
-// Depth and label sequences: pattern checks and the names file.
+// Depth and label sequences: pattern checks, their place in the output plan, the names file.
 #include "animation/sequence_outputs.h"
 
 #include <filesystem>
@@ -34,6 +34,12 @@ void CheckDepthPattern(const std::string& pattern, const std::string& option) {
 void CheckLabelsPattern(const std::string& pattern, const std::string& option) {
   CheckPattern(pattern, option);
   image::CheckLabelsPath(pattern, option);
+}
+
+void PlanOutput(OutputPlan& plan, const std::string& path, const std::string& role) {
+  if (!video::FramePattern::IsPattern(path)) return plan.AddFile(path, role);
+  const video::FramePattern pattern(path);
+  plan.AddSequence(path, pattern.prefix(), pattern.suffix(), role);
 }
 
 std::string LabelNamesPath(const std::string& pattern) {

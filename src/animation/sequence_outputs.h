@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "image/image.h"
+#include "common/output_plan.h"
 
 namespace urdfsnap::animation {
 
@@ -13,6 +13,9 @@ namespace urdfsnap::animation {
 // video::FramePattern) of a depth file (.png or .npy) or a label file (.png).
 void CheckDepthPattern(const std::string& pattern, const std::string& option);
 void CheckLabelsPattern(const std::string& pattern, const std::string& option);
+
+// Adds the output `path` to `plan`: the numbered files of a frame pattern, or one file.
+void PlanOutput(OutputPlan& plan, const std::string& path, const std::string& role);
 
 // Where a label sequence's link names (image::LabelNamesJson) go, once for the whole sequence:
 // the pattern without its frame number and the separator before it, as .json

@@ -23,8 +23,6 @@
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "cli/shard_options.h"
-#include "common/atomic_file.h"
-#include "common/created_folders.h"
 #include "common/error.h"
 #include "common/number_text.h"
 #include "gl/gl_context.h"
@@ -35,6 +33,7 @@
 #include "motion/root_poses.h"
 #include "motion/trajectory_file.h"
 #include "request/render_session.h"
+#include "request/request_inputs.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
 #include "tf/bag_transforms.h"
@@ -206,28 +205,22 @@ void PrintFrame(const AnimateOptions& o, const PreparedAnimation& a, Warnings& w
       animation::RenderWords(*a.robot.robot, positions, a.frames->View(k), !o.render.request.no_clamp)) + "\n");
 }
 
-// Renders this shard's frames into the outputs, every output opened (and so checked writable)
-// before the first frame and appearing only when complete.
+// Renders this shard's frames into the outputs `outputs` planned (prepared: checked and their folders
+// made), every output opened before the first frame and appearing only when all are complete.
 void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, request::RenderSession& session,
-                    const PreparedAnimation& a, Warnings& warnings) {
+                    const PreparedAnimation& a, OutputPlan& outputs, Warnings& warnings) {
   const render::RenderSettings& settings = a.robot.settings;
   const shard::FrameRange range = shard::FramesOfShard(a.plan.frame_count, choice.shard);
   PrintShardLine(choice, range.size(), a.plan.frame_count, "frames", RangeText(range));
 
   a.frames->Positions(0, warnings);  // a pose's warnings are every frame's: print them first
-  CreatedFolders folders;
-  for (const std::string* file : {&o.output, &o.depth, &o.labels}) {
-    if (!file->empty()) folders.MakeParents(*file);
-  }
   const auto encoder = video::OpenFrameEncoder(
       o.output, {settings.size.width, settings.size.height, a.plan.fps, range.first}, warnings);
   std::optional<video::FrameFiles> depth, labels;
-  std::optional<AtomicFile> label_names;
   if (!o.depth.empty()) depth.emplace(o.depth, range.first);
   if (!o.labels.empty()) {
     labels.emplace(o.labels, range.first);
-    label_names.emplace(animation::LabelNamesPath(o.labels));
-    label_names->Write(image::LabelNamesJson(a.robot.robot->LinkNames()));
+    outputs.Write(animation::LabelNamesPath(o.labels), image::LabelNamesJson(a.robot.robot->LinkNames()));
   }
   PrintWarnings(warnings);   // --strict ends here, before any frame
 
@@ -238,8 +231,7 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
   animation::RenderAnimation(*a.robot.renderer, session.GlRenderer(settings.samples), *a.frames, range,
                              {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr},
                              &bar, later);
-  if (label_names) label_names->Commit();
-  folders.Keep();
+  outputs.Commit();
   bar.Finish(WrittenText(o.output, range));
   PrintNewWarnings(warnings, later);
 }
@@ -264,6 +256,19 @@ void Run(AnimateOptions& o) {
   const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
+  // no output may be another output or an input; their folders are made (removed again on failure)
+  OutputPlan outputs;
+  if (o.print_frame.empty()) {
+    request::AddRequestInputs(outputs, r);
+    outputs.AddInput(o.trajectory, "--trajectory");
+    animation::PlanOutput(outputs, o.output, "-o");
+    if (!o.depth.empty()) animation::PlanOutput(outputs, o.depth, "--depth");
+    if (!o.labels.empty()) {
+      animation::PlanOutput(outputs, o.labels, "--labels");
+      outputs.AddFile(animation::LabelNamesPath(o.labels), "the link names of --labels");
+    }
+    outputs.Prepare();
+  }
 
   Warnings warnings;
   try {
@@ -277,7 +282,7 @@ void Run(AnimateOptions& o) {
     const std::string rasteriser =
         gl::LeaveCoresToOtherThreads(1, animation.robot.renderer->scene().triangle_count());
     if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
-    WriteAnimation(o, choice, session, animation, warnings);
+    WriteAnimation(o, choice, session, animation, outputs, warnings);
   } catch (const Error& e) {
     PrintWarningsBeforeError(warnings);
     if (bag_model) throw Error(bag_model->Located(e.what()));

@@ -38,7 +38,8 @@ void WriteToStdout(std::string_view text);
 // option's name). CLI::Range alone lets NaN through: it compares false both ways.
 CLI::Validator FiniteNumber();
 
-// One line per snapshot case on stdout, flushed (CI logs show progress): "FAILED   NAME: MESSAGE".
+// One line per snapshot case on stdout, flushed (CI logs show progress): "FAILED   NAME: MESSAGE";
+// for a case that could not be rendered (word "ERROR") also "urdfsnap: error: MESSAGE" on stderr.
 void PrintCaseLine(const char* word, const std::string& name, const std::string& message);
 
 // Each subcommand file defines one of these; main.cpp calls them all.

@@ -4,6 +4,7 @@
 
 #include "cli/command.h"
 #include "common/error.h"
+#include "snapshot/case_record.h"
 
 namespace urdfsnap::cli {
 
@@ -43,6 +44,11 @@ void WriteToStdout(std::string_view text) {
 void PrintCaseLine(const char* word, const std::string& name, const std::string& message) {
   std::printf("%-8s %s: %s\n", word, name.c_str(), message.c_str());
   std::fflush(stdout);
+  // a case that could not be rendered is bad input: its error on stderr too, where CI logs and
+  // scripts look (the message names the suite file and line)
+  if (std::string_view(word) == snapshot::StatusWord(snapshot::CaseStatus::kError)) {
+    std::fprintf(stderr, "urdfsnap: error: %s\n", message.c_str());
+  }
 }
 
 }  // namespace urdfsnap::cli

@@ -9,6 +9,7 @@
 #include "cli/command.h"
 #include "common/error.h"
 #include "common/number_text.h"
+#include "common/output_plan.h"
 #include "image/gray16_diff.h"
 #include "image/image_diff.h"
 #include "image/png_reader.h"
@@ -76,6 +77,13 @@ bool RunGray16(const DiffOptions& o) {
 }
 
 void Run(const DiffOptions& o) {
+  if (!o.diff_output.empty()) {  // the diff image may not overwrite an image it compares
+    OutputPlan outputs;
+    outputs.AddInput(o.expected, "EXPECTED");
+    outputs.AddInput(o.actual, "ACTUAL");
+    outputs.AddFile(o.diff_output, "--diff", false);
+    outputs.Prepare();
+  }
   const bool match = o.depth || o.labels ? RunGray16(o) : RunColour(o);
   if (!match) throw CommandExit{1};
 }

@@ -17,6 +17,7 @@
 #include "docs/page_writer.h"
 #include "gl/gl_context.h"
 #include "request/render_session.h"
+#include "request/request_inputs.h"
 #include "stream/progress_bar.h"
 
 namespace urdfsnap::cli {
@@ -52,6 +53,16 @@ void Run(DocsOptions& o) {
     throw Error("docs: give -o DIR to write a page, or --check DIR to compare a committed page with a fresh one");
   }
   o.request.model = o.model.ToRequest();
+  // the page replaces its folder as a whole: no file the page is made from may be in it
+  OutputPlan outputs;
+  if (!o.output.empty()) {
+    request::AddRequestInputs(outputs, o.request);
+    outputs.AddFolder(o.output, "-o");
+    outputs.Prepare();
+  } else if (std::error_code error; std::filesystem::exists(o.check, error) &&
+                                    !std::filesystem::is_directory(o.check, error)) {
+    throw Error("--check '" + o.check + "': exists and is not a folder");
+  }
   const shard::ShardChoice choice =
       o.sharding.Choose(o.check.empty() ? "" : "docs --check compares the whole page with a fresh one");
   Warnings warnings;
@@ -98,6 +109,7 @@ void Run(DocsOptions& o) {
     docs::WritePage(prepared.robot, page, look, files, folder.path(), warnings, progress);
     PrintWarnings(warnings);
     folder.Commit();
+    outputs.Commit();
     bar.Finish("wrote " + (std::filesystem::path(o.output) / docs::kHtmlFile).string() + " and " +
                (std::filesystem::path(o.output) / docs::kMarkdownFile).string());
   } catch (const CommandExit&) {

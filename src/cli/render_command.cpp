@@ -7,10 +7,12 @@
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
+#include "common/output_plan.h"
 #include "image/depth_label_files.h"
 #include "image/png_writer.h"
 #include "gl/gl_context.h"
 #include "request/render_session.h"
+#include "request/request_inputs.h"
 
 namespace urdfsnap::cli {
 
@@ -37,6 +39,18 @@ void Run(RenderCommandOptions& o) {
   o.render.ParseJointWords();
   if (!o.depth.empty()) image::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) image::CheckLabelsPath(o.labels, "--labels");
+  // every output checked, and its folder made, before drawing; all written, or none
+  const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
+  OutputPlan plan;
+  request::AddRequestInputs(plan, o.render.request);
+  // (the default output/ folder is made; a folder given must exist)
+  plan.AddFile(output, o.output.empty() ? "the output" : "-o", o.output.empty());
+  if (!o.depth.empty()) plan.AddFile(o.depth, "--depth", false);
+  if (!o.labels.empty()) {
+    plan.AddFile(o.labels, "--labels", false);
+    plan.AddFile(image::LabelNamesFile(o.labels), "the link names of --labels", false);
+  }
+  plan.Prepare();
   Warnings warnings;
   request::RenderSession session(backend);
   request::Rendered rendered;
@@ -48,11 +62,15 @@ void Run(RenderCommandOptions& o) {
     throw;
   }
   PrintWarnings(warnings);
-  const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
-  if (o.output.empty()) std::filesystem::create_directories("output");
-  image::WritePng(rendered.frame.colour, output);
-  if (!o.depth.empty()) image::WriteDepthFile(rendered.frame.depth, o.depth);
-  if (!o.labels.empty()) image::WriteLabelFiles(rendered.frame.labels, rendered.robot->LinkNames(), o.labels);
+  plan.Write(output, image::EncodePng(rendered.frame.colour));
+  if (!o.depth.empty()) {
+    plan.Write(o.depth, image::EncodeDepth(rendered.frame.depth, std::filesystem::path(o.depth).extension().string()));
+  }
+  if (!o.labels.empty()) {
+    plan.Write(o.labels, image::EncodeLabels(rendered.frame.labels));
+    plan.Write(image::LabelNamesFile(o.labels), image::LabelNamesJson(rendered.robot->LinkNames()));
+  }
+  plan.Commit();
 }
 
 }  // namespace

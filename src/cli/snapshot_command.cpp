@@ -22,6 +22,7 @@
 #include "snapshot/report_images.h"
 #include "snapshot/reports.h"
 #include "snapshot/results_file.h"
+#include "snapshot/run_outputs.h"
 
 namespace urdfsnap::cli {
 
@@ -77,10 +78,10 @@ Selection Select(const SnapshotOptions& o, const std::vector<std::string>& names
   return s;
 }
 
-void WriteOutputs(const SnapshotOptions& o, const Selection& s,
+void WriteOutputs(OutputPlan& outputs, const SnapshotOptions& o, const Selection& s,
                   const std::vector<snapshot::CaseRecord>& records) {
-  if (!o.report_dir.empty()) snapshot::WriteHtmlReport(o.report_dir, s.suite.path, records);
-  if (!o.junit.empty()) snapshot::WriteJunitReport(o.junit, s.suite.path, records);
+  if (!o.report_dir.empty()) snapshot::WriteHtmlReport(outputs, o.report_dir, s.suite.path, records);
+  if (!o.junit.empty()) snapshot::WriteJunitReport(outputs, o.junit, s.suite.path, records);
   if (o.results.empty()) return;
   snapshot::RunResults results;
   results.suite = {s.suite.path, s.suite.digest, static_cast<int>(s.suite.cases.size())};
@@ -89,12 +90,16 @@ void WriteOutputs(const SnapshotOptions& o, const Selection& s,
   results.shard_source = s.shard.source;
   results.report_dir = o.report_dir;
   results.cases = records;
-  snapshot::WriteResults(o.results, results);
+  snapshot::WriteResults(outputs, o.results, results);
 }
 
 void Check(const SnapshotOptions& o) {
   const Selection s = Select(o, {});
-  if (!o.report_dir.empty()) std::filesystem::create_directories(o.report_dir);
+  // the reports may overwrite neither each other nor what the cases read; all written, or none
+  OutputPlan outputs;
+  snapshot::AddSuiteInputs(outputs, s.suite, s.cases, true);
+  snapshot::PlanReports(outputs, {o.report_dir, o.junit, o.results}, snapshot::CaseNames(s.cases));
+  outputs.Prepare();
   const gl::BackendChoice backend = o.gl_options.Choice();
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps Mesa with the first model
   request::RenderSession session(backend);
@@ -103,12 +108,13 @@ void Check(const SnapshotOptions& o) {
   records.reserve(s.cases.size());
   for (const snapshot::SnapshotCase* c : s.cases) {
     snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, warnings);
-    if (!o.report_dir.empty()) snapshot::WriteReportImages(o.report_dir, r);
+    if (!o.report_dir.empty()) snapshot::WriteReportImages(outputs, o.report_dir, r);
     PrintCaseLine(snapshot::StatusWord(r.record.status), c->name, r.record.message);
     records.push_back(std::move(r.record));  // the images go with r
   }
   PrintWarnings(warnings);
-  WriteOutputs(o, s, records);
+  WriteOutputs(outputs, o, s, records);
+  outputs.Commit();
   std::printf("%s\n", snapshot::Summary(records).c_str());
   if (!o.report_dir.empty()) {
     std::printf("report: %s\n", (std::filesystem::path(o.report_dir) / "index.html").c_str());
@@ -123,6 +129,11 @@ void Check(const SnapshotOptions& o) {
 
 void Update(const SnapshotOptions& o) {
   const Selection s = Select(o, o.case_names);
+  // no golden may be another case's or a file a case reads; those written move into place at the end
+  OutputPlan outputs;
+  snapshot::AddSuiteInputs(outputs, s.suite, s.cases, false);
+  for (const snapshot::SnapshotCase* c : s.cases) snapshot::PlanGoldens(outputs, *c);
+  outputs.Prepare();
   const gl::BackendChoice backend = o.gl_options.Choice();
   const auto gl_loading = gl::StartLoadingGl(backend.backend);
   request::RenderSession session(backend);
@@ -138,7 +149,7 @@ void Update(const SnapshotOptions& o) {
                     record.message);
     } else {
       std::string files;
-      for (const std::string& file : snapshot::WriteGoldens(*c, r, o.force, *r.robot)) {
+      for (const std::string& file : snapshot::WriteGoldens(outputs, *c, r, o.force, *r.robot)) {
         files += (files.empty() ? "" : ", ") + file;
         ++written;
       }
@@ -148,6 +159,7 @@ void Update(const SnapshotOptions& o) {
     records.push_back(std::move(record));
   }
   PrintWarnings(warnings);
+  outputs.Commit();
   std::printf("%d goldens of %zu cases written; look at each before committing it\n", written, s.cases.size());
   std::fflush(stdout);
   if (const int status = snapshot::ExitStatus(records); status != 0) throw CommandExit{status};

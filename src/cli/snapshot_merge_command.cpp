@@ -10,6 +10,7 @@
 #include "common/version.h"
 #include "snapshot/reports.h"
 #include "snapshot/results_merge.h"
+#include "snapshot/run_outputs.h"
 
 namespace urdfsnap::cli {
 
@@ -20,7 +21,7 @@ struct MergeOptions {
   std::string report_dir, junit, results;
 };
 
-void WriteMergedResults(const MergeOptions& o, snapshot::MergedResults& merged) {
+void WriteMergedResults(OutputPlan& outputs, const MergeOptions& o, snapshot::MergedResults& merged) {
   snapshot::RunResults results;
   results.suite = merged.suite;
   results.urdfsnap_version = Version();
@@ -31,7 +32,7 @@ void WriteMergedResults(const MergeOptions& o, snapshot::MergedResults& merged) 
   if (o.report_dir.empty()) {
     for (snapshot::CaseRecord& r : results.cases) r.images = {};
   }
-  snapshot::WriteResults(o.results, results);
+  snapshot::WriteResults(outputs, o.results, results);
   merged.cases = std::move(results.cases);
 }
 
@@ -39,16 +40,24 @@ void Merge(const MergeOptions& o) {
   std::vector<snapshot::ShardFile> files;
   for (const std::string& path : o.files) files.push_back({path, snapshot::ReadResults(path)});
   snapshot::MergedResults merged = snapshot::MergeResults(std::move(files), Version());
+  // the merged files may overwrite neither each other nor a results file; all written, or none
+  OutputPlan outputs;
+  for (const std::string& path : o.files) outputs.AddInput(path, "the results file");
+  std::vector<std::string> names;
+  for (const snapshot::CaseRecord& r : merged.cases) names.push_back(r.name);
+  snapshot::PlanReports(outputs, {o.report_dir, o.junit, o.results}, names);
+  outputs.Prepare();
+  if (!o.report_dir.empty()) snapshot::CollectReportImages(outputs, merged, o.report_dir);
   for (const snapshot::CaseRecord& r : merged.cases) {
     if (r.status == snapshot::CaseStatus::kPassed) continue;
     PrintCaseLine(snapshot::StatusWord(r.status), r.name, r.message + " (shard " + r.shard + ")");
   }
   if (!o.report_dir.empty()) {
-    snapshot::CollectReportImages(merged, o.report_dir);
-    snapshot::WriteHtmlReport(o.report_dir, merged.suite.path, merged.cases);
+    snapshot::WriteHtmlReport(outputs, o.report_dir, merged.suite.path, merged.cases);
   }
-  if (!o.junit.empty()) snapshot::WriteJunitReport(o.junit, merged.suite.path, merged.cases);
-  if (!o.results.empty()) WriteMergedResults(o, merged);
+  if (!o.junit.empty()) snapshot::WriteJunitReport(outputs, o.junit, merged.suite.path, merged.cases);
+  if (!o.results.empty()) WriteMergedResults(outputs, o, merged);
+  outputs.Commit();
   std::printf("merged %d shards of %s: %s\n", merged.shard_count, merged.suite.path.c_str(),
               snapshot::Summary(merged.cases).c_str());
   if (!o.report_dir.empty()) {

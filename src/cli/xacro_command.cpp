@@ -11,7 +11,7 @@
 #include "cli/command.h"
 #include "common/error.h"
 #include "common/warnings.h"
-#include "common/atomic_file.h"
+#include "common/output_plan.h"
 #include "xacro/xacro.h"
 
 namespace urdfsnap::cli {
@@ -62,11 +62,14 @@ void Run(const XacroFlags& flags) {
   if (flags.output.empty()) {
     WriteToStdout(text);
   } else {
-    // ROS's xacro creates the output's folder too
-    const std::filesystem::path parent = std::filesystem::path(flags.output).parent_path();
-    std::error_code ignored;  // a folder that cannot be made shows as the write error below
-    if (!parent.empty()) std::filesystem::create_directories(parent, ignored);
-    WriteFileAtomically(flags.output, text);
+    // never over a file it read; ROS's xacro creates the output's folder too
+    OutputPlan outputs;
+    outputs.AddInput(flags.file, "the xacro file");
+    for (const std::string& file : result.dependencies) outputs.AddInput(file, "a file it includes");
+    outputs.AddFile(flags.output, "-o");
+    outputs.Prepare();
+    outputs.Write(flags.output, text);
+    outputs.Commit();
   }
 }
 

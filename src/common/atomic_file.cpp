@@ -50,6 +50,16 @@ int WriteAll(int fd, std::string_view bytes, std::int64_t offset = -1) {
 
 }  // namespace
 
+std::string RandomSuffix() {
+  // lower case only: the names stay distinct on case-insensitive file systems
+  static constexpr char kAlphabet[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+  std::random_device device;
+  std::uniform_int_distribution<int> pick(0, sizeof kAlphabet - 2);
+  std::string suffix;
+  for (int i = 0; i < 6; ++i) suffix += kAlphabet[pick(device)];
+  return suffix;
+}
+
 void WriteFileAtomically(const std::string& path, std::string_view bytes) {
   AtomicFile file(path);
   file.Write(bytes);
@@ -79,15 +89,18 @@ void AtomicFile::WriteAt(std::uint64_t offset, std::string_view bytes) {
   }
 }
 
+void AtomicFile::Close() {
+  if (fd_ < 0) return;
+  const int error_number = ::close(fd_) != 0 ? errno : 0;
+  fd_ = -1;
+  if (error_number != 0) ThrowWriteError(path_, error_number);  // the destructor unlinks
+}
+
 void AtomicFile::Commit() {
   // no fsync: the promise is "never a partial file after a failed run", not durability across a
   // power cut, and fsync would cost more than encoding an image
-  int error_number = ::close(fd_) != 0 ? errno : 0;
-  fd_ = -1;
-  if (error_number == 0 && std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
-    error_number = errno;
-  }
-  if (error_number != 0) ThrowWriteError(path_, error_number);  // the destructor unlinks
+  Close();
+  if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) ThrowWriteError(path_, errno);  // the destructor unlinks
   committed_ = true;
 }
 

@@ -10,6 +10,9 @@
 
 namespace urdfsnap {
 
+// Six random letters and digits, as mkstemp would pick: for temporary names beside an output.
+std::string RandomSuffix();
+
 // Writes `bytes` to "<path>.tmp-XXXXXX" (created new, mode 0666 less the umask) and renames it to
 // `path`. On any failure the temporary file is removed, an existing file at `path` is left as it
 // was, and urdfsnap::Error is thrown as "PATH: cannot write: <errno text>".
@@ -32,6 +35,9 @@ class AtomicFile {
   void Write(std::string_view bytes);
   // Overwrites bytes already written at `offset` (a header whose sizes are known only at the end).
   void WriteAt(std::uint64_t offset, std::string_view bytes);
+  // Closes the temporary file (no more writes); it stays until Commit or destruction, so that
+  // many files can wait for their renames without as many open descriptors.
+  void Close();
   // Closes the temporary file and renames it to path(); on failure removes it and throws.
   void Commit();
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <set>
 
+#include "common/confined_path.h"
 #include "common/error.h"
 #include "common/file_reading.h"
 #include "common/number_text.h"
@@ -16,11 +17,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The files below `folder`, as sorted relative paths with '/'.
+// The files below `folder`, as sorted relative paths with '/'. Each must be a regular file inside
+// the folder (a link may point to one): a committed page is input, and a pipe in it would block
+// the comparison, a link out of it would read another file. Throws urdfsnap::Error otherwise.
 std::set<std::string> Listing(const fs::path& folder) {
   std::set<std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(folder)) {
-    if (!entry.is_directory()) files.insert(fs::relative(entry.path(), folder).generic_string());
+    if (entry.is_directory() && !entry.is_symlink()) continue;
+    const std::string file = entry.path().lexically_relative(folder).generic_string();
+    ConfineRegularFile(folder.string(), file, folder.string() + ": the page's file '" + file + "'");
+    files.insert(file);
   }
   return files;
 }

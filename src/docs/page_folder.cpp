@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <system_error>
 
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/file_reading.h"
 #include "common/random_suffix.h"

@@ -54,6 +54,10 @@ void CheckLabelsPath(const std::string& path, const std::string& option) {
   if (Extension(path) != ".png") throw Error(option + " '" + path + "': expected a .png file (16-bit labels)");
 }
 
+std::string LabelNamesFile(const std::string& path) {
+  return std::filesystem::path(path).replace_extension(".json").string();
+}
+
 void WriteDepthFile(const DepthImage& depth, const std::string& path) {
   CheckDepthPath(path, "depth file");
   WriteFileAtomically(path, EncodeDepth(depth, Extension(path)));
@@ -68,7 +72,7 @@ std::string LabelNamesJson(const std::vector<std::string>& link_names) {
 void WriteLabelFiles(const LabelImage& labels, const std::vector<std::string>& link_names, const std::string& path) {
   CheckLabelsPath(path, "labels file");
   WriteFileAtomically(path, EncodeLabels(labels));
-  WriteFileAtomically(std::filesystem::path(path).replace_extension(".json").string(), LabelNamesJson(link_names));
+  WriteFileAtomically(LabelNamesFile(path), LabelNamesJson(link_names));
 }
 
 }  // namespace urdfsnap::image

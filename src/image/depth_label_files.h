@@ -5,8 +5,9 @@
 //   labels .png: 16-bit, 1 + the link's index (Robot::links() order, as `urdfsnap info` lists the
 //               links), 0 where none; with FILE.json beside FILE.png mapping each value (a decimal
 //               string) to the link's name.
-// One encoder per format, used for single files (`render --depth/--labels`, written atomically:
-// temporary file + rename) and for an animation's numbered sequences alike.
+// One encoder per format, used for single files (`render --depth/--labels`, whose outputs the
+// command plans and writes all or none, common/output_plan.h) and for an animation's numbered
+// sequences alike.
 #pragma once
 
 #include <string>
@@ -37,8 +38,11 @@ void WriteDepthFile(const DepthImage& depth, const std::string& path);
 // .json). Throws urdfsnap::Error naming the path.
 void WriteLabelFiles(const LabelImage& labels, const std::vector<std::string>& link_names, const std::string& path);
 
-// Throws urdfsnap::Error naming `option` unless `path` has an extension WriteDepthFile (depth) or
-// WriteLabelFiles (labels) takes: for checking command-line options before rendering.
+// Where the link names of the label image `path` go: beside it, the same name with .json.
+std::string LabelNamesFile(const std::string& path);
+
+// Throws urdfsnap::Error naming `option` unless `path` has an extension EncodeDepth (depth) or
+// EncodeLabels (labels, .png) takes: for checking command-line options before rendering.
 void CheckDepthPath(const std::string& path, const std::string& option);
 void CheckLabelsPath(const std::string& path, const std::string& option);
 

@@ -2,6 +2,8 @@
 #include "serve/server.h"
 
 #include <arpa/inet.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <condition_variable>
 #include <mutex>
@@ -12,6 +14,8 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "serve/client_connections.h"
+#include "serve/deadline_stream.h"
 #include "serve/embedded_page.h"
 #include "serve/frame_source.h"
 #include "serve/render_thread.h"
@@ -55,6 +59,51 @@ std::string Reason(int status) {
   }
 }
 
+// The connection being served on this thread (0: none), for the pre-routing handler.
+thread_local std::uint64_t current_connection = 0;
+
+// cpp-httplib's server with its per-connection loop replaced (the library lets a subclass do so):
+// each request read through a DeadlineStream (time and byte budgets), each connection counted in
+// ClientConnections while it waits for a request (so idle ones beyond the limits are closed).
+class GuardedHttpServer : public httplib::Server {
+ public:
+  GuardedHttpServer(ConnectionLimits connection_limits, StreamLimits stream_limits)
+      : connections_(connection_limits), stream_limits_(stream_limits) {}
+
+  // The request of this thread's connection has arrived: it is being answered, not waiting.
+  void RequestArrived() {
+    if (current_connection != 0) connections_.Answer(current_connection);
+  }
+
+ private:
+  bool process_and_close_socket(socket_t sock) override {
+    DeadlineStream stream(sock, svr_sock_, stream_limits_);
+    std::string client;
+    int port = 0;
+    stream.get_remote_ip_and_port(client, port);
+    current_connection = connections_.Open(client, sock);
+    bool ok = true;
+    for (std::size_t count = keep_alive_max_count_; ok && count > 0; --count) {
+      if (count != keep_alive_max_count_) {
+        stream.BeginRequest();
+        connections_.Wait(current_connection);
+      }
+      if (!stream.WaitForRequest()) break;
+      bool closed = false;
+      ok = process_request(stream, count == 1, closed, nullptr);
+      if (closed || stream.spent()) break;
+    }
+    connections_.Close(current_connection);
+    current_connection = 0;
+    ::shutdown(sock, SHUT_RDWR);
+    ::close(sock);
+    return ok;
+  }
+
+  ClientConnections connections_;
+  StreamLimits stream_limits_;
+};
+
 }  // namespace
 
 bool IsLoopback(const std::string& address) {
@@ -69,7 +118,7 @@ struct Server::Impl {
   ServerOptions options;
   LiveModel live;
   std::string initial_view;  // /api/view
-  httplib::Server http;
+  GuardedHttpServer http{options.connection_limits, options.stream_limits};
 
   // one frame at a time, a bounded number waiting (last: it ends first, before what it uses)
   RenderThread renderer{static_cast<size_t>(options.max_waiting_renders), options.backend};
@@ -153,10 +202,7 @@ struct Server::Impl {
   void Route() {
     http.new_task_queue = [n = options.threads] { return new httplib::ThreadPool(n); };
     http.set_payload_max_length(4096);
-    http.set_keep_alive_max_count(1000);
-    http.set_keep_alive_timeout(5);
-    http.set_read_timeout(5);
-    http.set_write_timeout(5);
+    http.set_keep_alive_max_count(1000);  // each request within options.stream_limits
     http.set_tcp_nodelay(true);
     // SO_REUSEADDR only: the library's default adds SO_REUSEPORT, which would let a second server
     // share the port silently instead of failing to bind
@@ -165,7 +211,8 @@ struct Server::Impl {
       setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
     });
     const bool loopback_only = IsLoopback(options.bind);
-    http.set_pre_routing_handler([loopback_only](const httplib::Request& req, httplib::Response& res) {
+    http.set_pre_routing_handler([this, loopback_only](const httplib::Request& req, httplib::Response& res) {
+      http.RequestArrived();
       res.set_header("Cache-Control", "no-store");
       res.set_header("X-Content-Type-Options", "nosniff");
       if (loopback_only && !IsLoopback(HostName(req.get_header_value("Host")))) {

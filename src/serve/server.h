@@ -3,7 +3,9 @@
 //
 // It answers nothing else: no URL names a file, every response is the page, a rendered image or
 // JSON/text made here. Limits: request bodies of 4 KiB (a GET has none), request lines and
-// header lines of 8 KiB (the library's), images up to ServerOptions::max_size, one render at a
+// header lines of 8 KiB (the library's), a whole request in 64 KiB and 5 s (idle time included),
+// 8 connections waiting for a request per client address and 24 in all (the longest waiting is
+// closed for a new one: a slowloris), images up to ServerOptions::max_size, one render at a
 // time (on one render thread) with at most max_waiting_renders more waiting (the rest get 503 at
 // once), a fixed pool of connection threads. Bound to a loopback address it answers only requests that name a loopback
 // host (so a web page elsewhere cannot reach it by DNS rebinding).
@@ -18,6 +20,7 @@
 #include "gl/backend.h"
 #include "render/render_settings.h"
 #include "request/render_request.h"
+#include "serve/connection_limits.h"
 #include "serve/live_model.h"
 
 namespace urdfsnap::serve {
@@ -29,7 +32,11 @@ struct ServerOptions {
   request::RenderRequest base;
   render::ImageSize max_size{4096, 4096};  // largest frame, per side
   int max_waiting_renders = 8;   // requests that wait for the renderer; more get 503
-  int threads = 16;              // connections served at once (keep-alive ones included)
+  int threads = 32;              // connections served at once (keep-alive ones included)
+  // connections waiting for a request, per client and in all (more than threads - total are
+  // left for answering), and the time and bytes of one request and response
+  ConnectionLimits connection_limits;
+  StreamLimits stream_limits;
   std::chrono::milliseconds watch_interval{250};  // how often the model's files are looked at
   // the GL backend of the one renderer, made with the first frame
   gl::BackendChoice backend;

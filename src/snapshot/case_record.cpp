@@ -10,15 +10,15 @@ constexpr CaseStatus kStatuses[] = {CaseStatus::kPassed, CaseStatus::kFailed, Ca
 
 }  // namespace
 
-std::vector<std::string> ReportImageFiles(const CaseRecord& record) {
-  std::vector<const ReportImages*> sets{&record.images};
-  for (const auto* part : {&record.depth, &record.labels}) {
-    if (*part) sets.push_back(&(*part)->images);
-  }
-  std::vector<std::string> files;
-  for (const ReportImages* images : sets) {
-    for (const std::string* file : {&images->expected, &images->actual, &images->diff}) {
-      if (!file->empty()) files.push_back(*file);
+std::vector<std::pair<std::string, std::string>> ReportImageFiles(const CaseRecord& record) {
+  std::vector<std::pair<std::string, const ReportImages*>> sets{{"images", &record.images}};
+  if (record.depth) sets.emplace_back("depth.images", &record.depth->images);
+  if (record.labels) sets.emplace_back("labels.images", &record.labels->images);
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& [key, images] : sets) {
+    for (const auto& [kind, file] : {std::pair{".expected", &images->expected}, std::pair{".actual", &images->actual},
+                                     std::pair{".diff", &images->diff}}) {
+      if (!file->empty()) files.emplace_back(key + kind, *file);
     }
   }
   return files;

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 #include <initializer_list>
+#include <utility>
 
 #include "image/gray16_diff.h"
 #include "image/image_diff.h"
@@ -52,8 +53,9 @@ struct CaseRecord {
   std::string shard;  // "K/N" of the shard that checked it, in merged results; "" otherwise
 };
 
-// Every report image file name of `record` (colour, depth and labels), those written only.
-std::vector<std::string> ReportImageFiles(const CaseRecord& record);
+// Every report image file name of `record` (colour, depth and labels), those written only, each
+// with its key in a results file's case ("images.actual", "depth.images.diff").
+std::vector<std::pair<std::string, std::string>> ReportImageFiles(const CaseRecord& record);
 
 // The status of a case whose parts (colour, depth, labels) have these statuses: failed if one
 // failed, else missing if one is missing, else passed (kError does not come from parts).

@@ -1,9 +1,6 @@
 // WriteGoldens: each golden by its own verdict, in the formats `urdfsnap render` writes.
 #include "snapshot/golden_files.h"
 
-#include <filesystem>
-
-#include "common/atomic_file.h"
 #include "image/gray16_png.h"
 #include "image/png_writer.h"
 #include "image/depth_label_files.h"
@@ -12,34 +9,35 @@ namespace urdfsnap::snapshot {
 
 namespace {
 
-void CreateFolderOf(const std::string& path) {
-  const auto folder = std::filesystem::path(path).parent_path();
-  if (!folder.empty()) std::filesystem::create_directories(folder);
-}
-
 bool Rewrite(CaseStatus status, bool force) { return force || status != CaseStatus::kPassed; }
 
 }  // namespace
 
-std::vector<std::string> WriteGoldens(const SnapshotCase& c, const CaseResult& result, bool force,
-                                      const model::Robot& robot) {
+void PlanGoldens(OutputPlan& outputs, const SnapshotCase& c) {
+  const std::string role = "the golden of case '" + c.name + "'";
+  outputs.AddFile(c.golden, role);
+  if (c.depth.wanted) outputs.AddFile(c.depth.golden, "the depth golden of case '" + c.name + "'");
+  if (c.labels.wanted) {
+    outputs.AddFile(c.labels.golden, "the labels golden of case '" + c.name + "'");
+    outputs.AddFile(image::LabelNamesFile(c.labels.golden), "the link names of case '" + c.name + "'");
+  }
+}
+
+std::vector<std::string> WriteGoldens(OutputPlan& outputs, const SnapshotCase& c, const CaseResult& result,
+                                      bool force, const model::Robot& robot) {
   std::vector<std::string> written;
   if (Rewrite(result.colour_status, force)) {
-    CreateFolderOf(c.golden);
-    image::WritePng(result.actual, c.golden);
+    outputs.Write(c.golden, image::EncodePng(result.actual));
     written.push_back(c.golden);
   }
   const CaseRecord& record = result.record;
   if (record.depth && Rewrite(record.depth->status, force)) {
-    CreateFolderOf(c.depth.golden);
-    image::WriteGray16Png(result.depth.actual, c.depth.golden);
+    outputs.Write(c.depth.golden, image::EncodeGray16Png(result.depth.actual));
     written.push_back(c.depth.golden);
   }
   if (record.labels && Rewrite(record.labels->status, force)) {
-    CreateFolderOf(c.labels.golden);
-    image::WriteGray16Png(result.labels.actual, c.labels.golden);
-    const std::string names = std::filesystem::path(c.labels.golden).replace_extension(".json").string();
-    WriteFileAtomically(names, image::LabelNamesJson(robot.LinkNames()));
+    outputs.Write(c.labels.golden, image::EncodeGray16Png(result.labels.actual));
+    outputs.Write(image::LabelNamesFile(c.labels.golden), image::LabelNamesJson(robot.LinkNames()));
     written.push_back(c.labels.golden);
   }
   return written;

@@ -6,6 +6,7 @@
 
 #include "common/atomic_file.h"
 #include "common/markup_text.h"
+#include "snapshot/report_images.h"
 #include "snapshot/reports.h"
 
 namespace urdfsnap::snapshot {
@@ -138,12 +139,11 @@ bool FromShards(const std::vector<CaseRecord>& records) {
 
 }  // namespace
 
-void WriteHtmlReport(const std::string& dir, const std::string& suite_path,
+void WriteHtmlReport(OutputPlan& outputs, const std::string& dir, const std::string& suite_path,
                      const std::vector<CaseRecord>& records) {
-  fs::create_directories(dir);
   const bool shards = FromShards(records);
   // written row by row: a report of thousands of cases is never held whole in memory
-  AtomicFile html((fs::path(dir) / "index.html").string());
+  AtomicFile& html = outputs.Open(ReportIndexFile(dir));
   html.Write(kHead);
   html.Write("<h1>Snapshot report: " + EscapeMarkup(suite_path) + "</h1>\n<p>" +
              EscapeMarkup(Summary(records)) + "</p>\n<table>\n<tr><th>case</th><th>status</th>" +
@@ -162,7 +162,7 @@ void WriteHtmlReport(const std::string& dir, const std::string& suite_path,
   }
   html.Write(kScript);
   html.Write("</body>\n</html>\n");
-  html.Commit();
+  html.Close();
 }
 
 }  // namespace urdfsnap::snapshot

@@ -60,7 +60,7 @@ int ExitStatus(const std::vector<CaseRecord>& records) {
   return n.failed + n.missing > 0 ? 1 : 0;
 }
 
-void WriteJunitReport(const std::string& path, const std::string& suite_path,
+void WriteJunitReport(OutputPlan& outputs, const std::string& path, const std::string& suite_path,
                       const std::vector<CaseRecord>& records) {
   const Counts n = Count(records);
   const std::string name = EscapeMarkup(std::filesystem::path(suite_path).stem().string());
@@ -69,7 +69,7 @@ void WriteJunitReport(const std::string& path, const std::string& suite_path,
                              std::to_string(n.failed + n.missing) + "\" errors=\"" +
                              std::to_string(n.errors) + "\" time=\"" + Seconds(n.seconds) + "\"";
   // written case by case: the XML of thousands of cases is never held whole in memory
-  AtomicFile xml(path);
+  AtomicFile& xml = outputs.Open(path);
   xml.Write("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites " + counts + ">\n  <testsuite name=\"" +
             name + "\" " + counts + " skipped=\"0\" file=\"" + file + "\">\n");
   for (const CaseRecord& r : records) {
@@ -95,7 +95,7 @@ void WriteJunitReport(const std::string& path, const std::string& suite_path,
     xml.Write(testcase + "    </testcase>\n");
   }
   xml.Write("  </testsuite>\n</testsuites>\n");
-  xml.Commit();
+  xml.Close();
 }
 
 }  // namespace urdfsnap::snapshot

@@ -9,6 +9,7 @@
 #include "common/file_reading.h"
 #include "common/json_text.h"
 #include "common/atomic_file.h"
+#include "common/confined_path.h"
 #include "snapshot/suite_file.h"
 
 namespace urdfsnap::snapshot {
@@ -240,7 +241,7 @@ CaseRecord ReadCase(const FieldReader& in, const Json& c, const std::string& pla
 
 }  // namespace
 
-void WriteResults(const std::string& path, const RunResults& results) {
+void WriteResults(OutputPlan& outputs, const std::string& path, const RunResults& results) {
   const Json head = {
       {"format", kFormat},
       {"format_version", kResultsFormatVersion},
@@ -258,7 +259,7 @@ void WriteResults(const std::string& path, const RunResults& results) {
     return json.dump(-1, ' ', false, Json::error_handler_t::replace);
   };
   // the head, then one case per line, written as they go: never the whole file in memory
-  AtomicFile file(path);
+  AtomicFile& file = outputs.Open(path);
   std::string text = dump(head);
   text.pop_back();  // the closing brace; "cases" follows
   file.Write(text + ",\n\"cases\": [");
@@ -266,7 +267,7 @@ void WriteResults(const std::string& path, const RunResults& results) {
     file.Write((i == 0 ? "\n" : ",\n") + dump(CaseJson(results.cases[i])));
   }
   file.Write("\n]}\n");
-  file.Commit();
+  file.Close();
 }
 
 RunResults ReadResults(const std::string& path) {
@@ -299,8 +300,9 @@ RunResults ReadResults(const std::string& path) {
   results.shard_source = in.Text(shard, "source", "shard");
   const Json& report_dir = in.Member(root, "report_dir", "");
   if (!report_dir.is_null()) {
-    const fs::path dir = in.Text(root, "report_dir", "");
-    results.report_dir = dir.is_absolute() ? dir.string() : (fs::path(path).parent_path() / dir).lexically_normal().string();
+    // the images merge copies come from here: never from outside the results file's folder
+    results.report_dir = ConfinePath(fs::path(path).parent_path().string(), in.Text(root, "report_dir", ""),
+                                     path + ": report_dir");
   }
   const Json& cases = in.Member(root, "cases", "");
   if (!cases.is_array()) throw in.Bad("cases", "expected a list");

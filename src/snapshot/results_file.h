@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/output_plan.h"
 #include "shard/shard_spec.h"
 #include "snapshot/case_record.h"
 
@@ -27,18 +28,21 @@ struct RunResults {
   std::string shard_source;  // where the shard came from ("--shard", "GitLab ..."); "" if unsharded
   // The folder holding the cases' report images ("" when no report was written): a path usable
   // from the working directory. In the file it is relative to the results file's folder, so a
-  // results file and its report can be moved together (CI artifacts).
+  // results file and its report can be moved together (CI artifacts); it must lie inside that
+  // folder (ReadResults refuses a file whose report_dir leads out of it).
   std::string report_dir;
   std::vector<CaseRecord> cases;  // in suite order
 };
 
-// Writes `results` to `path` as JSON, atomically. Throws urdfsnap::Error naming the path when it
-// cannot be written.
-void WriteResults(const std::string& path, const RunResults& results);
+// Writes `results` to `path` as JSON through `outputs` (in place at its Commit). Throws
+// urdfsnap::Error naming the path when it cannot be written.
+void WriteResults(OutputPlan& outputs, const std::string& path, const RunResults& results);
 
 // Reads a results file. Throws urdfsnap::Error "PATH: ..." for a file that cannot be read, is not
-// JSON, is not a urdfsnap results file or has another format version, or has a missing or
-// mistyped field (named by its place, e.g. "cases[3].status").
+// JSON, is not a urdfsnap results file or has another format version, has a missing or mistyped
+// field (named by its place, e.g. "cases[3].status"), or a report_dir outside the file's folder
+// (after symbolic links: "PATH: report_dir: '../..' leads outside ..."). report_dir is returned
+// resolved (absolute, no links).
 RunResults ReadResults(const std::string& path);
 
 }  // namespace urdfsnap::snapshot

@@ -9,7 +9,7 @@
 
 #include "common/error.h"
 #include "common/file_reading.h"
-#include "common/atomic_file.h"
+#include "common/confined_path.h"
 #include "shard/shard_assignment.h"
 
 namespace urdfsnap::snapshot {
@@ -77,6 +77,7 @@ MergedResults MergeResults(std::vector<ShardFile> files, const std::string& vers
   struct Placed {
     CaseRecord record;
     std::string image_dir;
+    const std::string* source;
   };
   std::vector<Placed> placed;
   std::map<std::string, const std::string*> owner;  // case name -> results file
@@ -92,7 +93,7 @@ MergedResults MergeResults(std::vector<ShardFile> files, const std::string& vers
         throw Error(file.path + ": case '" + record.name + "' again (also in " + *at->second + ")");
       }
       record.shard = shard::ShardText(s);
-      placed.push_back({std::move(record), file.results.report_dir});
+      placed.push_back({std::move(record), file.results.report_dir, &file.path});
     }
   }
   if (static_cast<int>(placed.size()) != merged.suite.case_count) {
@@ -104,30 +105,30 @@ MergedResults MergeResults(std::vector<ShardFile> files, const std::string& vers
             [](const Placed& a, const Placed& b) { return a.record.index < b.record.index; });
   merged.cases.reserve(placed.size());
   merged.image_dirs.reserve(placed.size());
+  merged.sources.reserve(placed.size());
   for (Placed& p : placed) {
     merged.cases.push_back(std::move(p.record));
     merged.image_dirs.push_back(std::move(p.image_dir));
+    merged.sources.push_back(*p.source);
   }
   return merged;
 }
 
-void CollectReportImages(const MergedResults& merged, const std::string& dir) {
+void CollectReportImages(OutputPlan& outputs, const MergedResults& merged, const std::string& dir) {
   // every image is looked for before any is copied: a partly downloaded artifact fails the merge
   // before it writes anything
   std::vector<std::pair<fs::path, fs::path>> copies;
   for (std::size_t i = 0; i < merged.cases.size(); ++i) {
     const CaseRecord& r = merged.cases[i];
-    for (const std::string& file : ReportImageFiles(r)) {
-      const fs::path source = fs::path(merged.image_dirs[i]) / file;
-      std::error_code error;
-      if (!fs::is_regular_file(source, error)) {
-        throw Error(source.string() + ": the report image of case '" + r.name + "' (shard " + r.shard +
-                    ") is not there; keep each shard's report folder beside its results file");
+    for (const auto& [key, file] : ReportImageFiles(r)) {
+      const std::string where = merged.sources[i] + ": case '" + r.name + "': " + key;
+      if (merged.image_dirs[i].empty()) {
+        throw Error(where + ": the file names no report_dir (its run had no --report)");
       }
+      const std::string source = ConfineRegularFile(merged.image_dirs[i], file, where);
       copies.emplace_back(source, fs::path(dir) / file);
     }
   }
-  fs::create_directories(dir);
   for (const auto& [source, target] : copies) {
     std::error_code same_error;
     if (fs::equivalent(source, target, same_error)) continue;  // merged into the shard's own report
@@ -137,7 +138,7 @@ void CollectReportImages(const MergedResults& merged, const std::string& dir) {
     } catch (const FileReadError& e) {
       throw Error(source.string() + ": cannot read the report image: " + e.what());
     }
-    WriteFileAtomically(target.string(), bytes);
+    outputs.Write(target.string(), bytes);
   }
 }
 

@@ -21,6 +21,7 @@ struct MergedResults {
   int shard_count = 1;
   std::vector<CaseRecord> cases;        // in suite order, each with record.shard = "K/N"
   std::vector<std::string> image_dirs;  // per case: the folder of its report images ("" if none)
+  std::vector<std::string> sources;     // per case: the results file it came from
 };
 
 // Merges the results of every shard of one split. `version` is this urdfsnap's: results of another
@@ -30,9 +31,10 @@ struct MergedResults {
 // own it, given twice, or cases missing.
 MergedResults MergeResults(std::vector<ShardFile> files, const std::string& version);
 
-// Copies the report images of every merged case into `dir` (created if needed; file names stay
-// NAME.expected.png, ...), each atomically. Throws urdfsnap::Error naming an image that a results
-// file lists but that is not there (a partly downloaded artifact).
-void CollectReportImages(const MergedResults& merged, const std::string& dir);
+// Copies the report images of every merged case into `dir` through `outputs` (file names stay
+// NAME.expected.png, ...; in place at its Commit). Every image is looked for before any is read.
+// Throws urdfsnap::Error naming the results file and key of an image that is not a regular file
+// inside its report folder (after symbolic links), or is not there (a partly downloaded artifact).
+void CollectReportImages(OutputPlan& outputs, const MergedResults& merged, const std::string& dir);
 
 }  // namespace urdfsnap::snapshot

@@ -11,6 +11,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "common/confined_path.h"
 #include "common/did_you_mean.h"
 #include "common/error.h"
 #include "common/file_reading.h"
@@ -94,6 +95,17 @@ class SuiteReader {
   std::string Resolve(const std::string& path) const {
     if (fs::path(path).is_absolute()) return path;
     return (dir_ / path).lexically_normal().string();
+  }
+
+  // A golden's path: `snapshot update` writes it, so it must stay inside the suite's folder (after
+  // symbolic links), where a suite from elsewhere cannot make it overwrite another file.
+  std::string ResolveGolden(const YAML::Node& value, const std::string& key) const {
+    const std::string text = Text(value, key);
+    if (ResolveInside(dir_.empty() ? "." : dir_.string(), text).empty()) {
+      throw ErrorAt(value, "'" + key + "': '" + text + "' leads outside the suite's folder (goldens are "
+                           "written by `snapshot update` and stay beside the suite)");
+    }
+    return Resolve(text);
   }
 
   // A scalar, or a list of scalars joined with ',' (focal: [0, 0, 0.5] as --focal 0,0,0.5).
@@ -234,10 +246,10 @@ class SuiteReader {
       if (key == "name" || key == "golden" || key == "depth-golden" || key == "labels-golden") {
         if (is_defaults) throw ErrorAt(key_node, "'" + key + "' belongs to a case, not to 'defaults'");
         if (key == "golden") {
-          c.golden = Resolve(Text(value, key));
+          c.golden = ResolveGolden(value, key);
         } else if (key != "name") {
           Gray16Golden& golden = key == "depth-golden" ? c.depth : c.labels;
-          golden.golden = Resolve(Text(value, key));
+          golden.golden = ResolveGolden(value, key);
           c.option_lines[key] = LineOf(key_node);
         } else if (c.name = Text(value, key); !IsCaseName(c.name)) {
           throw ErrorAt(value, "case name '" + c.name + "': use letters, digits, '_', '-' and '.'");

@@ -19,7 +19,9 @@
 // max-fraction, max-mean), and the depth and label goldens: depth, depth-golden, depth-max-delta,
 // depth-max-fraction, labels, labels-golden, labels-max-fraction. A case's keys replace those of
 // `defaults`, except that `joints`, `args` and `packages` add to them (a name given in both takes
-// the case's value).
+// the case's value). Golden paths (golden, depth-golden, labels-golden) must stay inside the
+// suite's folder, since `snapshot update` writes them; models, joint and .rviz files may be
+// anywhere, as on the command line.
 #pragma once
 
 #include <map>
@@ -59,7 +61,8 @@ struct Suite {
 };
 
 // Reads the suite at `path`. Throws urdfsnap::Error "PATH:LINE: ..." for bad YAML, unknown or
-// repeated keys, values of the wrong kind, a case without a model, bad or repeated case names.
+// repeated keys, values of the wrong kind, a case without a model, bad or repeated case names, a
+// golden outside the suite's folder.
 Suite ReadSuite(const std::string& path);
 
 // True for a usable case name: letters, digits, '_', '-' and '.', not "." or ".." (it names the

@@ -1,6 +1,7 @@
 // A sequence of numbered files, one per frame (PNG frames, and depth or label images beside them):
-// each file written atomically, and every file of the sequence removed again when it is abandoned
-// before Finish, so that a failed run leaves no partial sequence.
+// each frame written under a temporary name beside its own ("00042.png.part-XXXXXX"), all moved
+// into place by Finish, and removed when the sequence is abandoned before: a failed run leaves
+// no partial sequence, and files of an earlier run keep their bytes.
 #pragma once
 
 #include <cstdint>
@@ -24,16 +25,20 @@ class FrameFiles {
   FrameFiles(const FrameFiles&) = delete;
   FrameFiles& operator=(const FrameFiles&) = delete;
 
-  // Writes the next frame's file (number first + count()). Throws Error naming the file.
+  // Writes the next frame's file (number first + count()) under its temporary name. Throws Error
+  // naming the file.
   void Write(std::string_view bytes);
-  // Keeps the files.
-  void Finish() { finished_ = true; }
+  // Moves every file written into place. Throws Error naming a file that cannot be moved.
+  void Finish();
 
   std::int64_t count() const { return count_; }
   const FramePattern& pattern() const { return pattern_; }
 
  private:
+  std::string TemporaryName(std::int64_t number) const;
+
   FramePattern pattern_;
+  std::string temporary_suffix_;  // one for the whole sequence
   std::int64_t first_;
   std::int64_t count_ = 0;
   bool finished_ = false;

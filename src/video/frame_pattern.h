@@ -21,6 +21,9 @@ class FramePattern {
   std::string Name(std::int64_t number) const;
 
   const std::string& pattern() const { return pattern_; }
+  // The names around the number: Name(k) is prefix() + the number + suffix().
+  const std::string& prefix() const { return prefix_; }
+  const std::string& suffix() const { return suffix_; }
 
  private:
   std::string pattern_;

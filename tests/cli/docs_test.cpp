@@ -105,6 +105,14 @@ TEST_F(DocsTest, CheckFindsMissingExtraAndUndecodableFiles) {
   const Result none = RunUrdfsnap("docs " + model_ + " --check " + Path("nothing"));
   EXPECT_EQ(none.status, 1) << none.output;
   EXPECT_NE(none.output.find("no page here"), std::string::npos) << none.output;
+
+  // a committed page is input: a link out of it is not followed (nor a pipe read)
+  fs::remove(Path("page/images/robot.png"));
+  fs::create_symlink("/etc/passwd", Path("page/images/robot.png"));
+  const Result linked = RunUrdfsnap("docs " + model_ + " --check " + Path("page"));
+  EXPECT_EQ(linked.status, 2) << linked.output;
+  EXPECT_NE(linked.output.find("the page's file 'images/robot.png': 'images/robot.png' leads outside"),
+            std::string::npos) << linked.output;
 }
 
 TEST_F(DocsTest, CheckComparesAnimationsByTheirFrames) {
@@ -165,7 +173,9 @@ TEST_F(DocsTest, ErrorsAreOneLineWithStatus2AndWriteNothing) {
       {model_, "give -o DIR to write a page, or --check DIR"},
       {model_ + " -o " + Path("page") + " --check " + Path("page"), "give -o DIR to write a page, or --check DIR"},
       {model_ + " -o " + Path("mine"), "mine: is a folder with other files than a page of urdfsnap docs"},
-      {model_ + " -o " + Path("mrm.urdf"), "mrm.urdf: exists and is not a folder"},
+      {model_ + " -o " + Path("mrm.urdf"), "-o '" + model_ + "': the same file as the model"},
+      {model_ + " -o " + Path(""), "holds the model '" + model_ + "'"},
+      {model_ + " --check " + model_, "--check '" + model_ + "': exists and is not a folder"},
       {model_ + " -o " + Path("mrm.urdf/page"), "page: cannot write: Not a directory"},
   };
   for (const Case& c : cases) {

@@ -1,5 +1,6 @@
 // Broken and hostile input against the urdfsnap binary, one case per row: malformed URDF, xacro
-// bombs, bad joint values and options, garbage meshes and files that never end, unwritable outputs.
+// bombs, bad joint values and options, garbage meshes and files that never end, unwritable outputs,
+// outputs that are one file with another output or an input, paths that lead out of their folder.
 // Every case must end with exit status 2 and one "urdfsnap: error: " line naming the culprit
 // (warnings that led up to it may come first), before a deadline (a hang detector, not a speed
 // test) and within 1.5 GB (2 GB of address space where that can be capped), leaving the existing
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "common/version.h"
 #include "support/gl_required.h"
 #include "support/temp_folder.h"
 #include "urdfsnap_process.h"
@@ -163,6 +165,13 @@ const std::string kAnimate = "animate " + kModel + " -o {clip} ";
 const std::string kGoodRobot = TwoLinks(
     "<joint name=\"elbow\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
     "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>");
+
+// A results file of an empty one-shard run whose report_dir is `report_dir` (JSON text).
+std::string Results(const std::string& report_dir) {
+  return "{\"format\":\"urdfsnap-snapshot-results\",\"format_version\":1,\"urdfsnap_version\":\"" +
+         std::string(urdfsnap::Version()) + "\",\"suite\":{\"path\":\"s.yaml\",\"digest\":\"d\",\"cases\":0},"
+         "\"shard\":{\"index\":1,\"count\":1,\"source\":\"\"},\"report_dir\":" + report_dir + ",\"cases\":[]}";
+}
 
 std::vector<HostileCase> Cases() {
   const auto robot = [](const std::string& urdf) {
@@ -374,6 +383,53 @@ std::vector<HostileCase> Cases() {
        "cannot write to standard output"},
       {"info_stdout_full", robot(kGoodRobot), "info " + kModel + " > /dev/full",
        "cannot write to standard output"},
+      // outputs that are one file with another output or an input, refused before anything is drawn
+      {"depth_is_the_output", robot(kGoodRobot), kRender + "--depth {out}", "--depth '{out}': the same file as -o"},
+      {"labels_are_the_output", robot(kGoodRobot), kRender + "--labels {out}", "--labels '{out}': the same file as -o"},
+      {"label_names_are_the_output", robot(kGoodRobot), "render " + kModel + " -o {dir}/seg.json --labels {dir}/seg.png",
+       "the link names of --labels '{dir}/seg.json': the same file as -o"},
+      {"depth_and_labels_one_file", robot(kGoodRobot), kRender + "--depth {dir}/both.png --labels {dir}/both.png",
+       "--labels '{dir}/both.png': the same file as --depth"},
+      {"output_is_the_model", robot(kGoodRobot), "render " + kModel + " -o " + kModel,
+       "-o '{dir}/robot.urdf': the same file as the model"},
+      {"output_is_the_model_by_another_name", robot(kGoodRobot), "render " + kModel + " -o {dir}/./x/../robot.urdf",
+       "the same file as the model"},
+      {"depth_folder_missing", robot(kGoodRobot), kRender + "--depth {dir}/no/such/d.png",
+       "no/such/d.png: cannot write: No such file or directory"},
+      {"depth_under_a_file", robot(kGoodRobot), kRender + "--depth {dir}/robot.urdf/d.npy",
+       "robot.urdf/d.npy: cannot write: Not a directory"},
+      {"anim_depth_is_the_output", robot(kGoodRobot),
+       "animate " + kModel + " --turntable -o {dir}/f/%05d.png --depth {dir}/f/%05d.png",
+       "-o '{dir}/f/%05d.png': may name the same files as --depth"},
+      {"anim_labels_among_the_frames", robot(kGoodRobot),
+       "animate " + kModel + " --turntable -o {dir}/f/%d.png --labels {dir}/f/1%d.png", "may name the same files as"},
+      {"anim_video_is_the_trajectory", robot(kGoodRobot), "animate " + kModel + " --trajectory {clip} -o {clip}",
+       "-o '{clip}': the same file as --trajectory"},
+      {"docs_check_a_file", robot(kGoodRobot), "docs " + kModel + " --check {out}",
+       "--check '{out}': exists and is not a folder"},
+      {"docs_page_holds_the_model", robot(kGoodRobot), "docs " + kModel + " -o {dir}", "-o '{dir}': holds the model"},
+      {"docs_page_is_the_model", robot(kGoodRobot), "docs " + kModel + " -o " + kModel,
+       "-o '{dir}/robot.urdf': the same file as the model"},
+      {"suite_junit_is_the_suite", {{"suite.yaml", "cases:\n  - {name: a, model: m.urdf}\n"}},
+       "snapshot check {dir}/suite.yaml --junit {dir}/suite.yaml", "--junit '{dir}/suite.yaml': the same file as the suite"},
+      {"suite_results_are_the_junit", {{"suite.yaml", "cases:\n  - {name: a, model: m.urdf}\n"}},
+       "snapshot check {dir}/suite.yaml --junit {out} --results {out}", "--results '{out}': the same file as --junit"},
+      {"suite_report_over_a_golden", {{"suite.yaml", "cases:\n  - {name: a, model: m.urdf, golden: a.diff.png}\n"}},
+       "snapshot check {dir}/suite.yaml --report {dir}", "the same file as"},
+      {"suite_report_outside_the_results_folder", {{"suite.yaml", "cases:\n  - {name: a, model: m.urdf}\n"}},
+       "snapshot check {dir}/suite.yaml --report {dir}/report --results {dir}/sub/r.json",
+       "--report '{dir}/report': must be inside the folder of --results"},
+      {"suite_golden_outside_its_folder", {{"suite.yaml", "cases:\n  - {name: a, model: m.urdf, golden: ../../../../etc/a.png}\n"}},
+       "snapshot update {dir}/suite.yaml", "suite.yaml:2: 'golden': '../../../../etc/a.png' leads outside the suite's folder"},
+      {"suite_two_cases_one_golden",
+       {{"suite.yaml", "cases:\n  - {name: a, model: m.urdf, golden: g.png}\n  - {name: b, model: m.urdf, golden: g.png}\n"}},
+       "snapshot update {dir}/suite.yaml", "the golden of case 'b' '{dir}/g.png': the same file as the golden of case 'a'"},
+      {"results_report_dir_outside", {{"r.json", Results("\"../../../../../../etc\"")}},
+       "snapshot merge {dir}/r.json --report {dir}/merged", "r.json: report_dir: '../../../../../../etc' leads outside"},
+      {"results_report_dir_absolute", {{"r.json", Results("\"/etc\"")}},
+       "snapshot merge {dir}/r.json --report {dir}/merged", "r.json: report_dir: '/etc' leads outside"},
+      {"merge_junit_is_a_results_file", {{"r.json", Results("null")}}, "snapshot merge {dir}/r.json --junit {dir}/r.json",
+       "--junit '{dir}/r.json': the same file as the results file"},
       {"xacro_output_under_a_file", xacro(Xacro("<link name=\"a\"/>")),
        "xacro {dir}/robot.xacro -o {dir}/robot.xacro/out.urdf", "cannot write: Not a directory"},
       // animate: trajectories ({bags}: the test bags of the MCAP project's writer), options, outputs
@@ -536,8 +592,9 @@ TEST_P(HostileInputTest, EndsWithOneLocatedErrorAndLeavesTheOutputAlone) {
   EXPECT_FALSE(run.timed_out) << "still running after 60 s: urdfsnap " << arguments;
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_EQ(ErrorLines(run.err), 1) << run.err;
-  EXPECT_NE(run.err.find(c.culprit), std::string::npos)
-      << "expected '" << c.culprit << "' in:\n" << run.err;
+  const std::string culprit =
+      Replace(Replace(Replace(c.culprit, "{out}", out.string()), "{clip}", clip.string()), "{dir}", dir.string());
+  EXPECT_NE(run.err.find(culprit), std::string::npos) << "expected '" << culprit << "' in:\n" << run.err;
   EXPECT_EQ(run.out, "");
   if (!asan) {
     EXPECT_LT(run.peak_rss_kb, 1536 * 1024) << "peak memory";

@@ -2,7 +2,9 @@
 // report, suite errors located, and the suite rendering exactly what `render` renders, byte for
 // byte, whatever LP_NUM_THREADS is.
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -43,6 +45,49 @@ TEST_F(SnapshotTest, MissingGoldenFailsCheckAndUpdateCreatesIt) {
   EXPECT_TRUE(Contains(r.output, "same     home")) << r.output;
   EXPECT_TRUE(Contains(RunUrdfsnap("snapshot update --force " + suite).output, "wrote    home"));
   EXPECT_EQ(ReadBytes(Path("goldens/home.png")), golden);
+}
+
+// Cases that cannot be rendered: each one stderr line naming the suite file and line (where CI logs
+// and scripts look), an ERROR line on stdout, an <error> in JUnit and a section in the report; the
+// others are checked (and updated) as usual, and the run exits 2.
+TEST_F(SnapshotTest, CasesThatCannotBeRenderedAreErrorsOnStderrAndInTheReports) {
+  URDFSNAP_REQUIRE_GL();
+  Write("pose.yaml", "nope: 1\n");
+  const std::string suite = Write("suite.yaml", "defaults:\n  model: " + kMrm + "\n  size: 80x60\ncases:\n"
+                                  "  - name: good\n"
+                                  "  - name: no_model\n    model: nothing.urdf\n"
+                                  "  - name: bad_joint\n    joints: pose.yaml\n"
+                                  "  - name: huge\n    size: 100000x100000\n"
+                                  "  - name: not_rviz\n    rviz: pose.yaml\n");
+  // the "urdfsnap: error: " lines (stderr, merged into the output here)
+  const auto error_lines = [](const std::string& output) {
+    std::vector<std::string> lines;
+    std::istringstream in(output);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("urdfsnap: error: ", 0) == 0) lines.push_back(line);
+    }
+    return lines;
+  };
+  const Result update = RunUrdfsnap("snapshot update " + suite);
+  EXPECT_EQ(update.status, 2) << update.output;
+  EXPECT_TRUE(fs::exists(Path("good.png")));
+  const Result check = RunUrdfsnap("snapshot check " + suite + " --report " + Path("report") + " --junit " +
+                                   Path("junit.xml"));
+  EXPECT_EQ(check.status, 2) << check.output;
+  EXPECT_TRUE(Contains(check.output, "ERROR    no_model: " + suite + ":6:")) << check.output;
+  for (const Result& r : {update, check}) {
+    const std::vector<std::string> lines = error_lines(r.output);
+    ASSERT_EQ(lines.size(), 4u) << r.output;
+    const std::string lines_of_cases[] = {":6: case 'no_model': ", ":8: case 'bad_joint': ", ":11: size",
+                                          ":12: case 'not_rviz': "};
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      EXPECT_EQ(lines[i].rfind("urdfsnap: error: " + suite + lines_of_cases[i], 0), 0u) << lines[i];
+    }
+  }
+  const std::string junit = ReadBytes(Path("junit.xml"));
+  EXPECT_TRUE(Contains(junit, "errors=\"4\"")) << junit;
+  EXPECT_TRUE(Contains(junit, "<error type=\"ERROR\" message=\"" + suite + ":8: case &apos;bad_joint&apos;")) << junit;
+  EXPECT_TRUE(Contains(ReadBytes(Path("report/index.html")), "no_model")) ;
 }
 
 // The machinery's reason to exist: mrm_elbow's golden against the arm moved by 0.01 rad.

@@ -88,5 +88,9 @@ TEST(DepthLabelFiles, TheExtensionChoosesTheDepthEncoding) {
   EXPECT_THROW(EncodeDepth(depth, ".tiff"), Error);
 }
 
+TEST(DepthLabelFiles, LabelNamesGoBesideTheLabelImage) {
+  EXPECT_EQ(LabelNamesFile("out/seg.labels.png"), "out/seg.labels.json");
+}
+
 }  // namespace
 }  // namespace urdfsnap::image

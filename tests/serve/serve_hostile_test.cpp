@@ -1,7 +1,10 @@
 // The server against requests no page sends: paths that try to reach the disk, malformed and
-// oversized requests, clients that go away mid-response, and a flood from several clients at
-// once with its memory watched. After each, it must still answer.
+// oversized requests, idle and half-sent connections (a slowloris), headers without end, clients
+// that go away mid-response, and a flood from several clients at once with its memory watched.
+// After each, it must still answer.
 #include <signal.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <filesystem>
@@ -88,6 +91,31 @@ TEST_F(ServeHostileTest, MalformedAndOversizedRequests) {
   std::string many_headers = "GET /api/status HTTP/1.1\r\n" + host;
   for (int i = 0; i < 2000; ++i) many_headers += "X-" + std::to_string(i) + ": y\r\n";
   Raw(many_headers + "\r\n");
+  ExpectAlive();
+}
+
+TEST_F(ServeHostileTest, IdleAndHalfSentConnectionsDoNotStarveOthers) {
+  // a slowloris from one address: connections that send nothing, or half a request, and wait
+  std::vector<int> waiting;
+  const std::string half = "GET /api/robot HTTP/1.1\r\nHost: 127.0.0.1\r\nX-Slow: ";
+  for (int i = 0; i < 100; ++i) {
+    const int fd = ConnectLoopback(server_->port());
+    ASSERT_GE(fd, 0);
+    if (i % 2 == 1) send(fd, half.data(), half.size(), MSG_NOSIGNAL);
+    waiting.push_back(fd);
+  }
+  // the others are answered meanwhile (within the client's 5 s; at once in practice)
+  for (int i = 0; i < 3; ++i) {
+    const auto robot = server_->Client()->Get("/api/robot");
+    ASSERT_TRUE(robot) << "no answer while 100 connections wait; stderr: " << server_->Stderr();
+    EXPECT_EQ(robot->status, 200);
+  }
+  // headers without end are cut off at the request's byte budget, not read into memory forever
+  std::string flood = half;
+  while (flood.size() < 4'000'000) flood += "X-Flood: " + std::string(1000, 'y') + "\r\n";
+  const std::string reply = Raw(flood);
+  EXPECT_TRUE(reply.empty() || reply.rfind("HTTP/1.1 4", 0) == 0) << reply.substr(0, 80);
+  for (const int fd : waiting) close(fd);
   ExpectAlive();
 }
 

@@ -134,14 +134,21 @@ bool ServeProcess::WaitForStderr(const std::string& text, int deadline_seconds) 
   return true;
 }
 
-std::string RawExchange(int port, const std::string& bytes, int timeout_ms) {
+int ConnectLoopback(int port) {
   const int fd = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_port = htons(static_cast<uint16_t>(port));
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (fd >= 0 && connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) return fd;
+  if (fd >= 0) close(fd);
+  return -1;
+}
+
+std::string RawExchange(int port, const std::string& bytes, int timeout_ms) {
+  const int fd = ConnectLoopback(port);
   std::string reply;
-  if (connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
+  if (fd >= 0) {
     for (size_t sent = 0; sent < bytes.size();) {
       const ssize_t n = send(fd, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
       if (n <= 0) break;  // the server closed it (e.g. after refusing the request line)
@@ -157,7 +164,7 @@ std::string RawExchange(int port, const std::string& bytes, int timeout_ms) {
       reply.append(buffer, static_cast<size_t>(n));
     }
   }
-  close(fd);
+  if (fd >= 0) close(fd);
   return reply;
 }
 

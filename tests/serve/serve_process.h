@@ -47,6 +47,10 @@ class ServeProcess {
   std::string out_, err_, first_line_;
 };
 
+// A new connection to 127.0.0.1:port (its socket, -1 when it cannot be made), for the caller to
+// use and close.
+int ConnectLoopback(int port);
+
 // Sends `bytes` to 127.0.0.1:port on a fresh connection, reads until the server closes it or
 // `timeout_ms` pass, and returns what came back.
 std::string RawExchange(int port, const std::string& bytes, int timeout_ms = 3000);

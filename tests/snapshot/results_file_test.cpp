@@ -1,5 +1,6 @@
 // Results files: every field of a record survives writing and reading, the report folder is kept
-// relative to the results file, and a damaged or foreign file is refused naming the field.
+// relative to the results file, and a damaged or foreign file (or one whose report folder leads out
+// of its folder) is refused naming the field.
 #include "snapshot/results_file.h"
 
 #include <filesystem>
@@ -104,6 +105,13 @@ void ExpectSame(const CaseRecord& a, const CaseRecord& b) {
   }
 }
 
+// WriteResults through a plan of its own, committed.
+void WriteResultsFile(const std::string& path, const RunResults& results) {
+  OutputPlan outputs;
+  WriteResults(outputs, path, results);
+  outputs.Commit();
+}
+
 class ResultsFileTest : public ::testing::Test {
  protected:
   std::string Path(const std::string& name) const { return (folder_.path() / name).string(); }
@@ -116,7 +124,7 @@ class ResultsFileTest : public ::testing::Test {
 TEST_F(ResultsFileTest, EveryFieldSurvivesAndTheReportFolderStaysBesideTheFile) {
   fs::create_directories(Path("shard-2"));
   const RunResults written = Sample(Path("shard-2/report"));
-  WriteResults(Path("shard-2/results.json"), written);
+  WriteResultsFile(Path("shard-2/results.json"), written);
   // the file names its report folder relative to itself: the pair can be moved as an artifact
   std::ifstream in(Path("shard-2/results.json"));
   const auto json = nlohmann::json::parse(in);
@@ -143,12 +151,12 @@ TEST_F(ResultsFileTest, EveryFieldSurvivesAndTheReportFolderStaysBesideTheFile) 
 }
 
 TEST_F(ResultsFileTest, WithoutAReportTheFolderIsEmpty) {
-  WriteResults(Path("results.json"), Sample(""));
+  WriteResultsFile(Path("results.json"), Sample(""));
   EXPECT_EQ(ReadResults(Path("results.json")).report_dir, "");
 }
 
 TEST_F(ResultsFileTest, DamagedOrForeignFilesNameTheField) {
-  WriteResults(Path("good.json"), Sample(Path("report")));
+  WriteResultsFile(Path("good.json"), Sample(Path("report")));
   std::ifstream in(Path("good.json"));
   const nlohmann::json good = nlohmann::json::parse(in);
   struct Case {
@@ -177,7 +185,13 @@ TEST_F(ResultsFileTest, DamagedOrForeignFilesNameTheField) {
        "cases[0].depth.figures.pixels_coverage: expected a whole number from 0 to 2147483647, got -3"},
       {[](auto& j) { j["cases"][0]["labels"].erase("golden"); }, "cases[0].labels.golden: missing"},
       {[](auto& j) { j["cases"][0]["labels"] = 1; }, "cases[0].labels: expected an object, got 1"},
+      // the report folder stays inside the results file's folder, however it is written
+      {[](auto& j) { j["report_dir"] = "../../../../../../etc"; }, "report_dir: '../../../../../../etc' leads outside"},
+      {[](auto& j) { j["report_dir"] = "/etc"; }, "report_dir: '/etc' leads outside"},
+      {[](auto& j) { j["report_dir"] = "report/../.."; }, "report_dir: 'report/../..' leads outside"},
+      {[](auto& j) { j["report_dir"] = "escape"; }, "report_dir: 'escape' leads outside"},  // a link
   };
+  fs::create_directory_symlink("/etc", Path("escape"));
   for (const Case& c : cases) {
     nlohmann::json damaged = good;
     c.damage(damaged);

@@ -105,15 +105,21 @@ TEST(ResultsMerge, ReportImagesComeFromEachShardsFolder) {
     fs::create_directories(dir);
     files.push_back(ShardOf(names, {k, 2}, dir.string()));
     for (const CaseRecord& r : files.back().results.cases) {
-      for (const std::string& file : ReportImageFiles(r)) std::ofstream(dir / file) << "png of " << file;
+      for (const auto& [key, file] : ReportImageFiles(r)) std::ofstream(dir / file) << "png of " << file;
     }
   }
   const MergedResults merged = MergeResults(std::move(files), "1.2.3");
   const fs::path out = folder.path() / "merged";
-  CollectReportImages(merged, out.string());
+  const auto collect = [&](const fs::path& dir) {
+    fs::create_directories(dir);
+    OutputPlan outputs;
+    CollectReportImages(outputs, merged, dir.string());
+    outputs.Commit();
+  };
+  collect(out);
   int copied = 0;
   for (const CaseRecord& r : merged.cases) {
-    for (const std::string& file : ReportImageFiles(r)) {
+    for (const auto& [key, file] : ReportImageFiles(r)) {
       std::ifstream in(out / file);
       std::string text;
       std::getline(in, text);
@@ -123,19 +129,50 @@ TEST(ResultsMerge, ReportImagesComeFromEachShardsFolder) {
   }
   EXPECT_EQ(copied, 6);  // case_0, case_4, case_8: colour and depth
   // merging into a shard's own folder leaves its images in place
-  CollectReportImages(merged, (folder.path() / "shard1").string());
+  collect(folder.path() / "shard1");
   // a depth image that did not come along fails the merge, naming it
   for (const CaseRecord& r : merged.cases) {
     if (!r.depth) continue;
     fs::remove(folder.path() / ("shard" + r.shard.substr(0, 1)) / r.depth->images.diff);
     try {
-      CollectReportImages(merged, (folder.path() / "again").string());
+      collect(folder.path() / "again");
       ADD_FAILURE() << "merged without " << r.depth->images.diff;
     } catch (const Error& e) {
       EXPECT_NE(std::string(e.what()).find(r.depth->images.diff), std::string::npos) << e.what();
     }
     break;
   }
+}
+
+TEST(ResultsMerge, AnImageThatLeadsOutOfItsReportFolderIsRefusedBeforeAnythingIsWritten) {
+  test::TempFolder folder("results_merge");
+  const fs::path dir = folder.path() / "shard";
+  fs::create_directories(dir);
+  std::vector<ShardFile> files{ShardOf(Names(3), {1, 1}, dir.string())};
+  std::string linked;
+  for (const CaseRecord& r : files.back().results.cases) {
+    for (const auto& [key, file] : ReportImageFiles(r)) {
+      if (linked.empty()) {
+        fs::create_symlink("/etc/passwd", dir / file);  // an artifact with a link in it
+        linked = r.name + "': " + key + ": '" + file + "' leads outside";
+      } else {
+        std::ofstream(dir / file) << "png";
+      }
+    }
+  }
+  ASSERT_FALSE(linked.empty());
+  const MergedResults merged = MergeResults(std::move(files), "1.2.3");
+  const fs::path out = folder.path() / "merged";
+  fs::create_directories(out);
+  try {
+    OutputPlan outputs;
+    CollectReportImages(outputs, merged, out.string());
+    outputs.Commit();
+    ADD_FAILURE() << "copied through a link";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(linked), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_empty(out));
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "support/error_text.h"
 #include "support/temp_folder.h"
 #include "synthetic_frames.h"
@@ -100,6 +102,23 @@ TEST_F(EncoderErrorsTest, AShardOfASequenceIsNumberedFromItsFirstFrameAndRemoved
   }
   // the abandoned shard took its own files away and left the finished one's
   EXPECT_EQ(folder_.Listing(), (std::vector<std::string>{"007.png", "008.png", "009.png"}));
+}
+
+TEST_F(EncoderErrorsTest, ASequenceAppearsWhenFinishedAndAnAbandonedOneLeavesEarlierFilesAlone) {
+  folder_.Write("001.png", "an earlier run's frame");
+  {
+    const auto encoder = OpenFrameEncoder(folder_.Path("%03d.png"), {64, 48, 10}, warnings_);
+    for (int i = 0; i < 3; ++i) encoder->Write(test::SyntheticFrame(64, 48, i));
+    // written under temporary names: the earlier frame is still there as it was
+    EXPECT_EQ(folder_.Listing().size(), 4u);
+    EXPECT_FALSE(std::filesystem::exists(folder_.Path("000.png")));
+  }
+  EXPECT_EQ(folder_.Listing(), std::vector<std::string>{"001.png"});
+  EXPECT_EQ(folder_.Read("001.png"), "an earlier run's frame");
+  const auto encoder = OpenFrameEncoder(folder_.Path("%03d.png"), {64, 48, 10}, warnings_);
+  for (int i = 0; i < 3; ++i) encoder->Write(test::SyntheticFrame(64, 48, i));
+  encoder->Finish();
+  EXPECT_EQ(folder_.Listing(), (std::vector<std::string>{"000.png", "001.png", "002.png"}));
 }
 
 TEST_F(EncoderErrorsTest, FastGifsWarnThatBrowsersSlowThemDown) {
