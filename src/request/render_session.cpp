@@ -104,7 +104,7 @@ render::RenderSettings RenderSession::ResolveSettings(const RenderRequest& reque
 image::Frame RenderSession::Render(const RenderRequest& r, const OptionLabel& label, Warnings& warnings,
                                    const image::FrameOutputs& outputs) {
   const Prepared p = Prepare(r, label, warnings);
-  return p.renderer->Render(RendererFor(p.settings.samples), p.positions, p.settings.view, p.settings.size, outputs);
+  return p.renderer->Render(RendererFor(p.settings.samples), p.positions, p.settings, outputs);
 }
 
 std::vector<std::string> RenderSession::Files(const ModelRequest& request) const {

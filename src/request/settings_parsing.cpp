@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "render/rviz_config.h"
+#include "request/camera_parsing.h"
 #include "request/value_parsing.h"
 
 namespace urdfsnap::request {
@@ -51,6 +52,7 @@ render::RenderSettings ParseRenderSettings(const RenderRequest& r, const OptionL
   ApplyScene(r, label, settings.scene);
   settings.samples = r.no_aa ? 0 : 4;
   settings.fit = !r.fit ? render::Fit::kNone : r.focal.empty() ? render::Fit::kFit : render::Fit::kKeepFocal;
+  settings.camera = ParseCameraSettings(r, label, settings);
   return settings;
 }
 
