@@ -8,7 +8,8 @@ namespace urdfsnap::animation {
 AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motion::FramePlan& plan,
                                  const motion::FramePoses& poses, const CameraRequest& camera,
                                  Warnings& warnings)
-    : plan_(plan), poses_(poses), size_(camera.size), turntable_(camera.turntable), view_(camera.view) {
+    : plan_(plan), poses_(poses), size_(camera.size), turntable_(camera.turntable), view_(camera.view),
+      camera_(camera.camera) {
   // motion::kMaxFrames keeps the count within FitView's int
   const int count = static_cast<int>(plan_.frame_count);
   const auto pose = [&](int k) { return Positions(k, warnings); };

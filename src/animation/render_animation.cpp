@@ -12,7 +12,9 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const
   const image::FrameOutputs wanted{true, outputs.depth != nullptr, outputs.labels != nullptr};
   const auto render = [&](std::int64_t i, image::Frame& frame) {
     const std::int64_t k = range.first + i;
-    frame = robot.Render(gl, frames.Positions(k, warnings), frames.View(k), frames.size(), wanted);
+    const std::vector<double> positions = frames.Positions(k, warnings);
+    frame = frames.camera() ? robot.Render(gl, positions, *frames.camera(), wanted)
+                            : robot.Render(gl, positions, frames.View(k), frames.size(), wanted);
   };
   const auto write = [&](std::int64_t i, const image::Frame& frame) {
     outputs.colour->Write(frame.colour);

@@ -161,7 +161,8 @@ void Run(AnimateOptions& o) {
     defaults.insert(defaults.end(), r.joints.begin(), r.joints.end());
     const motion::FramePoses poses(*robot, trajectory, defaults, !r.no_clamp, warnings);
     const animation::AnimationFrames frames(renderer, plan, poses,
-                                            {settings.view, settings.size, fit, o.turntable}, warnings);
+                                            {settings.view, settings.size, fit, o.turntable, settings.camera},
+                                            warnings);
 
     if (!o.print_frame.empty()) {
       const std::int64_t k = FrameNumber(o.print_frame, plan);

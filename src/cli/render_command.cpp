@@ -7,6 +7,11 @@
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
+#include "camera/robot_mask.h"
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "common/file_extension.h"
+#include "dataset/rendered_keypoints.h"
 #include "image/png_writer.h"
 #include "render/frame_files.h"
 #include "gl/gl_context.h"
@@ -20,6 +25,8 @@ struct RenderCommandOptions {
   ModelSource model;
   std::string output;
   std::string depth, labels;  // optional depth and link-label image files
+  std::string mask, keypoints;  // optional robot mask and keypoint files
+  int mask_dilate = 0;
   RenderOptions render;
   GlOptions gl_options;
 };
@@ -30,6 +37,12 @@ std::string DefaultOutput(const std::string& model_path) {
   return (std::filesystem::path("output") / stem).string() + ".png";
 }
 
+void CheckExtension(const std::string& path, const std::string& extension, const std::string& option) {
+  if (LowerCaseExtension(path) != extension) {
+    throw Error(option + " '" + path + "': expected a " + extension + " file");
+  }
+}
+
 void Run(RenderCommandOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
@@ -37,15 +50,26 @@ void Run(RenderCommandOptions& o) {
   o.render.ParseJointWords();
   if (!o.depth.empty()) render::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) render::CheckLabelsPath(o.labels, "--labels");
+  if (!o.mask.empty()) CheckExtension(o.mask, ".png", "--mask");
+  if (!o.keypoints.empty()) CheckExtension(o.keypoints, ".json", "--keypoints");
   Warnings warnings;
   request::RenderSession session(backend);
   image::Frame frame;
   std::shared_ptr<const model::Robot> robot;
+  std::string keypoints;
   try {
-    frame = session.Render(
-        o.render.request, [](std::string_view name) { return "--" + std::string(name); }, warnings,
-        {true, !o.depth.empty(), !o.labels.empty()});
+    const request::Prepared prepared = session.Prepare(
+        o.render.request, [](std::string_view name) { return "--" + std::string(name); }, warnings);
+    const bool wants_keypoints = !o.keypoints.empty();
+    frame = session.Draw(prepared, {true, !o.depth.empty() || wants_keypoints,
+                                    !o.labels.empty() || !o.mask.empty() || wants_keypoints});
     robot = session.LoadRobot(o.render.request.model, warnings);
+    if (wants_keypoints) {
+      const render::RenderSettings& s = prepared.settings;
+      keypoints = dataset::RenderedKeypointsJson(
+          *prepared.renderer, prepared.positions,
+          s.camera ? *s.camera : render::OrbitCamera(s.view, s.size.width, s.size.height), frame);
+    }
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -56,6 +80,8 @@ void Run(RenderCommandOptions& o) {
   image::WritePng(frame.colour, output);
   if (!o.depth.empty()) render::WriteDepthFile(frame.depth, o.depth);
   if (!o.labels.empty()) render::WriteLabelFiles(frame.labels, *robot, o.labels);
+  if (!o.mask.empty()) image::WriteGray8Png(camera::RobotMask(frame.labels, o.mask_dilate), o.mask);
+  if (!o.keypoints.empty()) WriteFileAtomically(o.keypoints, keypoints);
 }
 
 }  // namespace
@@ -73,6 +99,16 @@ void AddRenderCommand(CLI::App& app) {
                   "also write the link-label image FILE.png (16-bit: 1 + the index of the link "
                   "nearest at each pixel, in `info`'s link order, 0 off the robot) and FILE.json "
                   "(value -> link name) (default: none)");
+  cmd->add_option("--mask", o->mask,
+                  "also write the robot's binary mask FILE.png (8-bit: 255 on the robot, 0 elsewhere), "
+                  "as a robot self-filter uses it (default: none)");
+  cmd->add_option("--mask-dilate", o->mask_dilate,
+                  "grow the --mask by N pixels (a disc), for self-filtering depth near the outline (default 0)")
+      ->check(CLI::Range(0, 1000));
+  cmd->add_option("--keypoints", o->keypoints,
+                  "also write FILE.json: every link frame's and joint origin's pixel (u, v) under the "
+                  "camera (OpenCV's projectPoints convention, distortion included), depth, whether "
+                  "it is in the image and visible, and the camera (K, D, pose) (default: none)");
   o->render.AddOptions(*cmd);
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });

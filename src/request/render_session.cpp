@@ -71,7 +71,7 @@ std::shared_ptr<const model::Robot> RenderSession::LoadRobot(const ModelRequest&
   return model.loaded.robot;
 }
 
-RenderSession::Prepared RenderSession::Prepare(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
+Prepared RenderSession::Prepare(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
   render::RenderSettings settings = ParseRenderSettings(r, label, warnings);
   const Model& model = LoadedModelFor(r.model);
   const model::Robot& robot = *model.loaded.robot;
@@ -103,7 +103,10 @@ render::RenderSettings RenderSession::ResolveSettings(const RenderRequest& reque
 
 image::Frame RenderSession::Render(const RenderRequest& r, const OptionLabel& label, Warnings& warnings,
                                    const image::FrameOutputs& outputs) {
-  const Prepared p = Prepare(r, label, warnings);
+  return Draw(Prepare(r, label, warnings), outputs);
+}
+
+image::Frame RenderSession::Draw(const Prepared& p, const image::FrameOutputs& outputs) {
   return p.renderer->Render(RendererFor(p.settings.samples), p.positions, p.settings, outputs);
 }
 

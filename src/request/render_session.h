@@ -22,6 +22,15 @@
 
 namespace urdfsnap::request {
 
+// A request made ready to draw: resolved settings (--fit applied), joint positions (one per robot
+// joint, mimics resolved), the prepared robot (owned by the session that prepared it, valid while
+// it stays in the session's cache).
+struct Prepared {
+  render::RenderSettings settings;
+  std::vector<double> positions;
+  const render::RobotRenderer* renderer = nullptr;
+};
+
 class RenderSession {
  public:
   // backend: the GL backend of the contexts the session makes ({}: URDFSNAP_GL_BACKEND, else auto).
@@ -36,6 +45,13 @@ class RenderSession {
   // mesh file, an unknown joint, ...
   image::Frame Render(const RenderRequest& request, const OptionLabel& label, Warnings& warnings,
                       const image::FrameOutputs& outputs = {});
+
+  // Everything Render does before it draws: settings parsed and resolved, the model loaded and the
+  // robot prepared (cached), joint values resolved. Throws urdfsnap::Error as Render does.
+  Prepared Prepare(const RenderRequest& request, const OptionLabel& label, Warnings& warnings);
+
+  // Draws `prepared` into the images `outputs` asks for; reads no file.
+  image::Frame Draw(const Prepared& prepared, const image::FrameOutputs& outputs = {});
 
   // The settings Render uses for `request`, resolved: the view as the frame shows it (--fit applied,
   // `fit` then kNone), an .rviz fixed frame outside the robot replaced by the root link. Loads and
@@ -70,13 +86,6 @@ class RenderSession {
     std::unique_ptr<render::RobotRenderer> renderer;
     Warnings warnings;   // preparing it (missing meshes, plain paths), given again to every render
   };
-  // A request made ready to draw: resolved settings, joint positions, the prepared robot.
-  struct Prepared {
-    render::RenderSettings settings;
-    std::vector<double> positions;
-    const render::RobotRenderer* renderer;
-  };
-  Prepared Prepare(const RenderRequest& request, const OptionLabel& label, Warnings& warnings);
   const Model& LoadedModelFor(const ModelRequest& request);
   const Robot& RobotFor(const ModelRequest& request, const Model& model, const scene::SceneOptions& options);
   gl::Renderer& RendererFor(int samples);
