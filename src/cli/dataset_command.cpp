@@ -51,15 +51,15 @@ void AddSceneOptions(CLI::App& command, request::RenderRequest& request) {
   }
 }
 
-// "MIN:MAX" with MIN ≤ MAX, both within [low, high].
+// "MIN:MAX" with MIN <= MAX, both within [low, high].
 dataset::Interval ParseInterval(const std::string& text, const std::string& option, double low, double high) {
   const size_t colon = text.find(':');
   dataset::Interval range;
   if (colon == std::string::npos || !ParseNumber(text.substr(0, colon), range.low) ||
       !ParseNumber(text.substr(colon + 1), range.high) || range.low > range.high || range.low < low ||
       range.high > high) {
-    throw Error(option + " '" + text + "': expected MIN:MAX with " + FormatNumber(low) + " ≤ MIN ≤ MAX ≤ " +
-                FormatNumber(high));
+    throw Error(option + " '" + text + "': expected MIN:MAX, MIN not above MAX, both from " + FormatNumber(low) +
+                " to " + FormatNumber(high));
   }
   return range;
 }
