@@ -1,6 +1,5 @@
 // urdfsnap's entry point: builds the CLI11 app from the subcommand files and maps failures to exit
 // statuses: 0 success, 2 bad input or usage ("urdfsnap: error: ..."), or a command's CommandExit.
-#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -8,27 +7,12 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "common/did_you_mean.h"
 #include "common/error.h"
 #include "common/version.h"
 #include "gl/gl_context.h"
 
 namespace {
-
-// Levenshtein distance, for "did you mean"
-size_t EditDistance(const std::string& a, const std::string& b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
 
 // The message for a command line whose command is missing or unknown ("urdfsnap frobnicate",
 // "urdfsnap snapshot frob"), or "" when the parse error is another one. CLI11 only says "A
@@ -55,11 +39,30 @@ std::string CommandError(const CLI::App& app) {
     return "unknown option '" + option + "' and no " + kind + " (commands: " + list + ")";
   }
   if (word.empty()) return "no " + kind + " given (commands: " + list + "; see 'urdfsnap --help')";
-  std::string hint;
-  for (const std::string& name : names) {
-    if (EditDistance(word, name) <= 2) hint = "did you mean '" + name + "'? ";
+  return "unknown " + kind + " '" + word + "' (" + urdfsnap::DidYouMean(word, names) + "commands: " + list + ")";
+}
+
+// The message for an option the command does not have ("urdfsnap render m.urdf --yaww 1"), with the
+// nearest of its options, or "" when the parse error is another one.
+std::string OptionError(const CLI::App& app) {
+  const CLI::App* level = &app;
+  while (!level->get_subcommands().empty()) level = level->get_subcommands().front();
+  if (level == &app) return "";
+  std::string unknown;
+  for (const std::string& arg : app.remaining(true)) {
+    if (arg.size() > 1 && arg[0] == '-' && unknown.empty()) unknown = arg.substr(0, arg.find('='));
   }
-  return "unknown " + kind + " '" + word + "' (" + hint + "commands: " + list + ")";
+  if (unknown.empty()) return "";
+  std::vector<std::string> names;
+  for (const CLI::Option* option : level->get_options()) {
+    for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    for (const std::string& name : option->get_snames()) names.push_back("-" + name);
+  }
+  names.push_back("--strict");
+  const std::string command = level->get_parent() == &app ? level->get_name()
+                                                          : level->get_parent()->get_name() + " " + level->get_name();
+  return "unknown option '" + unknown + "' for " + command + " (" + urdfsnap::DidYouMean(unknown, names) +
+         "see 'urdfsnap " + command + " --help')";
 }
 
 }  // namespace
@@ -93,7 +96,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const std::string command_error = CommandError(app);
+    std::string command_error = CommandError(app);
+    if (command_error.empty()) command_error = OptionError(app);
     if (!command_error.empty()) {
       std::fprintf(stderr, "urdfsnap: error: %s\n", command_error.c_str());
     } else {

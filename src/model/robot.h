@@ -30,6 +30,9 @@ struct Joint {
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();          // unit axis in the joint frame
   bool has_limits = false;  // true for revolute and prismatic joints
   double lower = 0, upper = 0;  // metres or radians
+  // <limit velocity effort>, when the joint has a <limit> (continuous joints may have one too):
+  // rad/s or m/s, and N·m or N
+  std::optional<double> velocity, effort;
   int mimic_leader = -1;  // index into Robot::joints(); -1 when the joint is not a mimic
   double mimic_multiplier = 1, mimic_offset = 0;
   int line = 0;  // source line of the <joint> element (0 if unknown)

@@ -191,6 +191,10 @@ std::vector<Joint> ReadJoints(const tinyxml2::XMLElement& robot,
       joint.lower = u->limits->lower;
       joint.upper = u->limits->upper;
     }
+    if (u->limits) {
+      joint.velocity = u->limits->velocity;
+      joint.effort = u->limits->effort;
+    }
     if (u->mimic) {
       joint.mimic_multiplier = u->mimic->multiplier;
       joint.mimic_offset = u->mimic->offset;

@@ -27,7 +27,7 @@ const std::array kTextOptions{
                "link whose frame the scene is shown in (RViz default 'map', which a URDF has not: "
                "here the root link)",
                &R::fixed_frame, false},
-    TextOption{"background", "background colour R,G,B 0-255 (RViz default 48,48,48)", &R::background,
+    TextOption{"background", "background colour: R,G,B 0-255, #RRGGBB or a name such as white (RViz default 48,48,48)", &R::background,
                false},
     TextOption{"alpha", "RobotModel alpha, 0 to 1 (RViz default 1)", &R::alpha, false},
     TextOption{"tf-scale", "TF marker scale (RViz default 1)", &R::tf_scale, false},

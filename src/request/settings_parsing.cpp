@@ -6,6 +6,7 @@
 #include "render/rviz_config.h"
 #include "request/camera_parsing.h"
 #include "request/value_parsing.h"
+#include "scene/tf_markers.h"
 
 namespace urdfsnap::request {
 
@@ -22,7 +23,10 @@ void ApplyView(const RenderRequest& r, const OptionLabel& label, scene::OrbitVie
 
 void ApplyScene(const RenderRequest& r, const OptionLabel& label, scene::SceneOptions& scene) {
   if (!r.fixed_frame.empty()) scene.fixed_frame = r.fixed_frame;
-  if (!r.background.empty()) scene.background = ParseColour(r.background, label("background"));
+  if (!r.background.empty()) {
+    scene.background = ParseColour(r.background, label("background"));
+    scene.tf.name_colour = scene::NameColourOn(scene.background);
+  }
   if (!r.alpha.empty()) scene.alpha = ParseInRange(r.alpha, label("alpha"), 0, 1);
   if (r.collision) scene.show_collision = true;
   if (r.no_visual) scene.show_visual = false;

@@ -24,7 +24,8 @@ render::ImageSize ParseImageSize(const std::string& text, const std::string& opt
 // "X,Y,Z" → vector (finite numbers only); throws urdfsnap::Error naming `option`.
 Eigen::Vector3d ParseVector3(const std::string& text, const std::string& option);
 
-// "R,G,B" with each from 0 to 255 → colour from 0 to 1; throws urdfsnap::Error naming `option`.
+// "R,G,B" with each from 0 to 255, "#RRGGBB", "#RGB" or a CSS colour name ("white", "grey", ...; any
+// case) → colour from 0 to 1; throws urdfsnap::Error naming `option` and the accepted forms.
 Eigen::Vector3f ParseColour(const std::string& text, const std::string& option);
 
 }  // namespace urdfsnap::request

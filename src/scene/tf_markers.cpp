@@ -66,6 +66,11 @@ void AddParentArrow(const Eigen::Vector3d& from, const Eigen::Vector3d& to, doub
 
 }  // namespace
 
+Eigen::Vector4f NameColourOn(const Eigen::Vector3f& background) {
+  const float luma = 0.2126f * background.x() + 0.7152f * background.y() + 0.0722f * background.z();
+  return luma > 0.6f ? Eigen::Vector4f(0, 0, 0, 1) : Eigen::Vector4f::Ones();
+}
+
 std::vector<TextLabel> MakeTfNameLabels(const model::Robot& robot, const TfOptions& options) {
   std::vector<std::string> names;
   for (const auto& link : robot.links()) names.push_back(link.name);
@@ -90,6 +95,7 @@ void AddTfMarkers(const model::Robot& robot, const std::vector<Eigen::Isometry3d
     if (i < names.size()) {
       scene.labels.push_back(names[i]);
       scene.labels.back().anchor = X_FL[i].translation();
+      scene.labels.back().rgba = options.name_colour;
     }
   }
 }

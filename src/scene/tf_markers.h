@@ -19,9 +19,16 @@ struct TfOptions {
   bool show_axes = true;
   bool show_arrows = true;
   double marker_scale = 1.0;
+  // RViz draws frame names white whatever the background (tf_display.cpp); a background given on
+  // the command line picks NameColourOn(background) instead, so that names stay readable
+  Eigen::Vector4f name_colour{1, 1, 1, 1};
 
   bool operator==(const TfOptions&) const = default;
 };
+
+// The colour frame names are readable in on `background`: RViz's white, or black on a background
+// brighter than mid-grey (Rec. 709 luma above 0.6), as documentation pictures on white have.
+Eigen::Vector4f NameColourOn(const Eigen::Vector3f& background);
 
 // The frame names as text labels (one per robot.links(), anchored at the origin), laid out once
 // with Liberation Sans at the marker scale. Throws urdfsnap::Error when the font is missing.

@@ -11,6 +11,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "common/did_you_mean.h"
 #include "common/error.h"
 #include "common/file_reading.h"
 #include "common/number_text.h"
@@ -56,7 +57,8 @@ class SuiteReader {
         cases = value;
         has_cases = true;
       } else {
-        throw ErrorAt(key_node, "unknown key '" + key + "' (expected 'defaults' or 'cases')");
+        throw ErrorAt(key_node, "unknown key '" + key + "' (" + DidYouMean(key, {"defaults", "cases"}) +
+                                    "expected 'defaults' or 'cases')");
       }
     }
     if (!has_cases || !cases.IsSequence() || cases.size() == 0) {
@@ -210,12 +212,15 @@ class SuiteReader {
   }
 
   std::string KnownKeysHint(const std::string& key) const {
-    std::string keys = "name, golden, model, args, packages, xacro-ns, joints, max-delta, max-fraction, max-mean, "
-                       "depth, depth-golden, depth-max-delta, depth-max-fraction, labels, labels-golden, "
-                       "labels-max-fraction";
-    for (const auto& option : request::TextOptions()) keys += std::string(", ") + option.name;
-    for (const auto& option : request::FlagOptions()) keys += std::string(", ") + option.name;
-    return "unknown key '" + key + "' (known: " + keys + ")";
+    std::vector<std::string> keys = {"name", "golden", "model", "args", "packages", "xacro-ns", "joints",
+                                     "max-delta", "max-fraction", "max-mean", "depth", "depth-golden",
+                                     "depth-max-delta", "depth-max-fraction", "labels", "labels-golden",
+                                     "labels-max-fraction"};
+    for (const auto& option : request::TextOptions()) keys.push_back(option.name);
+    for (const auto& option : request::FlagOptions()) keys.push_back(option.name);
+    std::string list;
+    for (const std::string& name : keys) list += (list.empty() ? "" : ", ") + name;
+    return "unknown key '" + key + "' (" + DidYouMean(key, keys) + "known: " + list + ")";
   }
 
   void ApplyKeys(const YAML::Node& map, SnapshotCase& c, bool is_defaults) const {

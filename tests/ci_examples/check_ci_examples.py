@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The README's CI setups (examples/ci/) are the files in the repository, they parse, and they
-work: each one is played here the way its engine would run it, with its own commands, against a
+"""The CI setups docs/snapshot-testing.md shows (examples/ci/) are the files in the repository, they
+parse, and they work: each one is played here the way its engine would run it, with its own commands, against a
 small suite with one failing case and the urdfsnap binary on PATH (installing the package is the
 one step left out):
 
@@ -235,9 +235,9 @@ def play_slurm(script, workspace, env, work):
     check_merged(f"Slurm ({len(shards)} array tasks)", os.path.join(out, "junit.xml"), os.path.join(out, "report"))
 
 
-def check_readme(source):
-    """Every file of examples/ci appears whole in the README, in a fenced block."""
-    with open(os.path.join(source, "README.md")) as f:
+def check_docs_page(source):
+    """Every file of examples/ci appears whole in docs/snapshot-testing.md, in a fenced block."""
+    with open(os.path.join(source, "docs", "snapshot-testing.md")) as f:
         readme = f.read()
     for path in sorted(glob.glob(os.path.join(source, "examples/ci/**/*"), recursive=True)):
         if os.path.isdir(path):
@@ -245,13 +245,13 @@ def check_readme(source):
         with open(path) as f:
             text = f.read()
         if f"\n{text}```" not in readme:
-            fail(f"README.md does not show {os.path.relpath(path, source)} as it is")
+            fail(f"docs/snapshot-testing.md does not show {os.path.relpath(path, source)} as it is")
 
 
 def main():
     urdfsnap, source = (os.path.abspath(p) for p in sys.argv[1:3])
     examples = os.path.join(source, "examples/ci")
-    check_readme(source)
+    check_docs_page(source)
     with open(os.path.join(examples, "github-actions.yml")) as f:
         github = yaml.safe_load(f)
     with open(os.path.join(examples, "gitlab-ci.yml")) as f:

@@ -135,6 +135,12 @@ TEST_F(CliTest, UnknownOrMissingCommandsAreNamed) {
       {"", "urdfsnap: error: no command given (commands: " + list + "; see 'urdfsnap --help')"},
       {"snapshot", "urdfsnap: error: no snapshot command given (commands: check, update, merge; see 'urdfsnap --help')"},
       {"-x", "urdfsnap: error: unknown option '-x' and no command " + commands},
+      {"render x.urdf --yaww 1",
+       "urdfsnap: error: unknown option '--yaww' for render (did you mean '--yaw'? see 'urdfsnap render --help')"},
+      {"snapshot check suite.yaml --reprot out",
+       "urdfsnap: error: unknown option '--reprot' for snapshot check (did you mean '--report'? see 'urdfsnap "
+       "snapshot check --help')"},
+      {"info x.urdf --banana", "urdfsnap: error: unknown option '--banana' for info (see 'urdfsnap info --help')"},
   };
   for (const auto& [arguments, message] : cases) {
     const Result r = RunUrdfsnap(arguments);

@@ -75,7 +75,7 @@ TEST_F(SnapshotTest, SuiteErrorsNameTheFileAndLine) {
   struct Case {
     std::string yaml, expected;
   } cases[] = {
-      {"cases:\n  - name: a\n    model: m.urdf\n    yaww: 1\n", "suite.yaml:4: unknown key 'yaww'"},
+      {"cases:\n  - name: a\n    model: m.urdf\n    yaww: 1\n", "suite.yaml:4: unknown key 'yaww' (did you mean 'yaw'? known: name, "},
       {"cases:\n  - name: a\n    model: m.urdf\n    fit: maybe\n", "suite.yaml:4: 'fit': expected true or false"},
       {"cases:\n  - name: a\n", "suite.yaml:2: case 'a' has no 'model'"},
       {"cases:\n  - name: a b\n    model: m.urdf\n", "suite.yaml:2: case name 'a b'"},
@@ -83,7 +83,7 @@ TEST_F(SnapshotTest, SuiteErrorsNameTheFileAndLine) {
        "suite.yaml:3: a second case named 'a'"},
       {"defaults:\n  name: x\ncases: []\n", "suite.yaml:2: 'name' belongs to a case"},
       {"cases: [\n", "suite.yaml:2: bad YAML"},
-      {"case:\n  - name: a\n", "suite.yaml:1: unknown key 'case'"},
+      {"case:\n  - name: a\n", "suite.yaml:1: unknown key 'case' (did you mean 'cases'? expected"},
       {"cases:\n  - name: a\n    model: " + kMrm + "\n    joints: {link_01__link_02: x}\n",
        "suite.yaml:4: 'joints: link_01__link_02': expected a number"},
   };

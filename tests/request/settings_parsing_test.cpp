@@ -101,6 +101,23 @@ TEST(SettingsParsing, OptionsOverrideTheRvizFile) {
   EXPECT_FALSE(overridden.scene.grid.enabled);
 }
 
+TEST(SettingsParsing, BackgroundTakesNumbersHexAndNames) {
+  const auto background = [](const char* text) {
+    RenderRequest r;
+    r.background = text;
+    return Parse(r).scene.background;
+  };
+  EXPECT_EQ(background("255,128,0"), Eigen::Vector3f(1, 128 / 255.f, 0));
+  EXPECT_EQ(background("white"), Eigen::Vector3f(1, 1, 1));
+  EXPECT_EQ(background("Grey"), Eigen::Vector3f(128 / 255.f, 128 / 255.f, 128 / 255.f));
+  EXPECT_EQ(background("#ff8000"), background("255,128,0"));
+  EXPECT_EQ(background("#f80"), background("255,136,0"));
+  for (const char* bad : {"#ff80", "#gg0000", "whit", "1,2", "-1,0,0"}) {
+    EXPECT_NE(ErrorOf([&] { RenderRequest r; r.background = bad; return r; }()).find("or a colour name"),
+              std::string::npos) << bad;
+  }
+}
+
 TEST(SettingsParsing, BadValuesNameTheOptionThroughTheLabel) {
   const auto with = [](std::string RenderRequest::*field, const char* text) {
     RenderRequest r;
@@ -114,7 +131,9 @@ TEST(SettingsParsing, BadValuesNameTheOptionThroughTheLabel) {
   EXPECT_EQ(ErrorOf(with(&RenderRequest::fov, "120")), "--fov '120': expected a value from 0.06 to 90");
   EXPECT_EQ(ErrorOf(with(&RenderRequest::alpha, "1.5")), "--alpha '1.5': expected a value from 0 to 1");
   EXPECT_EQ(ErrorOf(with(&RenderRequest::background, "300,0,0")),
-            "--background '300,0,0': expected R,G,B from 0 to 255");
+            "--background '300,0,0': expected R,G,B from 0 to 255 (e.g. 255,255,255), #RRGGBB or a colour "
+            "name (black, white, grey, gray, lightgrey, lightgray, darkgrey, darkgray, red, green, blue, "
+            "yellow, cyan, magenta, orange)");
   EXPECT_EQ(ErrorOf(with(&RenderRequest::focal, "1,2")), "--focal '1,2': expected three finite numbers X,Y,Z");
   EXPECT_EQ(ErrorOf(with(&RenderRequest::size, "640x0")), "--size '640x0': each side must be between 1 and 16384 pixels");
   EXPECT_EQ(ErrorOf(with(&RenderRequest::size, "640x48.5")),
