@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <string_view>
 
 #include "common/atomic_file.h"
+#include "common/error.h"
 #include "common/version.h"
 #include "dataset/camera_json.h"
 #include "dataset/coco_regions.h"
@@ -87,11 +90,26 @@ void WriteDataset(const render::RobotRenderer& robot, gl::Renderer& gl, const re
   const model::Robot& model = robot.robot();
   const RobotBounds bounds(robot.scene());
   const std::filesystem::path folder(spec.folder);
-  for (const char* sub : {"images", "depth", "labels"}) std::filesystem::create_directories(folder / sub);
+  for (const char* sub : {"images", "depth", "labels"}) {
+    std::error_code error;
+    std::filesystem::create_directories(folder / sub, error);
+    if (error) throw Error(SourceLocation{(folder / sub).string(), 0}, "cannot make the folder: " + error.message());
+  }
   const int link_count = static_cast<int>(model.links().size());
   const int robot_category = link_count + 1;
 
-  Json images = Json::array(), annotations = Json::array();
+  // the COCO file is streamed, so memory does not grow with the count: images straight into it,
+  // annotations into a scratch file copied in after them (never committed: its destructor removes it)
+  AtomicFile coco((folder / spec.annotations_file).string());
+  AtomicFile scratch((folder / (spec.annotations_file + ".annotations")).string());
+  Json info = {{"description", "urdfsnap dataset of robot '" + model.name() + "'"},
+               {"version", Version()},
+               {"seed", spec.seed},
+               {"count", spec.count},
+               {"samples", {spec.range.first, spec.range.end}}};
+  coco.Write("{\"info\":" + info.dump() + ",\"images\":[");
+  bool first_image = true, first_annotation = true;
+
   const auto draw = [&](std::int64_t i, Sample& s) {
     const std::int64_t k = spec.range.first + i;
     SampleRandom random(spec.seed, static_cast<std::uint64_t>(k));
@@ -116,14 +134,16 @@ void WriteDataset(const render::RobotRenderer& robot, gl::Renderer& gl, const re
     const int w = s.frame.labels.width, h = s.frame.labels.height;
     Json joints = Json::object();
     for (size_t j = 0; j < model.joints().size(); ++j) joints[model.joints()[j].name] = s.positions[j];
-    images.push_back({{"id", k},
-                      {"file_name", "images/" + name},
-                      {"width", w},
-                      {"height", h},
-                      {"depth_file", "depth/" + name},
-                      {"labels_file", "labels/" + name},
-                      {"camera", CameraJson(*camera.model, s.X_FC)},
-                      {"joints", joints}});
+    const Json image = {{"id", k},
+                        {"file_name", "images/" + name},
+                        {"width", w},
+                        {"height", h},
+                        {"depth_file", "depth/" + name},
+                        {"labels_file", "labels/" + name},
+                        {"camera", CameraJson(*camera.model, s.X_FC)},
+                        {"joints", joints}};
+    coco.Write((first_image ? "" : ",") + image.dump());
+    first_image = false;
     // annotation ids are the image's id times the category count plus the category's: the same
     // whichever shard writes them
     const std::int64_t ids = k * (robot_category + 1);
@@ -146,22 +166,24 @@ void WriteDataset(const render::RobotRenderer& robot, gl::Renderer& gl, const re
         annotation["keypoints"] = flat;
         annotation["num_keypoints"] = labelled;
       }
-      annotations.push_back(std::move(annotation));
+      scratch.Write((first_annotation ? "" : ",") + annotation.dump());
+      first_annotation = false;
     }
     if (progress) progress->Update(i + 1);
   };
   stream::RunPipeline<Sample>(spec.range.size(), 2, draw, write);
 
-  Json coco;
-  coco["info"] = {{"description", "urdfsnap dataset of robot '" + model.name() + "'"},
-                  {"version", Version()},
-                  {"seed", spec.seed},
-                  {"count", spec.count},
-                  {"samples", {spec.range.first, spec.range.end}}};
-  coco["images"] = std::move(images);
-  coco["annotations"] = std::move(annotations);
-  coco["categories"] = Categories(model);
-  WriteFileAtomically((folder / spec.annotations_file).string(), coco.dump() + "\n");
+  coco.Write("],\"annotations\":[");
+  {
+    // read back through its temporary name: the scratch file is written with write(2), unbuffered
+    std::ifstream in(scratch.temp_path(), std::ios::binary);
+    std::string chunk(std::size_t{1} << 20, '\0');
+    while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
+      coco.Write(std::string_view(chunk.data(), static_cast<size_t>(in.gcount())));
+    }
+  }
+  coco.Write("],\"categories\":" + Categories(model).dump() + "}\n");
+  coco.Commit();
   if (progress) progress->Finish();
 }
 
