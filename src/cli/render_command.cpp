@@ -51,6 +51,9 @@ void Run(RenderCommandOptions& o) {
   if (!o.depth.empty()) render::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) render::CheckLabelsPath(o.labels, "--labels");
   if (!o.mask.empty()) CheckExtension(o.mask, ".png", "--mask");
+  if (o.mask_dilate < 0 || o.mask_dilate > 1000) {
+    throw Error("--mask-dilate " + std::to_string(o.mask_dilate) + ": expected a number of pixels from 0 to 1000");
+  }
   if (!o.keypoints.empty()) CheckExtension(o.keypoints, ".json", "--keypoints");
   Warnings warnings;
   request::RenderSession session(backend);
@@ -103,8 +106,8 @@ void AddRenderCommand(CLI::App& app) {
                   "also write the robot's binary mask FILE.png (8-bit: 255 on the robot, 0 elsewhere), "
                   "as a robot self-filter uses it (default: none)");
   cmd->add_option("--mask-dilate", o->mask_dilate,
-                  "grow the --mask by N pixels (a disc), for self-filtering depth near the outline (default 0)")
-      ->check(CLI::Range(0, 1000));
+                  "grow the --mask by N pixels (a disc), 0 to 1000, for self-filtering depth near the "
+                  "outline (default 0)");
   cmd->add_option("--keypoints", o->keypoints,
                   "also write FILE.json: every link frame's and joint origin's pixel (u, v) under the "
                   "camera (OpenCV's projectPoints convention, distortion included), depth, whether "

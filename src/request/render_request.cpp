@@ -44,8 +44,8 @@ const std::array kTextOptions{
                "camera pose X,Y,Z,QX,QY,QZ,QW in m (optical convention) in the camera frame, or in "
                "the fixed frame without --camera-frame (default 0,0,0,0,0,0,1)",
                &R::camera_pose, false},
-    TextOption{"near", "camera near clipping distance in m (RViz's Camera display: 0.01)", &R::near, false},
-    TextOption{"far", "camera far clipping distance in m (RViz's Camera display: 100)", &R::far, false},
+    TextOption{"near", "camera near clipping distance in m (default 0.01, RViz's Camera display's)", &R::near, false},
+    TextOption{"far", "camera far clipping distance in m (default 100, RViz's Camera display's)", &R::far, false},
     TextOption{"underlay",
                "a camera image (PNG, the camera's size) drawn behind the robot with the robot "
                "over it at --underlay-alpha, as RViz's Camera display overlays (default none)",
