@@ -1,6 +1,6 @@
 # The Debian package, made by CPack (scripts/package.sh): urdfsnap_<version>_<arch>.deb with what
-# `cmake --install` installs (the binary, the static libraries, their headers, the CMake package)
-# plus the man pages, under /usr.
+# `cmake --install` installs (the binary, the static libraries, their headers, the CMake package,
+# the Python package when URDFSNAP_BUILD_PYTHON) plus the man pages, under /usr.
 #
 # Depends: what dpkg-shlibdeps finds for the binary's shared libraries (assimp, urdfdom, yaml-cpp,
 # tinyxml2, FreeType, expat, zlib, the C++ runtime), plus what is loaded at run time and so is
@@ -38,6 +38,13 @@ set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${urdfsnap_deb_arch})
 set(CPACK_DEBIAN_FILE_NAME "urdfsnap_${PROJECT_VERSION}_${urdfsnap_deb_arch}.deb")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "${URDFSNAP_PACKAGE_RUNTIME_DEPENDS}")
+if(URDFSNAP_BUILD_PYTHON)
+  # the Python package in /usr/lib/python3/dist-packages: its module is built for this Python's
+  # ABI (as Debian's python3 packages depend: >= 3.N~, << 3.N+1) and imports numpy
+  math(EXPR urdfsnap_python_next "${Python3_VERSION_MINOR} + 1")
+  string(APPEND CPACK_DEBIAN_PACKAGE_DEPENDS ", python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}~), "
+         "python3 (<< ${Python3_VERSION_MAJOR}.${urdfsnap_python_next}), python3-numpy")
+endif()
 # what find_package(urdfsnap) needs (cmake/urdfsnapConfig.cmake.in: keep the two in step)
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "liburdfdom-dev, libeigen3-dev, libtinyxml2-dev, libyaml-cpp-dev, nlohmann-json3-dev, zlib1g-dev, libpng-dev, libjpeg-dev, libassimp-dev, libfreetype-dev, libexpat1-dev, pkg-config, libzstd-dev, liblz4-dev, libavcodec-dev, libavformat-dev, libavfilter-dev, libswscale-dev, libavutil-dev, libwebp-dev")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)

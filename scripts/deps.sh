@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages urdfsnap needs to build, test and package, only those that are
 # missing (chromium, ffmpeg's command-line tools, nodejs/npm, python3-jsonschema and python3-yaml
-# are for the tests only; help2man and dpkg-dev for scripts/package.sh).
+# are for the tests only; help2man and dpkg-dev for scripts/package.sh; the Python package's below).
 # Idempotent and quiet when everything is already there. Needs root (apt-get).
 # usage: scripts/deps.sh [--sanitizers]   (--sanitizers: also clang and libFuzzer, for the
 # sanitizer build and scripts/fuzz.sh; the normal build does not need them)
@@ -18,6 +18,9 @@ packages=(
   libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev libavutil-dev libwebp-dev ffmpeg
   chromium  # the browser tests (the HTML report, serve's page), headless; CI fails them without it
   python3-jsonschema python3-yaml help2man dpkg-dev
+  # the Python package (src/python, python/): pybind11 and numpy to build, pytest for its tests,
+  # setuptools, wheel and pip for `pip install .`
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools python3-wheel python3-pip
 )
 # npm only for the test tooling, and only when no npm is on the PATH (NodeSource's nodejs package
 # brings its own, which Debian's npm package would conflict with)

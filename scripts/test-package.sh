@@ -3,7 +3,7 @@
 # tree as it is, nothing compiled again), read with dpkg-deb (name, fields, contents, Depends
 # covering every shared library the binary needs and what it loads at run time), then unpacked
 # with dpkg-deb -x and its binary run from there: --version, and a render of mrm that must match
-# the golden image tests/golden/mrm_zero.png.
+# the golden image tests/golden/mrm_zero.png; and so for the Python package when it is built.
 # usage: scripts/test-package.sh [BUILD_DIR]   (default: build/)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -63,4 +63,18 @@ for page in "$work"/root/usr/share/man/man1/*.gz; do gzip -t "$page"; done
 "$binary" render "$root/models/mrm_description/urdf/mrm.urdf" -o "$work/mrm.png"
 "$binary" diff "$root/tests/golden/mrm_zero.png" "$work/mrm.png" >/dev/null ||
   fail "the packaged binary's render of mrm differs from tests/golden/mrm_zero.png"
+# the Python package, when the tree builds it: importable from the unpacked dist-packages with
+# Debian's python3, rendering the same pixels
+if grep -q '^URDFSNAP_BUILD_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
+  for package in python3 python3-numpy; do
+    [[ "$depends_names" == *" $package "* ]] || fail "Depends lacks $package: $depends"
+  done
+  grep -q '^./usr/lib/python3/dist-packages/urdfsnap/_urdfsnap\..*\.so$' <<<"$contents" ||
+    fail "the package has no Python module in /usr/lib/python3/dist-packages/urdfsnap"
+  PYTHONPATH="$work/root/usr/lib/python3/dist-packages" /usr/bin/python3 -c \
+    'import sys, urdfsnap; urdfsnap.write_png(urdfsnap.Robot(sys.argv[1]).render(), sys.argv[2])' \
+    "$root/models/mrm_description/urdf/mrm.urdf" "$work/mrm_python.png"
+  "$binary" diff "$root/tests/golden/mrm_zero.png" "$work/mrm_python.png" >/dev/null ||
+    fail "the packaged Python module's render of mrm differs from tests/golden/mrm_zero.png"
+fi
 echo "$(basename "$deb"): $(wc -l <<<"$contents") entries, Depends: $depends"

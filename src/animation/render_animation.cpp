@@ -28,7 +28,6 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const
   outputs.colour->Finish();
   if (outputs.depth) outputs.depth->Finish();
   if (outputs.labels) outputs.labels->Finish();
-  if (progress) progress->Finish();
 }
 
 }  // namespace urdfsnap::animation

@@ -26,8 +26,8 @@ struct AnimationOutputs {
 };
 
 // Renders the frames of `range` (the whole animation, or a shard's frames) of `frames` with `robot` through `gl` and writes them, in order, to
-// every output; then finishes each output (moving it into place) and `progress`, if given, which
-// counts the range's frames as they are written. At most `depth` rendered frames wait for the
+// every output; then finishes each output (moving it into place). `progress`, if given, counts the
+// range's frames as they are written; the caller finishes it, saying what was written. At most `depth` rendered frames wait for the
 // writer. Warnings of the poses go to `warnings` (touched on the calling thread only). The first
 // error on either thread stops both and is rethrown; the outputs are then left unfinished, so that
 // their destruction removes what they wrote.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -108,6 +109,17 @@ std::string RangeText(shard::FrameRange range) {
   return "frames " + std::to_string(range.first) + " to " + std::to_string(range.end - 1);
 }
 
+// What the summary line says was written: "wrote run.mp4 (1.2 MB)", or for a sequence "wrote
+// frames/%05d.png (frames 0 to 99)".
+std::string WrittenText(const std::string& output, const shard::FrameRange& range) {
+  if (video::OutputFormatOf(output) == video::OutputFormat::kPngSequence) {
+    return "wrote " + output + " (" + RangeText(range) + ")";
+  }
+  std::error_code error;
+  const auto bytes = std::filesystem::file_size(output, error);
+  return "wrote " + output + (error ? "" : " (" + FormatBytes(bytes) + ")");
+}
+
 // Prints the warnings of `later` that `printed` does not hold already.
 void PrintNewWarnings(const Warnings& printed, const Warnings& later) {
   Warnings fresh;
@@ -203,6 +215,7 @@ void Run(AnimateOptions& o) {
                                &bar, later);
     if (label_names) label_names->Commit();
     folders.Keep();
+    bar.Finish(WrittenText(o.output, range));
     PrintNewWarnings(warnings, later);
   } catch (...) {
     PrintWarningsBeforeError(warnings);

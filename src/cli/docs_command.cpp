@@ -1,5 +1,6 @@
 // `urdfsnap docs`: a robot's documentation page (README.md, index.html and their pictures) written
 // into a folder that appears only when complete, or `--check`ed against a fresh one for CI.
+#include <filesystem>
 #include <memory>
 
 #include "cli/command.h"
@@ -73,7 +74,7 @@ void Run(DocsOptions& o) {
     PrintShardLine(choice, files.size(), all.size(), "pictures and animations",
                    std::to_string(docs::ImageCount(files)) + " of " + std::to_string(docs::ImageCount(all)) +
                        " images, and the page's text");
-    // a progress bar of pictures and animation frames, on a terminal only
+    // a progress bar of pictures and animation frames on a terminal, a summary line anywhere
     stream::ProgressBar bar(docs::ImageCount(files), "images",
                             o.quiet ? stream::ProgressBar::Display::kNever
                                     : stream::ProgressBar::Display::kIfTerminal);
@@ -81,7 +82,7 @@ void Run(DocsOptions& o) {
     if (!o.check.empty()) {
       const docs::ScratchFolder fresh;
       docs::WritePage(loaded.robot, page, look, files, fresh.path(), warnings, progress);
-      bar.Finish();
+      bar.Finish("made the page afresh to compare with " + o.check);
       PrintWarnings(warnings);
       if (!std::filesystem::is_directory(o.check)) {
         Report(o.check, {"no page here (" + std::string(docs::kHtmlFile) + " and the rest are missing)"});
@@ -91,9 +92,10 @@ void Run(DocsOptions& o) {
     }
     docs::PageFolder folder(o.output);
     docs::WritePage(loaded.robot, page, look, files, folder.path(), warnings, progress);
-    bar.Finish();
     PrintWarnings(warnings);
     folder.Commit();
+    bar.Finish("wrote " + (std::filesystem::path(o.output) / docs::kHtmlFile).string() + " and " +
+               (std::filesystem::path(o.output) / docs::kMarkdownFile).string());
   } catch (const CommandExit&) {
     throw;
   } catch (...) {

@@ -1,9 +1,11 @@
-// Strict number parsing and shortest formatting with std::from_chars / std::to_chars.
+// Strict number parsing and shortest formatting with std::from_chars / std::to_chars; file sizes
+// for people.
 #include "common/number_text.h"
 
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace urdfsnap {
 
@@ -37,6 +39,21 @@ std::string FormatNumber(double value) {
   char buffer[32];
   const auto [end, error] = std::to_chars(buffer, buffer + sizeof(buffer), value);
   return error == std::errc() ? std::string(buffer, end) : std::string("?");
+}
+
+std::string FormatBytes(unsigned long long bytes) {
+  if (bytes < 1000) return std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes");
+  const char* units[] = {"kB", "MB", "GB", "TB", "PB"};
+  double value = bytes / 1000.0;
+  int unit = 0;
+  // 999.95 kB would print as "1000 kB": move on to the next unit before it rounds up to 1000
+  while (value >= 999.5 && unit < 4) {
+    value /= 1000;
+    ++unit;
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, value < 9.95 ? "%.1f %s" : "%.0f %s", value, units[unit]);
+  return text;
 }
 
 }  // namespace urdfsnap

@@ -1,5 +1,5 @@
-// Numbers to and from text the same way everywhere in the model stage: locale-independent,
-// shortest round-trip output, strict input.
+// Numbers to and from text the same way everywhere: locale-independent, shortest round-trip
+// output, strict input; and sizes rounded for people.
 #pragma once
 
 #include <string>
@@ -16,5 +16,9 @@ bool ParseNumber(std::string_view text, double& out);
 
 // The shortest text that reads back as `value` ("0.5", "-3.14", "1e-07").
 std::string FormatNumber(double value);
+
+// A file size for people, in SI units to two or three significant digits: "512 bytes", "834 kB",
+// "1.2 MB", "12 MB", "3.4 GB".
+std::string FormatBytes(unsigned long long bytes);
 
 }  // namespace urdfsnap

@@ -333,6 +333,9 @@ class EglContext final : public GlContext {
       egl.make_current(egl_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
     }
   }
+  void Release() override {
+    egl_.egl.make_current(egl_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
   Backend backend() const override { return Backend::kEgl; }
   const std::string& description() const override { return description_; }
 

@@ -29,6 +29,9 @@ class GlContext {
   virtual ~GlContext() = default;
   // Makes this context current on the calling thread (and the GL function table its backend's).
   virtual void MakeCurrent() = 0;
+  // Leaves the calling thread with no current context, so that another thread may make this one
+  // current next (EGL refuses a context current on another thread: EGL_BAD_ACCESS).
+  virtual void Release() = 0;
   // kOsMesa or kEgl, never kAuto.
   virtual Backend backend() const = 0;
   // One line naming the backend, GL_RENDERER and GL_VERSION, e.g. "EGL (surfaceless), llvmpipe

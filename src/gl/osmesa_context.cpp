@@ -62,6 +62,7 @@ class OsMesaContext final : public GlContext {
     }
     UseGlFunctionsFrom(library_.get_proc_address);
   }
+  void Release() override { library_.make_current(nullptr, nullptr, 0, 0, 0); }
   Backend backend() const override { return Backend::kOsMesa; }
   const std::string& description() const override { return description_; }
 

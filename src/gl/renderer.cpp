@@ -283,6 +283,8 @@ const std::string& Renderer::description() const { return impl_->context->descri
 
 std::string Renderer::Summary() const { return impl_->context->Summary(); }
 
+void Renderer::ReleaseContext() { impl_->context->Release(); }
+
 image::Frame Renderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width,
                               int height, const image::FrameOutputs& outputs) {
   return Render(scene, scene::ViewMatrix(view), scene::ProjectionMatrix(view, static_cast<double>(width) / height),

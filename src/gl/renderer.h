@@ -39,6 +39,11 @@ class Renderer {
   image::Frame Render(const scene::Scene& scene, const Eigen::Matrix4d& view, const Eigen::Matrix4d& projection,
                       int width, int height, const image::FrameOutputs& outputs = {});
 
+  // Leaves the context current on no thread (Render makes it current again), so that the next
+  // Render may come from another thread: EGL lets a context be current on one thread only. For
+  // callers that hand a Renderer from thread to thread (the Python module); one thread at a time.
+  void ReleaseContext();
+
   // The backend of the context (kOsMesa or kEgl), its one-line description and the line saying
   // which backend was taken and why (GlContext's).
   Backend backend() const;

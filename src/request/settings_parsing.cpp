@@ -56,6 +56,10 @@ render::RenderSettings ParseRenderSettings(const RenderRequest& r, const OptionL
   ApplyScene(r, label, settings.scene);
   settings.samples = r.no_aa ? 0 : 4;
   settings.fit = !r.fit ? render::Fit::kNone : r.focal.empty() ? render::Fit::kFit : render::Fit::kKeepFocal;
+  if (r.fit && !r.distance.empty()) {
+    warnings.Add(label("distance") + " " + r.distance + " is ignored: " + label("fit") +
+                 " chooses the distance that frames the robot");
+  }
   settings.camera = ParseCameraSettings(r, label, settings);
   return settings;
 }

@@ -244,12 +244,30 @@ int FixedLink(const model::Robot& robot, const std::string& fixed_frame) {
   return fixed;
 }
 
+// Asking for collision (or visual) geometry that the robot does not have draws nothing of it: say
+// so rather than leave the user to wonder whether the option took.
+void WarnOfShapesNotThere(const model::Robot& robot, const SceneOptions& options, Warnings& warnings) {
+  bool visuals = false, collisions = false;
+  for (const model::Link& link : robot.links()) {
+    visuals = visuals || !link.visuals.empty();
+    collisions = collisions || !link.collisions.empty();
+  }
+  if (options.show_collision && !collisions) {
+    warnings.Add("collision geometry is shown, but robot '" + robot.name() + "' has none (no link has a <collision>)");
+  }
+  if (options.show_visual && !visuals && !options.show_collision) {
+    warnings.Add("robot '" + robot.name() + "' has no visual geometry (no link has a <visual>); --collision shows "
+                 "its collision geometry");
+  }
+}
+
 }  // namespace
 
 RobotScene::RobotScene(const model::Robot& robot, SceneOptions options, Warnings& warnings)
     : robot_(robot), options_(std::move(options)), fixed_link_(FixedLink(robot, options_.fixed_frame)) {
   const std::vector<float> alphas = LinkAlphas(robot_, options_);
   const std::vector<ShownShape> shapes = ShownShapes(robot_, options_);
+  WarnOfShapesNotThere(robot_, options_, warnings);
   FileLoader files(options_, warnings);
   files.Prefetch(shapes);
   for (const ShownShape& shape : shapes) {

@@ -66,8 +66,10 @@ std::string InitialViewJson(const request::RenderRequest& base, const render::Re
   given.insert(given.end(), base.joints.begin(), base.joints.end());
   nlohmann::json joints = nlohmann::json::object();
   for (const auto& [name, value] : given) joints[name] = value;
-  const nlohmann::json result = {
-      {"options", options}, {"fov", view.fov_y}, {"joints", joints}, {"case", CaseBase(base)}};
+  // the page's frame follows the window's size unless a size other than the default was asked for
+  const bool size_given = base.size != request::RenderRequest{}.size;
+  const nlohmann::json result = {{"options", options},     {"size_given", size_given}, {"fov", view.fov_y},
+                                 {"joints", joints},       {"case", CaseBase(base)}};
   return result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 

@@ -12,7 +12,8 @@
 namespace urdfsnap::serve {
 
 // JSON: {"options": {size, yaw, pitch, distance, focal, alpha, background as text; fit, no-grid,
-// tf, collision, no-visual as booleans}, "fov": radians, "joints": {NAME: value} (the -j and
+// tf, collision, no-visual as booleans}, "size_given": whether a size other than the default was
+// asked for (else the page's frame follows its window), "fov": radians, "joints": {NAME: value} (the -j and
 // --joints values given), "case": {"model", "args", "packages", "xacro-ns", "options"}} with
 // absolute paths in "case". `settings` are those `base` renders with, the view fitted.
 // Throws urdfsnap::Error for an unreadable joint file.

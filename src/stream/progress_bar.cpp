@@ -70,7 +70,8 @@ ProgressBar::ProgressBar(std::int64_t total, std::string unit, Display display, 
       unit_(std::move(unit)),
       out_(out),
       shown_(display == Display::kAlways ||
-             (display == Display::kIfTerminal && ::isatty(::fileno(out)))) {}
+             (display == Display::kIfTerminal && ::isatty(::fileno(out)))),
+      reported_(display != Display::kNever) {}
 
 ProgressBar::~ProgressBar() {
   if (shown_ && !finished_) Draw("");
@@ -94,16 +95,20 @@ void ProgressBar::Update(std::int64_t done) {
   Draw(FormatProgressLine(done, total_, unit_, Elapsed(), TerminalWidth(out_)));
 }
 
-void ProgressBar::Finish() {
-  if (!shown_ || finished_) return;
+void ProgressBar::Finish(const std::string& result) {
+  if (!reported_ || finished_) return;
   finished_ = true;
   const double seconds = Elapsed();
   char text[160];
   std::snprintf(text, sizeof text, "%lld %s in %.1f s", static_cast<long long>(done_),
                 unit_.c_str(), seconds);
-  std::string line = text;
+  std::string line = (result.empty() ? "" : result + ": ") + text;
   if (seconds > 0 && done_ > 0) line += " (" + Rate(done_ / seconds, unit_) + ")";
-  Draw(line);
+  if (shown_) {
+    Draw(line);
+  } else {
+    std::fputs(line.c_str(), out_);
+  }
   std::fputc('\n', out_);
   std::fflush(out_);
 }

@@ -87,6 +87,7 @@ const std::vector<CommandOption>& Options() {
         {"render", "--depth", Kind::kText},
         {"render", "--labels", Kind::kText},
         {"info", "--help", Kind::kFlag},
+        {"info", "--json", Kind::kFlag},
         {"info", "--package", Kind::kText},
         {"info", "--xacro-ns", Kind::kFlag},
         {"xacro", "--help", Kind::kFlag},

@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -62,19 +63,40 @@ TEST_F(RendererTest, EmptySceneIsTheBackgroundEverywhere) {
   }
 }
 
-TEST_F(RendererTest, TriangleFacingTheLightHasItsFullColourAndTopRowComesFirst) {
+// UpperTriangle in orange-red (1, 0.2, 0).
+Scene UpperTriangleScene() {
   Scene scene;
   DrawItem item;
   item.mesh = UpperTriangle();
   item.X_FG = Eigen::Affine3d::Identity();
   item.rgba = {1, 0.2f, 0, 1};
   scene.items.push_back(item);
+  return scene;
+}
+
+TEST_F(RendererTest, TriangleFacingTheLightHasItsFullColourAndTopRowComesFirst) {
+  const Scene scene = UpperTriangleScene();
   const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
   // n · l = 1, so the colour is exactly the diffuse colour (0.2 · 255 = 51)
   EXPECT_EQ(Pixel(image, 32, 14), (Rgb{255, 51, 0}));
   // the triangle is above the centre, so the bottom rows are background
   EXPECT_EQ(Pixel(image, 32, 40), (Rgb{48, 48, 48}));
   EXPECT_EQ(Pixel(image, 2, 2), (Rgb{48, 48, 48}));
+}
+
+TEST_F(RendererTest, ReleasedContextRendersOnAnotherThread) {
+  const Scene scene = UpperTriangleScene();
+  const image::Image here = renderer_->Render(scene, FrontView(), 64, 48).colour;
+  // without the release, EGL refuses the context on the other thread (EGL_BAD_ACCESS)
+  renderer_->ReleaseContext();
+  image::Image there;
+  std::thread([&] {
+    there = renderer_->Render(scene, FrontView(), 64, 48).colour;
+    renderer_->ReleaseContext();
+  }).join();
+  EXPECT_EQ(there.rgb, here.rgb);
+  EXPECT_EQ(Pixel(there, 32, 14), (Rgb{255, 51, 0}));
+  EXPECT_EQ(renderer_->Render(scene, FrontView(), 64, 48).colour.rgb, here.rgb);
 }
 
 TEST_F(RendererTest, BackFacesAreCulled) {

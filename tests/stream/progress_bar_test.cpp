@@ -1,8 +1,10 @@
-// The progress line's text, and that nothing is written where the stream is not a terminal.
+// The progress line's text, and that only the summary is written where the stream is not a
+// terminal.
 #include "stream/progress_bar.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -55,13 +57,20 @@ TEST(ProgressLineTest, ClockFormat) {
   EXPECT_EQ(FormatClock(3600 * 12 + 3), "12:00:03");
 }
 
-TEST(ProgressBarTest, WritesNothingToAFileThatIsNotATerminal) {
+TEST(ProgressBarTest, WritesOnlyTheSummaryToAFileThatIsNotATerminal) {
   const std::string text = Written(10, ProgressBar::Display::kIfTerminal, [](ProgressBar& bar) {
     EXPECT_FALSE(bar.shown());
     for (int i = 1; i <= 10; ++i) bar.Update(i);
-    bar.Finish();
+    bar.Finish("wrote out.mp4 (1.2 MB)");
   });
-  EXPECT_EQ(text, "");
+  EXPECT_EQ(text.rfind("wrote out.mp4 (1.2 MB): 10 frames in ", 0), 0u) << text;
+  EXPECT_EQ(text.find('\r'), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  EXPECT_EQ(text.back(), '\n');
+}
+
+TEST(ProgressBarTest, AnUnfinishedBarOffATerminalWritesNothing) {
+  EXPECT_EQ(Written(10, ProgressBar::Display::kIfTerminal, [](ProgressBar& bar) { bar.Update(5); }), "");
 }
 
 TEST(ProgressBarTest, QuietWritesNothing) {

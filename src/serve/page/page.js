@@ -11,7 +11,11 @@ const ZOOM_PER_PIXEL = 0.01;              // right-drag: distance change per pix
 const ZOOM_PER_WHEEL_UNIT = 0.001;        // per Qt wheel unit (120 a notch), times distance
 const WHEEL_UNITS_PER_PIXEL = 1.2;        // a browser's wheel notch is 100 pixels, Qt's 120 units
 const MIN_DISTANCE = 0.01, MAX_DISTANCE = 1e6;  // what `render --distance` accepts
-const SIZES = ['640x480', '800x600', '1024x768', '1280x720', '1280x960', '1920x1080'];
+const WINDOW_SIZE = 'window';  // the size option that follows the viewport's size
+const SIZES = [WINDOW_SIZE, '640x480', '800x600', '1024x768', '1280x720', '1280x960', '1920x1080'];
+const MAX_WINDOW_SIDE = 4096;  // a frame the size of a large window, not of a wall display
+const RESIZE_SETTLE_MS = 150;  // a window being resized asks for one frame when it stops
+const GROUP_ABOVE = 8;         // more joints than this are grouped by their name's first word
 const STATUS_POLL_MS = 1000;
 
 const $ = (id) => document.getElementById(id);
@@ -47,17 +51,28 @@ function viewFromOptions(options) {
   };
 }
 
+// The page starts at the options urdfsnap serve was given, with the frame following the window
+// unless --size was given.
 function optionsFromInitial(options) {
   const o = {};
   for (const key of ['size', 'alpha', 'background', 'no-grid', 'tf', 'collision', 'no-visual']) o[key] = options[key];
+  if (!page.initial.size_given) o.size = WINDOW_SIZE;
   return o;
+}
+
+// The pixels a frame has: the size chosen, or the viewport's when it follows the window.
+function frameSize() {
+  if (page.options.size !== WINDOW_SIZE) return page.options.size;
+  const viewport = $('viewport');
+  const side = (pixels) => clamp(Math.floor(pixels), 16, MAX_WINDOW_SIDE);
+  return `${side(viewport.clientWidth)}x${side(viewport.clientHeight)}`;
 }
 
 // The render options the page sets, as key -> text (flags as "true"/"false").
 function pageOptions() {
   const v = page.view, o = page.options;
   return {
-    size: o.size,
+    size: frameSize(),
     yaw: num(v.yaw),
     pitch: num(v.pitch),
     distance: num(v.distance),
@@ -89,6 +104,7 @@ function showControls() {
   const select = $('size');
   if (![...select.options].some((option) => option.value === o.size)) select.add(new Option(o.size, o.size));
   select.value = o.size;
+  select.options[0].textContent = 'fit window';
 }
 
 function wireControls() {
@@ -104,6 +120,12 @@ function wireControls() {
     requestFrame();
   });
   $('size').addEventListener('change', (e) => { page.options.size = e.target.value; requestFrame(); });
+  let resizing = null;
+  window.addEventListener('resize', () => {
+    clearTimeout(resizing);
+    resizing = setTimeout(() => { if (page.options.size === WINDOW_SIZE) requestFrame(); }, RESIZE_SETTLE_MS);
+  });
+  $('joint-filter').addEventListener('input', filterSliders);
   $('reset-view').addEventListener('click', () => {
     page.view = viewFromOptions(page.initial.options);
     page.options = optionsFromInitial(page.initial.options);
@@ -201,6 +223,7 @@ function buildSliders() {
     note.textContent = 'This robot has no movable joints.';
     box.append(note);
   }
+  const groups = jointGroups(joints);
   for (const joint of joints) {
     const start = previous.get(joint.name) ?? page.initial.joints[joint.name] ?? joint.default;
     page.joints.set(joint.name, clamp(start, joint.lower, joint.upper));
@@ -226,8 +249,48 @@ function buildSliders() {
       showJoint(joint.name, slider, field);
     });
     row.append(name, slider, field);
-    box.append(row);
+    (groups.get(joint.name) ?? box).append(row);
     showJoint(joint.name, slider, field);
+  }
+  filterSliders();
+}
+
+// A robot with many joints (a PR2 has dozens) gets its sliders in groups by the first word of
+// their names (r_, l_, head_, torso_ ...), each a <details> of two or more joints: joint name ->
+// the group's element, for the joints that are in one.
+function jointGroups(joints) {
+  const groups = new Map();
+  if (joints.length <= GROUP_ABOVE) return groups;
+  const word = (name) => name.split(/[_\-/]/)[0];
+  const count = new Map();
+  for (const joint of joints) count.set(word(joint.name), (count.get(word(joint.name)) ?? 0) + 1);
+  const made = new Map();
+  for (const joint of joints) {
+    const key = word(joint.name);
+    if (count.get(key) < 2) continue;
+    if (!made.has(key)) {
+      const details = document.createElement('details');
+      details.open = true;
+      const summary = document.createElement('summary');
+      summary.textContent = `${key} (${count.get(key)})`;
+      details.append(summary);
+      $('sliders').append(details);
+      made.set(key, details);
+    }
+    groups.set(joint.name, made.get(key));
+  }
+  return groups;
+}
+
+// Shows the sliders whose joint name contains the filter's text (any case), and the groups with
+// any of them.
+function filterSliders() {
+  const text = $('joint-filter').value.trim().toLowerCase();
+  for (const row of $('sliders').querySelectorAll('.joint')) {
+    row.hidden = text !== '' && !row.querySelector('input').dataset.joint.toLowerCase().includes(text);
+  }
+  for (const group of $('sliders').querySelectorAll('details')) {
+    group.hidden = ![...group.querySelectorAll('.joint')].some((row) => !row.hidden);
   }
 }
 
@@ -303,7 +366,7 @@ function showFrame(blob) {
   const revoke = () => { if (old) URL.revokeObjectURL(old); };
   img.decode().then(revoke, revoke);
   const o = page.options, v = page.view;
-  $('status').textContent = `yaw ${num(v.yaw)} · pitch ${num(v.pitch)} · distance ${num(v.distance)} · focal ${v.focal.map(num).join(',')} · ${o.size}`;
+  $('status').textContent = `yaw ${num(v.yaw)} · pitch ${num(v.pitch)} · distance ${num(v.distance)} · focal ${v.focal.map(num).join(',')} · ${frameSize()}`;
 }
 
 function showError() {

@@ -1,0 +1,110 @@
+// What one Python `urdfsnap.Robot` holds, in C++ and without Python: the loaded robot, the
+// settings that Robot.render's keyword arguments make (parsed by the request stage, as the
+// command line's options are), the robot prepared for the displays asked for and the GL renderers
+// that draw it, all kept for the next call. The pybind11 glue (module.cpp) only converts to and from Python.
+// The pixels are those of `urdfsnap render` with the same options: the same typed core
+// (model::ResolveJointPositions, render::RobotRenderer, gl::Renderer) does the work.
+//
+// Not thread-safe by itself: the glue holds the session's mutex while it draws.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/warnings.h"
+#include "gl/backend.h"
+#include "gl/renderer.h"
+#include "image/image.h"
+#include "model/joint_values.h"
+#include "model/robot.h"
+#include "render/render_settings.h"
+#include "render/robot_renderer.h"
+#include "request/model_request.h"
+#include "request/render_request.h"
+
+namespace urdfsnap::python {
+
+// One Robot.render or render_many call: the view and display keywords in the words of `urdfsnap
+// render` (request::RenderRequest, parsed and checked by the request stage as the command line's
+// options are, so that the same keywords give the same settings and pixels), and what is not a
+// render option there.
+struct RenderCall {
+  request::RenderRequest request;   // its model is filled in by RobotSession::Settings
+  bool depth = false, labels = false;
+  std::string gl_backend = "auto";
+};
+
+// "auto" (URDFSNAP_GL_BACKEND when set, as for a command given no --gl-backend), "osmesa", "egl".
+std::optional<gl::Backend> BackendKeyword(const std::string& name);
+
+class RobotSession {
+ public:
+  // Loads the robot (xacro expanded when the file is xacro or args are given). Throws
+  // urdfsnap::Error with the command line's message for an unreadable or invalid model.
+  explicit RobotSession(request::ModelRequest model);
+
+  const request::ModelRequest& model() const { return model_; }
+  const model::Robot& robot() const { return *robot_; }
+  // The warnings of loading the model (shown once, when it is loaded).
+  const Warnings& load_warnings() const { return load_warnings_; }
+  // The joints a value moves (Robot.joint_names): the columns of render_many's positions.
+  const std::vector<std::string>& movable_joints() const { return movable_joints_; }
+
+  // The settings `call` asks for, for this robot, as `urdfsnap render` parses its options (RViz's
+  // defaults, an .rviz file, the options given). Throws urdfsnap::Error naming the keyword
+  // ("distance '0': expected a value from 0.01 to 1000000"); warnings go to `warnings`.
+  render::RenderSettings Settings(const RenderCall& call, Warnings& warnings) const;
+
+  // One position per robot().joints() for the values `given` (names checked, limits clamped
+  // unless `clamp` is false, mimic joints following), as `urdfsnap render -j` resolves them.
+  std::vector<double> Positions(const model::NamedValues& given, bool clamp, Warnings& warnings) const;
+
+  // Draws each of `poses` (from Positions) with `settings`; `fit` frames all poses with one
+  // camera, as animate does. `deliver(k, frame)` receives each frame. Does no file I/O after the
+  // first call for a display setting (meshes are loaded once).
+  template <typename Deliver>
+  void Render(const render::RenderSettings& settings, std::optional<gl::Backend> backend,
+              const std::vector<std::vector<double>>& poses, const image::FrameOutputs& outputs,
+              Deliver&& deliver, Warnings& warnings);
+
+  std::mutex& mutex() { return mutex_; }
+
+ private:
+  const render::RobotRenderer& RendererFor(const scene::SceneOptions& options, Warnings& warnings);
+  gl::Renderer& GlFor(int samples, std::optional<gl::Backend> backend);
+
+  request::ModelRequest model_;
+  Warnings load_warnings_;
+  std::shared_ptr<const model::Robot> robot_;
+  std::vector<std::string> movable_joints_;
+  // the robot prepared for the last display options asked for (meshes uploaded once)
+  std::optional<scene::SceneOptions> prepared_options_;
+  std::unique_ptr<render::RobotRenderer> prepared_;
+  Warnings prepared_warnings_;
+  // one GL context per multisampling mode and backend asked for
+  std::map<std::pair<int, std::optional<gl::Backend>>, std::unique_ptr<gl::Renderer>> gl_;
+  std::mutex mutex_;
+};
+
+template <typename Deliver>
+void RobotSession::Render(const render::RenderSettings& settings, std::optional<gl::Backend> backend,
+                          const std::vector<std::vector<double>>& poses, const image::FrameOutputs& outputs,
+                          Deliver&& deliver, Warnings& warnings) {
+  const render::RobotRenderer& renderer = RendererFor(settings.scene, warnings);
+  const scene::OrbitView view = renderer.FitView(settings.fit, settings.view, settings.size,
+                                                 static_cast<int>(poses.size()), [&](int k) { return poses[k]; });
+  gl::Renderer& gl = GlFor(settings.samples, backend);
+  // the next call, or the destructor, may come from another thread
+  struct Release {
+    gl::Renderer& gl;
+    ~Release() { gl.ReleaseContext(); }
+  } release{gl};
+  for (size_t k = 0; k < poses.size(); ++k) deliver(k, renderer.Render(gl, poses[k], view, settings.size, outputs));
+}
+
+}  // namespace urdfsnap::python
