@@ -30,6 +30,18 @@ trap 'rm -rf "$work"' EXIT
   --yaw 0.6 --pitch 0.35 --fit 2>/dev/null
 "$root/scripts/depth_labels_preview.py" "$work/colour.png" "$work/depth.png" "$work/labels.png" \
   "$root/docs/images/mrm_depth_labels.png"
+# a calibration check (docs/camera.md): a grey "camera image" (the arm drawn through the test
+# calibration's distorting lens), and the model over it from a pose 4 cm off with one joint 0.15 rad
+# off, as `render --underlay` shows it
+calibration=$root/tests/data/camera/ost.yaml
+arm=(-j base_link__link_01=0.5 -j link_01__link_02=-0.6 -j link_02__link_03=1.1)
+"$snap" render "$mrm" -o "$work/photo.png" --camera-info "$calibration" --distort "${arm[@]}" \
+  -j link_03__link_04=0.4 --camera-pose 5.5,2.5,3.2,-0.43156,-0.67022,0.50765,0.32689 --background 150,160,170
+python3 -c 'import sys; from PIL import Image; Image.open(sys.argv[1]).convert("L").convert("RGB").save(sys.argv[1])' \
+  "$work/photo.png"
+"$snap" render "$mrm" -o "$root/docs/images/mrm_calibration_overlay.png" --camera-info "$calibration" --distort \
+  "${arm[@]}" -j link_03__link_04=0.55 --camera-pose 5.52,2.46,3.23,-0.43478,-0.66976,0.50493,0.32778 \
+  --underlay "$work/photo.png" --no-grid
 # the live view's page in headless Chromium, after its browser test has dragged a slider and orbited
 "$root/tests/serve/serve_page_browser.sh" "$snap" "$root/docs/images/serve_page.png" >/dev/null
 ls "$root/docs/images"

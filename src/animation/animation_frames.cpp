@@ -9,7 +9,7 @@ AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motio
                                  const motion::FramePoses& poses, const CameraRequest& camera,
                                  Warnings& warnings, const motion::RootPoses* root)
     : plan_(plan), poses_(poses), root_(root), size_(camera.size), turntable_(camera.turntable),
-      view_(camera.view) {
+      view_(camera.view), camera_(camera.camera) {
   // motion::kMaxFrames keeps the count within FitView's int
   const int count = static_cast<int>(plan_.frame_count);
   const auto pose = [&](int k) { return Positions(k, warnings); };

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "common/warnings.h"
@@ -22,6 +23,7 @@ struct CameraRequest {
   render::ImageSize size;
   render::Fit fit = render::Fit::kNone;
   bool turntable = false;  // the yaw turns once around over the animation
+  std::optional<render::CameraSettings> camera;   // when set, every frame is seen through it instead
 };
 
 class AnimationFrames {
@@ -48,6 +50,8 @@ class AnimationFrames {
   Eigen::Isometry3d Place(std::int64_t k, Warnings& warnings) const;
   // The camera of frame `k`.
   scene::OrbitView View(std::int64_t k) const;
+  // The calibrated camera every frame is seen through, if one was asked for (View is then unused).
+  const std::optional<render::CameraSettings>& camera() const { return camera_; }
 
  private:
   const motion::FramePlan& plan_;
@@ -56,6 +60,7 @@ class AnimationFrames {
   render::ImageSize size_;
   bool turntable_;
   scene::OrbitView view_;  // frame 0's, fitted
+  std::optional<render::CameraSettings> camera_;
 };
 
 }  // namespace urdfsnap::animation

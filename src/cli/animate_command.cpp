@@ -192,7 +192,7 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   }
   const render::RenderSettings& settings = a.robot.settings;
   a.frames.emplace(*a.robot.renderer, a.plan, *a.poses,
-                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable}, warnings,
+                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable, settings.camera}, warnings,
                    a.root ? &*a.root : nullptr);
 }
 

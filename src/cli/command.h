@@ -45,6 +45,7 @@ void PrintCaseLine(const char* word, const std::string& name, const std::string&
 // Each subcommand file defines one of these; main.cpp calls them all.
 void AddRenderCommand(CLI::App& app);
 void AddAnimateCommand(CLI::App& app);
+void AddDatasetCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);
 void AddXacroCommand(CLI::App& app);
 void AddDiffCommand(CLI::App& app);

@@ -89,6 +89,7 @@ int main(int argc, char** argv) {
   app.fallthrough();
   urdfsnap::cli::AddRenderCommand(app);
   urdfsnap::cli::AddAnimateCommand(app);
+  urdfsnap::cli::AddDatasetCommand(app);
   urdfsnap::cli::AddInfoCommand(app);
   urdfsnap::cli::AddXacroCommand(app);
   urdfsnap::cli::AddDiffCommand(app);

@@ -7,7 +7,11 @@
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
+#include "camera/robot_mask.h"
+#include "common/error.h"
+#include "common/file_extension.h"
 #include "common/output_plan.h"
+#include "dataset/rendered_keypoints.h"
 #include "image/depth_label_files.h"
 #include "image/png_writer.h"
 #include "gl/gl_context.h"
@@ -22,6 +26,8 @@ struct RenderCommandOptions {
   ModelSource model;
   std::string output;
   std::string depth, labels;  // optional depth and link-label image files
+  std::string mask, keypoints;  // optional robot mask and keypoint files
+  int mask_dilate = 0;
   RenderOptions render;
   GlOptions gl_options;
 };
@@ -32,6 +38,12 @@ std::string DefaultOutput(const std::string& model_path) {
   return (std::filesystem::path("output") / stem).string() + ".png";
 }
 
+void CheckExtension(const std::string& path, const std::string& extension, const std::string& option) {
+  if (LowerCaseExtension(path) != extension) {
+    throw Error(option + " '" + path + "': expected a " + extension + " file");
+  }
+}
+
 void Run(RenderCommandOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
@@ -39,6 +51,11 @@ void Run(RenderCommandOptions& o) {
   o.render.ParseJointWords();
   if (!o.depth.empty()) image::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) image::CheckLabelsPath(o.labels, "--labels");
+  if (!o.mask.empty()) CheckExtension(o.mask, ".png", "--mask");
+  if (o.mask_dilate < 0 || o.mask_dilate > 1000) {
+    throw Error("--mask-dilate " + std::to_string(o.mask_dilate) + ": expected a number of pixels from 0 to 1000");
+  }
+  if (!o.keypoints.empty()) CheckExtension(o.keypoints, ".json", "--keypoints");
   // every output checked, and its folder made, before drawing; all written, or none
   const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
   OutputPlan plan;
@@ -50,26 +67,41 @@ void Run(RenderCommandOptions& o) {
     plan.AddFile(o.labels, "--labels", false);
     plan.AddFile(image::LabelNamesFile(o.labels), "the link names of --labels", false);
   }
+  if (!o.mask.empty()) plan.AddFile(o.mask, "--mask", false);
+  if (!o.keypoints.empty()) plan.AddFile(o.keypoints, "--keypoints", false);
   plan.Prepare();
   Warnings warnings;
   request::RenderSession session(backend);
-  request::Rendered rendered;
+  image::Frame frame;
+  std::shared_ptr<const model::Robot> robot;
+  std::string keypoints;
   try {
-    rendered = session.Render(o.render.request, request::CommandLineLabel, warnings,
-                              {true, !o.depth.empty(), !o.labels.empty()});
+    const request::Prepared prepared = session.Prepare(o.render.request, request::CommandLineLabel, warnings);
+    const bool wants_keypoints = !o.keypoints.empty();
+    frame = session.Draw(prepared, {true, !o.depth.empty() || wants_keypoints,
+                                    !o.labels.empty() || !o.mask.empty() || wants_keypoints});
+    robot = prepared.robot;
+    if (wants_keypoints) {
+      const render::RenderSettings& s = prepared.settings;
+      keypoints = dataset::RenderedKeypointsJson(
+          *prepared.renderer, prepared.positions,
+          s.camera ? *s.camera : render::OrbitCamera(s.view, s.size.width, s.size.height), frame);
+    }
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
   }
   PrintWarnings(warnings);
-  plan.Write(output, image::EncodePng(rendered.frame.colour));
+  plan.Write(output, image::EncodePng(frame.colour));
   if (!o.depth.empty()) {
-    plan.Write(o.depth, image::EncodeDepth(rendered.frame.depth, std::filesystem::path(o.depth).extension().string()));
+    plan.Write(o.depth, image::EncodeDepth(frame.depth, std::filesystem::path(o.depth).extension().string()));
   }
   if (!o.labels.empty()) {
-    plan.Write(o.labels, image::EncodeLabels(rendered.frame.labels));
-    plan.Write(image::LabelNamesFile(o.labels), image::LabelNamesJson(rendered.robot->LinkNames()));
+    plan.Write(o.labels, image::EncodeLabels(frame.labels));
+    plan.Write(image::LabelNamesFile(o.labels), image::LabelNamesJson(robot->LinkNames()));
   }
+  if (!o.mask.empty()) plan.Write(o.mask, image::EncodeGray8Png(camera::RobotMask(frame.labels, o.mask_dilate)));
+  if (!o.keypoints.empty()) plan.Write(o.keypoints, keypoints);
   plan.Commit();
 }
 
@@ -88,6 +120,16 @@ void AddRenderCommand(CLI::App& app) {
                   "also write the link-label image FILE.png (16-bit: 1 + the index of the link "
                   "nearest at each pixel, in `info`'s link order, 0 off the robot) and FILE.json "
                   "(value -> link name) (default: none)");
+  cmd->add_option("--mask", o->mask,
+                  "also write the robot's binary mask FILE.png (8-bit: 255 on the robot, 0 elsewhere), "
+                  "as a robot self-filter uses it (default: none)");
+  cmd->add_option("--mask-dilate", o->mask_dilate,
+                  "grow the --mask by N pixels (a disc), 0 to 1000, for self-filtering depth near the "
+                  "outline (default 0)");
+  cmd->add_option("--keypoints", o->keypoints,
+                  "also write FILE.json: every link frame's and joint origin's pixel (u, v) under the "
+                  "camera (OpenCV's projectPoints convention, distortion included), depth, whether "
+                  "it is in the image and visible, and the camera (K, D, pose) (default: none)");
   o->render.AddOptions(*cmd);
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });

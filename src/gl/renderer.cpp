@@ -165,15 +165,15 @@ struct Renderer::Impl {
 
   // The colour image: opaque geometry first, then transparent geometry, lines and text blended
   // back to front, as Ogre orders RViz's scene.
-  image::Image DrawColour(const scene::Scene& scene, const scene::OrbitView& view, const Eigen::Matrix4d& V,
-                          const Eigen::Matrix4d& P, int width, int height) {
+  image::Image DrawColour(const scene::Scene& scene, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P,
+                          int width, int height) {
     if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height) {
       framebuffer.reset();
       framebuffer = std::make_unique<Framebuffer>(width, height, samples);
     }
     framebuffer->Bind();
     const Eigen::Matrix4d PV = P * V;
-    const Eigen::Vector3d eye = scene::EyePosition(view);
+    const Eigen::Vector3d eye = V.inverse().topRightCorner<3, 1>();
 
     glClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
     glClearDepth(1.0);
@@ -287,12 +287,16 @@ void Renderer::ReleaseContext() { impl_->context->Release(); }
 
 image::Frame Renderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width,
                               int height, const image::FrameOutputs& outputs) {
+  return Render(scene, scene::ViewMatrix(view), scene::ProjectionMatrix(view, static_cast<double>(width) / height),
+                width, height, outputs);
+}
+
+image::Frame Renderer::Render(const scene::Scene& scene, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P,
+                              int width, int height, const image::FrameOutputs& outputs) {
   Impl& r = *impl_;
   r.context->MakeCurrent();
-  const Eigen::Matrix4d V = scene::ViewMatrix(view);
-  const Eigen::Matrix4d P = scene::ProjectionMatrix(view, static_cast<double>(width) / height);
   image::Frame frame;
-  if (outputs.colour) frame.colour = r.DrawColour(scene, view, V, P, width, height);
+  if (outputs.colour) frame.colour = r.DrawColour(scene, V, P, width, height);
   if (outputs.depth || outputs.labels) {
     image::LabelImage labels = r.DrawLabels(scene, V, P, width, height);
     if (outputs.depth) frame.depth = r.label_framebuffer->ReadDepths(labels);

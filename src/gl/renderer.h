@@ -33,6 +33,12 @@ class Renderer {
   image::Frame Render(const scene::Scene& scene, const scene::OrbitView& view, int width, int height,
                       const image::FrameOutputs& outputs = {});
 
+  // As above, through any camera: `view` takes the scene's frame to GL's eye frame (looking down
+  // −Z, +Y up) and `projection` the eye frame to clip space (a calibrated camera's, see
+  // camera::GlProjection). The depth image holds −z of the eye frame.
+  image::Frame Render(const scene::Scene& scene, const Eigen::Matrix4d& view, const Eigen::Matrix4d& projection,
+                      int width, int height, const image::FrameOutputs& outputs = {});
+
   // Leaves the context current on no thread (Render makes it current again), so that the next
   // Render may come from another thread: EGL lets a context be current on one thread only. For
   // callers that hand a Renderer from thread to thread (the Python module); one thread at a time.

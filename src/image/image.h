@@ -38,6 +38,13 @@ struct Gray16Image {
   std::vector<std::uint16_t> values;   // width * height, top row first
 };
 
+// An 8-bit single-channel image: a binary mask (0 or 255).
+struct Gray8Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> values;   // width * height, top row first
+};
+
 // Which images a render produces; all come from the same view and pose.
 struct FrameOutputs {
   bool colour = true;

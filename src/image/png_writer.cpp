@@ -45,25 +45,41 @@ namespace {
   return true;
 }();
 
-}  // namespace
-
-std::vector<std::uint8_t> EncodePng(const Image& image) {
-  CheckImage(image, "EncodePng");
+// stb's PNG bytes of `channels` 8-bit channels per pixel.
+std::vector<std::uint8_t> Encode(const std::uint8_t* pixels, int width, int height, int channels,
+                                 const char* role) {
   int size = 0;
-  unsigned char* png =
-      stbi_write_png_to_mem(image.rgb.data(), image.width * 3, image.width, image.height, 3, &size);
+  unsigned char* png = stbi_write_png_to_mem(pixels, width * channels, width, height, channels, &size);
   if (png == nullptr) {
-    throw Error("EncodePng: out of memory encoding a " + std::to_string(image.width) + "x" +
-                std::to_string(image.height) + " image");
+    throw Error(std::string(role) + ": out of memory encoding a " + SizeText(width, height) + " image");
   }
   std::vector<std::uint8_t> bytes(png, png + size);
   std::free(png);
   return bytes;
 }
 
-void WritePng(const Image& image, const std::string& path) {
-  const std::vector<std::uint8_t> png = EncodePng(image);
+void WriteBytes(const std::vector<std::uint8_t>& png, const std::string& path) {
   WriteFileAtomically(path, {reinterpret_cast<const char*>(png.data()), png.size()});
 }
+
+}  // namespace
+
+std::vector<std::uint8_t> EncodePng(const Image& image) {
+  CheckImage(image, "EncodePng");
+  return Encode(image.rgb.data(), image.width, image.height, 3, "EncodePng");
+}
+
+void WritePng(const Image& image, const std::string& path) { WriteBytes(EncodePng(image), path); }
+
+std::vector<std::uint8_t> EncodeGray8Png(const Gray8Image& image) {
+  CheckImageSize(image.width, image.height, "EncodeGray8Png");
+  if (image.values.size() != static_cast<size_t>(image.width) * image.height) {
+    throw Error("EncodeGray8Png: " + std::to_string(image.values.size()) + " values for a " +
+                SizeText(image.width, image.height) + " image");
+  }
+  return Encode(image.values.data(), image.width, image.height, 1, "EncodeGray8Png");
+}
+
+void WriteGray8Png(const Gray8Image& image, const std::string& path) { WriteBytes(EncodeGray8Png(image), path); }
 
 }  // namespace urdfsnap::image

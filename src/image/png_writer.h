@@ -18,4 +18,10 @@ std::vector<std::uint8_t> EncodePng(const Image& image);
 // file appears and an existing one is unchanged. Throws urdfsnap::Error naming the path.
 void WritePng(const Image& image, const std::string& path);
 
+// The PNG file bytes of an 8-bit grey image (a mask); throws as EncodePng does.
+std::vector<std::uint8_t> EncodeGray8Png(const Gray8Image& image);
+
+// Encodes and writes to `path` atomically (see WriteFileAtomically).
+void WriteGray8Png(const Gray8Image& image, const std::string& path);
+
 }  // namespace urdfsnap::image

@@ -1,8 +1,11 @@
 // The typed settings of one render, parsed once from text (command line, suite file, `.rviz`) by
 // the request stage, or filled in by C++ users directly: what the displays show, the orbit view,
-// the image size, multisampling and view fitting. Defaults are RViz's.
+// the image size, multisampling and view fitting, or a calibrated camera. Defaults are RViz's.
 #pragma once
 
+#include <optional>
+
+#include "render/camera_settings.h"
 #include "scene/orbit_view.h"
 #include "scene/scene_options.h"
 
@@ -26,6 +29,7 @@ struct RenderSettings {
   ImageSize size;
   int samples = 4;             // multisampling per pixel, 4 as RViz requests; 0 = off
   Fit fit = Fit::kNone;
+  std::optional<CameraSettings> camera;   // when set, seen through it instead of `view`, at its size
 };
 
 }  // namespace urdfsnap::render

@@ -1,6 +1,8 @@
 // RobotRenderer: forward kinematics and the prepared scene per frame, drawn by a gl::Renderer.
 #include "render/robot_renderer.h"
 
+#include "camera/underlay.h"
+#include "common/error.h"
 #include "model/forward_kinematics.h"
 #include "scene/view_fitting.h"
 
@@ -18,6 +20,42 @@ image::Frame RobotRenderer::Render(gl::Renderer& gl, const std::vector<double>& 
                                    const scene::OrbitView& view, ImageSize size,
                                    const image::FrameOutputs& outputs, const Eigen::Isometry3d& X_SF) const {
   return gl.Render(Pose(positions, X_SF), view, size.width, size.height, outputs);
+}
+
+Eigen::Isometry3d RobotRenderer::CameraPose(const std::vector<Eigen::Isometry3d>& X_RL,
+                                            const CameraSettings& camera) const {
+  int link = scene_.fixed_link();
+  if (!camera.frame.empty()) {
+    link = robot_->FindLink(camera.frame);
+    if (link < 0) {
+      throw Error("camera frame '" + camera.frame + "' is not a link of robot '" + robot_->name() + "'");
+    }
+  }
+  const Eigen::Isometry3d X_FL = X_RL[scene_.fixed_link()].inverse() * X_RL[link];
+  return camera.model->Pose(X_FL * camera.pose);
+}
+
+image::Frame RobotRenderer::Render(gl::Renderer& gl, const std::vector<double>& positions,
+                                   const CameraSettings& camera, const image::FrameOutputs& outputs) const {
+  const std::vector<Eigen::Isometry3d> X_RL = model::ComputeLinkPoses(*robot_, positions);
+  const camera::CameraModel& model = *camera.model;
+  const bool underlay = camera.underlay && outputs.colour;
+  image::FrameOutputs wanted = outputs;
+  wanted.labels = outputs.labels || underlay;
+  const Eigen::Matrix4d view = camera::GlViewMatrix(CameraPose(X_RL, camera));
+  image::Frame frame = model.Finish(gl.Render(scene_.Pose(X_RL), view, model.GlProjection(), model.drawn().width,
+                                              model.drawn().height, wanted));
+  if (underlay) {
+    camera::DrawUnderlay(*camera.underlay, camera.underlay_file, camera.overlay_alpha, frame.labels, frame.colour);
+    if (!outputs.labels) frame.labels = {};
+  }
+  return frame;
+}
+
+image::Frame RobotRenderer::Render(gl::Renderer& gl, const std::vector<double>& positions,
+                                   const RenderSettings& settings, const image::FrameOutputs& outputs) const {
+  if (settings.camera) return Render(gl, positions, *settings.camera, outputs);
+  return Render(gl, positions, settings.view, settings.size, outputs);
 }
 
 scene::OrbitView RobotRenderer::FitView(Fit fit, const scene::OrbitView& view, ImageSize size, int count,

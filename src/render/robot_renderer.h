@@ -42,6 +42,22 @@ class RobotRenderer {
                       ImageSize size, const image::FrameOutputs& outputs = {},
                       const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
 
+  // Renders one frame of the robot at `positions` through a calibrated camera, at the camera's
+  // image size: depth along its optical axis, labels from the same pixels, the lens applied when
+  // the camera distorts, the camera's underlay (if any) behind the robot. Throws urdfsnap::Error
+  // for an unknown camera frame, or as gl::Renderer::Render does.
+  image::Frame Render(gl::Renderer& gl, const std::vector<double>& positions, const CameraSettings& camera,
+                      const image::FrameOutputs& outputs = {}) const;
+
+  // Renders one frame as `settings` ask: through settings.camera when set, else through
+  // settings.view at settings.size.
+  image::Frame Render(gl::Renderer& gl, const std::vector<double>& positions, const RenderSettings& settings,
+                      const image::FrameOutputs& outputs = {}) const;
+
+  // The camera's optical frame in the fixed frame for link poses X_RL (model::ComputeLinkPoses).
+  // Throws urdfsnap::Error when camera.frame is not a link of the robot.
+  Eigen::Isometry3d CameraPose(const std::vector<Eigen::Isometry3d>& X_RL, const CameraSettings& camera) const;
+
   // The view `fit` makes of `view` for the poses `pose(k)` (placed at `place(k)` when given),
   // k = 0 .. count-1, as one camera for all of them (an animation's camera does not jump). The
   // poses are asked for twice and not kept.

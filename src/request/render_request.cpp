@@ -32,6 +32,29 @@ const std::array kTextOptions{
                false},
     TextOption{"alpha", "RobotModel alpha, 0 to 1 (RViz default 1)", &R::alpha, false},
     TextOption{"tf-scale", "TF marker scale (RViz default 1)", &R::tf_scale, false},
+    TextOption{"camera-info",
+               "see the robot through this calibrated camera: camera_calibration's YAML file or a "
+               "CameraInfo message as `ros2 topic echo` prints it; the image is its size, with P's "
+               "intrinsics (rectified, as RViz's Camera display draws) (default: the orbit view)",
+               &R::camera_info, true},
+    TextOption{"camera-frame",
+               "link the camera is attached to, in ROS's optical convention: z forward, x right, y "
+               "down (default: the fixed frame)",
+               &R::camera_frame, false},
+    TextOption{"camera-pose",
+               "camera pose X,Y,Z,QX,QY,QZ,QW in m (optical convention) in the camera frame, or in "
+               "the fixed frame without --camera-frame (default 0,0,0,0,0,0,1)",
+               &R::camera_pose, false},
+    TextOption{"near", "camera near clipping distance in m (default 0.01, RViz's Camera display's)", &R::near, false},
+    TextOption{"far", "camera far clipping distance in m (default 100, RViz's Camera display's)", &R::far, false},
+    TextOption{"underlay",
+               "a camera image (PNG, the camera's size) drawn behind the robot with the robot "
+               "over it at --underlay-alpha, as RViz's Camera display overlays (default none)",
+               &R::underlay, true},
+    TextOption{"underlay-alpha",
+               "how much of the camera image shows through the robot, 0 to 1 (RViz's Overlay "
+               "Alpha, default 0.5)",
+               &R::underlay_alpha, false},
 };
 
 const std::array kFlagOptions{
@@ -53,6 +76,10 @@ const std::array kFlagOptions{
     FlagOption{"no-tf-arrows", "TF display without parent arrows (RViz default shown)",
                &R::no_tf_arrows},
     FlagOption{"no-aa", "no multisampling (RViz default 4x)", &R::no_aa},
+    FlagOption{"distort",
+               "apply --camera-info's lens distortion (plumb_bob, rational_polynomial) with its K, "
+               "so the image lines up with the raw camera image (default: rectified, no distortion)",
+               &R::distort},
     FlagOption{"allow-missing-meshes",
                "draw the rest of the robot when a mesh or texture file cannot be found, one "
                "warning each (RViz draws the rest, a texture as Ogre's yellow and black warning "

@@ -25,6 +25,9 @@ struct RenderRequest {
   bool collision = false, no_visual = false, no_grid = false;
   bool tf = false, no_tf_names = false, no_tf_axes = false, no_tf_arrows = false;
   bool no_clamp = false, no_aa = false, allow_missing_meshes = false;
+  // a calibrated camera instead of the orbit view (request/camera_parsing.h)
+  std::string camera_info, camera_frame, camera_pose, near, far, underlay, underlay_alpha;
+  bool distort = false;
 };
 
 // An option that takes a value: "--NAME VALUE" on the command line, "NAME: VALUE" in a suite.

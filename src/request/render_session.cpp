@@ -91,7 +91,7 @@ Prepared RenderSession::Prepare(const RenderRequest& r, const OptionLabel& label
 }
 
 image::Frame RenderSession::Draw(const Prepared& p, const image::FrameOutputs& outputs) {
-  return p.renderer->Render(GlRenderer(p.settings.samples), p.positions, p.settings.view, p.settings.size, outputs);
+  return p.renderer->Render(GlRenderer(p.settings.samples), p.positions, p.settings, outputs);
 }
 
 Rendered RenderSession::Render(const RenderRequest& r, const OptionLabel& label, Warnings& warnings,

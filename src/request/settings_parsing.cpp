@@ -3,6 +3,7 @@
 
 #include <numbers>
 
+#include "request/camera_parsing.h"
 #include "request/rviz_config.h"
 #include "request/value_parsing.h"
 #include "scene/tf_markers.h"
@@ -65,6 +66,8 @@ void ApplyOptions(const RenderRequest& r, const OptionLabel& label, render::Rend
   ApplyScene(r, label, settings.scene);
   settings.samples = r.no_aa ? 0 : 4;
   settings.fit = FitOf(r);
+  // the calibrated camera, if any (reads --camera-info's file)
+  settings.camera = ParseCameraSettings(r, label, settings);
 }
 
 void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {

@@ -42,6 +42,8 @@ class RobotScene {
   const std::vector<LinkPart>& parts() const { return parts_; }
   // The triangles of all parts: what each frame draws of the robot.
   std::size_t triangle_count() const;
+  // The index of the fixed frame's link in robot.links() (0, the root, when none is named).
+  int fixed_link() const { return fixed_link_; }
   // The mesh and texture files read, resolved and without repeats, in the order first used.
   const std::vector<std::string>& files() const { return files_; }
 

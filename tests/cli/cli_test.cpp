@@ -123,7 +123,7 @@ TEST_F(CliTest, UnknownOrMissingCommandsAreNamed) {
     if (line.rfind("Subcommands:", 0) == 0) listing = true;
     else if (listing && line.rfind("  ", 0) == 0) list += (list.empty() ? "" : ", ") + line.substr(2, line.find(' ', 2) - 2);
   }
-  ASSERT_EQ(list.rfind("render, animate, info, xacro, diff, snapshot", 0), 0u) << list;
+  ASSERT_EQ(list.rfind("render, animate, dataset, info, xacro, diff, snapshot", 0), 0u) << list;
   const std::string commands = "(commands: " + list + ")";
   const std::pair<std::string, std::string> cases[] = {
       {"frobnicate", "urdfsnap: error: unknown command 'frobnicate' " + commands},

@@ -35,6 +35,20 @@ struct CommandOption {
   std::string usage = "";
 };
 
+// the camera options of render's table (a camera placed by --camera-pose makes the others apply)
+void AddCameraOptions(std::vector<CommandOption>& options, const char* command, const std::string& before,
+                      bool pose = true) {
+  const std::string camera = before + (pose ? " --camera-pose 0,0,5,1,0,0,0 " : " ");
+  if (pose) options.push_back({command, "--camera-pose", Kind::kNumber, before + " --camera-pose 0,0,{v},1,0,0,0"});
+  options.push_back({command, "--near", Kind::kNumber, camera + "--near {v}"});
+  options.push_back({command, "--far", Kind::kNumber, camera + "--far {v}"});
+  if (pose) options.push_back({command, "--underlay-alpha", Kind::kNumber, camera + "--underlay-alpha {v}"});
+  for (const char* text : {"--camera-info", "--camera-frame", "--underlay"}) {
+    if (pose || std::string(text) == "--camera-info") options.push_back({command, text, Kind::kText});
+  }
+  options.push_back({command, "--distort", Kind::kFlag});
+}
+
 // render's view, display and pose options, which serve and docs have too (docs without -j);
 // `before` is what comes before the option on the command line
 void AddViewOptions(std::vector<CommandOption>& options, const char* command, const std::string& before,
@@ -59,6 +73,7 @@ void AddViewOptions(std::vector<CommandOption>& options, const char* command, co
                            "--no-tf-names", "--no-tf-axes", "--no-tf-arrows", "--no-aa", "--allow-missing-meshes"}) {
     options.push_back({command, flag, Kind::kFlag});
   }
+  AddCameraOptions(options, command, before);
 }
 
 // every option --help lists, per command
@@ -133,13 +148,38 @@ const std::vector<CommandOption>& Options() {
         {"animate", "--quiet", Kind::kFlag},
         {"animate", "--shard", Kind::kText},
         {"animate", "--no-shard", Kind::kFlag},
+        {"render", "--mask", Kind::kText},
+        {"render", "--keypoints", Kind::kText},
+        {"render", "--mask-dilate", Kind::kNumber, "MRM -o OUT --mask M.png --mask-dilate {v}"},
+        {"dataset", "--output", Kind::kText},
+        {"dataset", "--count", Kind::kNumber, "MRM -o OUT --count {v}"},
+        {"dataset", "--seed", Kind::kNumber, "MRM -o OUT --count 1 --seed {v}"},
+        {"dataset", "--distance", Kind::kNumber, "MRM -o OUT --count 1 --distance 1:{v}"},
+        {"dataset", "--elevation", Kind::kNumber, "MRM -o OUT --count 1 --elevation 0:{v}"},
+        {"dataset", "--quiet", Kind::kFlag},
+        {"dataset", "--shard", Kind::kText},
+        {"dataset", "--no-shard", Kind::kFlag},
+        {"dataset", "--size", Kind::kNumber, "MRM -o OUT --count 1 --size {v}x480"},
+        {"dataset", "--fov", Kind::kNumber, "MRM -o OUT --count 1 --fov {v}"},
+        {"dataset", "--background", Kind::kNumber, "MRM -o OUT --count 1 --background {v},0,0"},
+        {"dataset", "--alpha", Kind::kNumber, "MRM -o OUT --count 1 --alpha {v}"},
+        {"dataset", "--tf-scale", Kind::kNumber, "MRM -o OUT --count 1 --tf-scale {v}"},
     };
     AddViewOptions(o, "render", "MRM -o OUT");
     AddViewOptions(o, "serve", "MRM --port 0");
     AddViewOptions(o, "animate", "MRM -o OUT.gif --turntable");
     AddViewOptions(o, "docs", "MRM -o OUT", false);  // its --joints are globs, text
+    // dataset: the display options and the camera's intrinsics; poses and cameras are drawn
+    for (const char* text : {"--help", "--package", "--rviz", "--fixed-frame"}) {
+      o.push_back({"dataset", text, std::string(text) == "--help" ? Kind::kFlag : Kind::kText});
+    }
+    for (const char* flag : {"--xacro-ns", "--no-clamp", "--collision", "--no-visual", "--no-grid", "--tf",
+                             "--no-tf-names", "--no-tf-axes", "--no-tf-arrows", "--no-aa", "--allow-missing-meshes"}) {
+      o.push_back({"dataset", flag, Kind::kFlag});
+    }
+    AddCameraOptions(o, "dataset", "MRM -o OUT --count 1", false);
     // every command that renders: the GL backend (a name) and the line saying which was taken
-    for (const char* command : {"render", "serve", "animate", "docs", "snapshot check", "snapshot update"}) {
+    for (const char* command : {"render", "serve", "animate", "docs", "dataset", "snapshot check", "snapshot update"}) {
       o.push_back({command, "--gl-backend", Kind::kText});
       o.push_back({command, "--verbose", Kind::kFlag});
     }
@@ -196,6 +236,14 @@ const std::vector<SuiteKey>& SuiteKeys() {
       {"no-tf-arrows", Kind::kFlag},
       {"no-aa", Kind::kFlag},
       {"allow-missing-meshes", Kind::kFlag},
+      {"camera-info", Kind::kText},
+      {"camera-frame", Kind::kText},
+      {"camera-pose", Kind::kNumber, "0,0,{v},1,0,0,0"},
+      {"near", Kind::kNumber, "{v}"},
+      {"far", Kind::kNumber, "{v}"},
+      {"underlay", Kind::kText},
+      {"underlay-alpha", Kind::kNumber, "{v}"},
+      {"distort", Kind::kFlag},
   };
   return keys;
 }

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Throughput of `urdfsnap dataset` at 640x480 (colour, depth, labels, COCO annotations; one process,
+# rendering overlapping encoding on two threads), for mrm and, when its folder is given, Franka's
+# Panda (COLLADA meshes); and the cost of one frame through a camera against the orbit view
+# (`render` of the same robot, same size, both with depth and labels). Wall time follows the load
+# of a shared machine (printed first); CPU ms per sample (all threads) is the load-independent
+# figure, and 2000 / that is what two idle cores would reach if both stay busy.
+# usage: bench/dataset/dataset_bench.sh URDFSNAP [SAMPLES] [FRANKA_DESCRIPTION_DIR]
+#   SAMPLES default 400; FRANKA_DESCRIPTION_DIR: a franka_description checkout (ROS package
+#   franka_description, github.com/frankaemika/franka_ros), e.g. /work/robots/franka_description
+set -euo pipefail
+snap=$1
+samples=${2:-400}
+franka=${3:-}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_dataset_bench.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+echo "load average: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
+printf '%-8s %8s %8s %10s %10s %12s %12s\n' robot samples wall_s samples/s cpu_s cpu_ms/sample 2core_max/s
+
+# bench NAME MODEL [OPTIONS...]
+bench() {
+  local name=$1 model=$2
+  shift 2
+  rm -rf "$work/out"
+  /usr/bin/time -f '%e %U %S' -o "$work/time" "$snap" dataset "$model" -o "$work/out" --count "$samples" \
+    --seed 1 --no-shard --quiet "$@" 2>/dev/null
+  read -r wall user sys <"$work/time"
+  awk -v n="$name" -v s="$samples" -v w="$wall" -v u="$user" -v y="$sys" 'BEGIN {
+    c = u + y; printf "%-8s %8d %8.2f %10.1f %10.2f %12.2f %12.0f\n", n, s, w, s / w, c, 1000 * c / s, 2 * s / c }'
+}
+
+bench mrm "$root/models/mrm_description/urdf/mrm.urdf"
+if [ -n "$franka" ]; then
+  bench panda "$franka/robots/panda/panda.urdf.xacro" --package "franka_description=$franka"
+fi
+
+# one frame through a camera against the orbit view: 20 interleaved pairs of render processes
+mrm=$root/models/mrm_description/urdf/mrm.urdf
+orbit=(render "$mrm" -o "$work/o.png" --depth "$work/od.png" --labels "$work/ol.png")
+camera=(render "$mrm" -o "$work/c.png" --depth "$work/cd.png" --labels "$work/cl.png"
+  --camera-pose 4.5,-6,5,-0.8,-0.3,0.1,0.5)
+total_orbit=0 total_camera=0
+for i in $(seq 20); do
+  /usr/bin/time -f '%U %S' -o "$work/t" "$snap" "${orbit[@]}"
+  total_orbit=$(awk -v t="$total_orbit" '{print t + $1 + $2}' "$work/t")
+  /usr/bin/time -f '%U %S' -o "$work/t" "$snap" "${camera[@]}"
+  total_camera=$(awk -v t="$total_camera" '{print t + $1 + $2}' "$work/t")
+done
+awk -v o="$total_orbit" -v c="$total_camera" 'BEGIN {
+  printf "render mrm 640x480 with depth and labels, CPU ms per process (20 interleaved runs): orbit %.1f, camera %.1f\n", 50 * o, 50 * c }'

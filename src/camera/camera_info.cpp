@@ -1,0 +1,161 @@
+// CameraInfo files read with yaml-cpp: both ROS layouts into one struct, every error located.
+#include "camera/camera_info.h"
+
+#include <cmath>
+
+#include <yaml-cpp/yaml.h>
+
+#include "common/error.h"
+#include "common/file_reading.h"
+#include "common/number_text.h"
+#include "image/image.h"
+
+namespace urdfsnap::camera {
+
+namespace {
+
+// each matrix's key in a calibration file, a ROS 2 message and a ROS 1 message
+constexpr std::initializer_list<const char*> kIntrinsicKeys = {"camera_matrix", "k", "K"};
+constexpr std::initializer_list<const char*> kProjectionKeys = {"projection_matrix", "p", "P"};
+
+class Reader {
+ public:
+  Reader(const YAML::Node& root, const std::string& path) : root_(root), path_(path) {}
+
+  // The first of `keys` the file has (layouts and ROS versions spell them differently), and its
+  // spelling there; the first key and an undefined node when it has none.
+  struct Found {
+    YAML::Node node;
+    std::string key;
+  };
+  Found Find(std::initializer_list<const char*> keys) const {
+    for (const char* key : keys) {
+      if (root_[key]) return {root_[key], key};
+    }
+    return {YAML::Node(YAML::NodeType::Undefined), *keys.begin()};
+  }
+
+  // Throws at `node`'s line, or at the file when `node` is not there.
+  [[noreturn]] void Fail(const YAML::Node& node, const std::string& what) const {
+    throw Error(SourceLocation{path_, node.IsDefined() ? node.Mark().line + 1 : 0}, what);
+  }
+
+  double Number(const YAML::Node& node, const std::string& key) const {
+    double value = 0;
+    if (!node.IsScalar() || !ParseNumber(node.Scalar(), value)) {
+      Fail(node, key + ": expected a finite number, got " + (node.IsScalar() ? "'" + node.Scalar() + "'" : node.IsNull() ? "nothing" : "a list or map"));
+    }
+    return value;
+  }
+
+  int Side(std::initializer_list<const char*> keys) const {
+    const auto [node, key] = Find(keys);
+    if (!node) Fail(node, "missing '" + key + "' (the image size)");
+    const double value = Number(node, key);
+    if (value != std::floor(value) || value < 1 || value > image::kMaxImageSide) {
+      Fail(node, key + ": expected a whole number of pixels from 1 to " + std::to_string(image::kMaxImageSide) +
+                     ", got " + node.Scalar());
+    }
+    return static_cast<int>(value);
+  }
+
+  // The numbers of a matrix: a plain list (a message) or {rows, cols, data} (a calibration file).
+  std::vector<double> Numbers(const YAML::Node& node, const std::string& key) const {
+    const YAML::Node list = node.IsMap() ? node["data"] : node;
+    if (!list.IsSequence()) {
+      Fail(node, key + ": expected a list of numbers" + (node.IsMap() ? " under 'data'" : ""));
+    }
+    std::vector<double> numbers;
+    for (const YAML::Node& item : list) numbers.push_back(Number(item, key));
+    return numbers;
+  }
+
+  template <int Rows, int Cols>
+  Eigen::Matrix<double, Rows, Cols> Matrix(std::initializer_list<const char*> keys, bool required,
+                                           const Eigen::Matrix<double, Rows, Cols>& fallback) const {
+    const auto [node, key] = Find(keys);
+    if (!node) {
+      if (required) Fail(node, "missing '" + key + "'");
+      return fallback;
+    }
+    const std::vector<double> numbers = Numbers(node, key);
+    if (numbers.size() != Rows * Cols) {
+      Fail(node, key + ": expected " + std::to_string(Rows * Cols) + " numbers (" + std::to_string(Rows) +
+                     "x" + std::to_string(Cols) + ", row-major), got " + std::to_string(numbers.size()));
+    }
+    Eigen::Matrix<double, Rows, Cols> m;
+    for (int r = 0; r < Rows; ++r) {
+      for (int c = 0; c < Cols; ++c) m(r, c) = numbers[r * Cols + c];
+    }
+    return m;
+  }
+
+  const YAML::Node& root() const { return root_; }
+
+ private:
+  YAML::Node root_;
+  const std::string& path_;
+};
+
+}  // namespace
+
+Intrinsics CameraInfo::RawIntrinsics() const { return {K(0, 0), K(1, 1), K(0, 2), K(1, 2)}; }
+
+Intrinsics CameraInfo::RectifiedIntrinsics() const {
+  if (P.isZero()) return RawIntrinsics();
+  return {P(0, 0), P(1, 1), P(0, 2), P(1, 2)};
+}
+
+CameraInfo ParseCameraInfo(std::string_view text, const std::string& path) {
+  YAML::Node root;
+  try {
+    // `ros2 topic echo` ends each message with "---"; the first document is the message
+    root = YAML::Load(std::string(text));
+  } catch (const YAML::Exception& e) {
+    throw Error(SourceLocation{path, e.mark.line + 1}, "bad YAML: " + e.msg);
+  }
+  if (!root.IsMap()) {
+    throw Error(SourceLocation{path, 0},
+                "expected a camera calibration (image_width, camera_matrix, ...) or a CameraInfo "
+                "message (width, k, ...)");
+  }
+  const Reader r(root, path);
+  CameraInfo info;
+  info.width = r.Side({"image_width", "width"});
+  info.height = r.Side({"image_height", "height"});
+  info.K = r.Matrix<3, 3>(kIntrinsicKeys, true, {});
+  info.R = r.Matrix<3, 3>({"rectification_matrix", "r", "R"}, false, Eigen::Matrix3d::Identity());
+  info.P = r.Matrix<3, 4>(kProjectionKeys, false, Eigen::Matrix<double, 3, 4>::Zero());
+  const YAML::Node model = r.Find({"distortion_model"}).node;
+  if (model && !model.IsScalar()) r.Fail(model, "distortion_model: expected a name such as plumb_bob");
+  info.distortion_model = model ? model.Scalar() : "";
+  const auto [d, d_key] = r.Find({"distortion_coefficients", "d", "D"});
+  if (d) info.D = r.Numbers(d, d_key);
+  std::string why;
+  const std::optional<Distortion> distortion = MakeDistortion(info.distortion_model, info.D, why);
+  if (!distortion) r.Fail(model ? model : d, why);
+  info.distortion = *distortion;
+  const YAML::Node header = root["header"];
+  if (header.IsMap() && header["frame_id"].IsScalar()) info.frame_id = header["frame_id"].Scalar();
+
+  const auto check_focal = [&](const Intrinsics& k, std::initializer_list<const char*> keys) {
+    if (!(k.fx > 0) || !(k.fy > 0)) {
+      const auto [node, key] = r.Find(keys);
+      r.Fail(node, key + ": the focal lengths fx and fy must be positive, got " + FormatNumber(k.fx) +
+                       " and " + FormatNumber(k.fy));
+    }
+  };
+  check_focal(info.RawIntrinsics(), kIntrinsicKeys);
+  if (!info.P.isZero()) check_focal(info.RectifiedIntrinsics(), kProjectionKeys);
+  return info;
+}
+
+CameraInfo ReadCameraInfo(const std::string& path) {
+  try {
+    return ParseCameraInfo(ReadFileBounded(path), path);
+  } catch (const FileReadError& e) {
+    throw Error(SourceLocation{path, 0}, std::string("cannot read the camera info: ") + e.what());
+  }
+}
+
+}  // namespace urdfsnap::camera

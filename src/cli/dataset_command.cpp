@@ -1,0 +1,155 @@
+// `urdfsnap dataset MODEL -o DIR --count N --seed S`: labelled training data (colour, depth, link
+// labels, COCO annotations with joint keypoints) of a robot in random poses from random cameras;
+// see dataset/dataset_writer.h for the files.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string_view>
+#include <limits>
+#include <memory>
+
+#include "cli/command.h"
+#include "cli/gl_options.h"
+#include "cli/model_source.h"
+#include "cli/shard_options.h"
+#include "common/error.h"
+#include "common/number_text.h"
+#include "dataset/dataset_writer.h"
+#include "gl/gl_context.h"
+#include "gl/rasteriser_threads.h"
+#include "request/render_session.h"
+#include "request/value_parsing.h"
+
+namespace urdfsnap::cli {
+
+namespace {
+
+struct DatasetOptions {
+  ModelSource model;
+  std::string output;
+  std::string count, seed = "0", distance, elevation = "0:60";
+  bool quiet = false;
+  ShardOptions sharding;
+  request::RenderRequest request;
+  GlOptions gl_options;
+};
+
+// render's options that a dataset draws per sample, or that a dataset has no use for
+constexpr std::string_view kDrawnPerSample[] = {"yaw", "pitch", "distance", "focal", "fit", "camera-frame",
+                                                "camera-pose", "underlay", "underlay-alpha"};
+
+// render's view and display options less kDrawnPerSample.
+void AddSceneOptions(CLI::App& command, request::RenderRequest& request) {
+  const auto drawn = [](std::string_view name) {
+    return std::find(std::begin(kDrawnPerSample), std::end(kDrawnPerSample), name) != std::end(kDrawnPerSample);
+  };
+  for (const request::TextOption& option : request::TextOptions()) {
+    if (!drawn(option.name)) command.add_option("--" + std::string(option.name), request.*option.field, option.help);
+  }
+  for (const request::FlagOption& option : request::FlagOptions()) {
+    if (!drawn(option.name)) command.add_flag("--" + std::string(option.name), request.*option.field, option.help);
+  }
+}
+
+// "MIN:MAX" with MIN <= MAX, both within [low, high].
+dataset::Interval ParseInterval(const std::string& text, const std::string& option, double low, double high) {
+  const size_t colon = text.find(':');
+  dataset::Interval range;
+  if (colon == std::string::npos || !ParseNumber(text.substr(0, colon), range.low) ||
+      !ParseNumber(text.substr(colon + 1), range.high) || range.low > range.high || range.low < low ||
+      range.high > high) {
+    throw Error(option + " '" + text + "': expected MIN:MAX, MIN not above MAX, both from " + FormatNumber(low) +
+                " to " + FormatNumber(high));
+  }
+  return range;
+}
+
+// A whole number from `low` to `high`.
+double ParseWhole(const std::string& text, const std::string& option, double low, double high) {
+  const double value = request::ParseInRange(text, option, low, high);
+  if (value != std::floor(value)) throw Error(option + " '" + text + "': expected a whole number");
+  return value;
+}
+
+void Run(DatasetOptions& o) {
+  const gl::BackendChoice backend = o.gl_options.Choice();
+  // the writer thread keeps a core busy while samples are drawn
+  const std::string rasteriser = gl::LeaveCoresToOtherThreads(1);
+  if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
+  const auto gl_loading = gl::StartLoadingGl(backend.backend);
+  request::RenderRequest& r = o.request;
+  r.model = o.model.ToRequest();
+  if (o.count.empty()) throw Error("dataset: give the number of samples with --count N");
+  dataset::DatasetSpec spec;
+  spec.folder = o.output;
+  spec.count = static_cast<std::int64_t>(ParseWhole(o.count, "--count", 1, 1e9));
+  spec.seed = static_cast<std::uint64_t>(ParseWhole(o.seed, "--seed", 0, 9007199254740992.0));
+  spec.elevation = ParseInterval(o.elevation, "--elevation", -90, 90);
+  const shard::ShardChoice choice = o.sharding.Choose();
+  spec.range = shard::FramesOfShard(spec.count, choice.shard);
+  spec.annotations_file = choice.sharded() ? "annotations." + std::to_string(choice.shard.index) + "-of-" +
+                                                 std::to_string(choice.shard.count) + ".json"
+                                           : "annotations.json";
+  PrintShardLine(choice, spec.range.size(), spec.count, "samples",
+                 spec.range.size() ? "samples " + std::to_string(spec.range.first) + " to " +
+                                         std::to_string(spec.range.end - 1)
+                                   : "no samples: fewer samples than shards");
+
+  Warnings warnings;
+  try {
+    // the camera: --camera-info's, or the view's field of view at --size; placed per sample
+    request::RenderRequest posed = r;
+    posed.camera_pose = "0,0,0,0,0,0,1";
+    render::RenderSettings settings;
+    std::shared_ptr<const model::Robot> robot;
+    {
+      request::RenderSession session;
+      const request::Prepared prepared = session.Prepare(posed, request::CommandLineLabel, warnings);
+      settings = prepared.settings;
+      robot = prepared.robot;
+    }
+    settings.scene.fixed_frame.clear();   // cameras are placed in the root link's frame
+    const render::RobotRenderer renderer(robot, settings.scene, warnings);
+    spec.distance = o.distance.empty() ? dataset::DefaultDistance(renderer, *settings.camera->model)
+                                       : ParseInterval(o.distance, "--distance", 1e-3, 1e6);
+    PrintWarnings(warnings);
+    gl::Renderer gl(settings.samples, backend);
+    stream::ProgressBar bar(spec.range.size(), "samples",
+                            o.quiet ? stream::ProgressBar::Display::kNever : stream::ProgressBar::Display::kIfTerminal);
+    Warnings later;
+    dataset::WriteDataset(renderer, gl, *settings.camera, spec, &bar, later);
+    PrintWarnings(later);
+    std::fprintf(stderr, "urdfsnap: %lld samples of '%s' in %s (%s)\n", static_cast<long long>(spec.range.size()),
+                 robot->name().c_str(), spec.folder.c_str(), spec.annotations_file.c_str());
+  } catch (...) {
+    PrintWarningsBeforeError(warnings);
+    throw;
+  }
+}
+
+}  // namespace
+
+void AddDatasetCommand(CLI::App& app) {
+  auto o = std::make_shared<DatasetOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "dataset", "Write labelled training data: random poses from random cameras, with depth, labels and COCO");
+  o->model.AddOptions(*cmd);
+  cmd->add_option("-o,--output", o->output,
+                  "folder to write: images/, depth/ and labels/ (NNNNNN.png each) and annotations.json "
+                  "(COCO; annotations.K-of-N.json for shard K of N)")
+      ->required();
+  cmd->add_option("--count", o->count, "number of samples in the dataset (every shard's together)");
+  cmd->add_option("--seed", o->seed, "random seed: the same seed writes the same bytes (default 0)");
+  cmd->add_option("--distance", o->distance,
+                  "camera distance from the robot's centre MIN:MAX in m (default 1 to 2 times the "
+                  "distance at which the zero pose's bounding sphere fills the image height)");
+  cmd->add_option("--elevation", o->elevation,
+                  "camera elevation above the horizontal MIN:MAX in degrees (default 0:60)");
+  cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
+  o->sharding.AddOptions(*cmd, "samples");
+  AddSceneOptions(*cmd, o->request);
+  o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the writer");
+  cmd->callback([o] { Run(*o); });
+}
+
+}  // namespace urdfsnap::cli

@@ -1,0 +1,44 @@
+// `urdfsnap dataset`: N samples of a robot in random poses seen by a camera placed at random on a
+// sphere around it, written as colour, depth and label images and one COCO annotation file. Each
+// sample depends only on (seed, its index), so runs, shards and reruns agree byte for byte.
+//
+//   DIR/images/000000.png   colour (8-bit RGB)
+//   DIR/depth/000000.png    depth, 16-bit millimetres along the optical axis, 0 off the robot
+//   DIR/labels/000000.png   16-bit, 1 + link index, 0 off the robot
+//   DIR/annotations.json    COCO (DIR/annotations.K-of-N.json for shard K of N)
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "common/warnings.h"
+#include "dataset/sampling.h"
+#include "gl/renderer.h"
+#include "render/robot_renderer.h"
+#include "shard/shard_assignment.h"
+#include "stream/progress_bar.h"
+
+namespace urdfsnap::dataset {
+
+struct DatasetSpec {
+  std::string folder;
+  std::int64_t count = 0;            // samples in the whole dataset
+  std::uint64_t seed = 0;
+  Interval distance;                 // m from the robot's centre
+  Interval elevation{0, 60};         // degrees above the horizontal plane
+  shard::FrameRange range;           // the samples this run writes
+  std::string annotations_file;      // the COCO file's name in `folder`
+};
+
+// Writes the samples spec.range of `robot` seen through `camera` (its intrinsics and distortion;
+// its pose is drawn per sample, in the fixed frame, which should be the robot's root). Rendering
+// on this thread overlaps with encoding and writing on a second one. Throws urdfsnap::Error for a
+// file that cannot be written (no annotation file is then written).
+void WriteDataset(const render::RobotRenderer& robot, gl::Renderer& gl, const render::CameraSettings& camera,
+                  const DatasetSpec& spec, stream::ProgressBar* progress, Warnings& warnings);
+
+// The default --distance: 1 to 2 times the distance at which the robot's bounding sphere in
+// its zero pose fills `camera`'s image height.
+Interval DefaultDistance(const render::RobotRenderer& robot, const camera::CameraModel& camera);
+
+}  // namespace urdfsnap::dataset

@@ -1,0 +1,106 @@
+// `urdfsnap dataset`: the same bytes for a seed, shards that add up to the whole, COCO annotations
+// that agree with the label images, and its errors.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_fixture.h"
+#include "image/png_reader.h"
+
+namespace urdfsnap::cli_test {
+namespace {
+
+class DatasetTest : public CliTest {
+ protected:
+  void Dataset(const std::string& folder, const std::string& options) {
+    const Result r = RunUrdfsnap("dataset " + kMrm + " -o " + Path(folder) +
+                                 " --count 5 --size 96x72 --no-grid --quiet " + options);
+    ASSERT_EQ(r.status, 0) << r.output;
+  }
+  nlohmann::json Coco(const std::string& file) { return nlohmann::json::parse(ReadBytes(Path(file))); }
+};
+
+TEST_F(DatasetTest, SameSeedSameBytesAndShardsAddUp) {
+  URDFSNAP_REQUIRE_GL();
+  Dataset("a", "--seed 4");
+  Dataset("b", "--seed 4");
+  Dataset("s", "--seed 4 --shard 1/2");
+  Dataset("s", "--seed 4 --shard 2/2");
+  Dataset("other", "--seed 5");
+  for (const char* sub : {"images", "depth", "labels"}) {
+    for (int k = 0; k < 5; ++k) {
+      const std::string file = std::string(sub) + "/00000" + std::to_string(k) + ".png";
+      const std::string bytes = ReadBytes(Path("a/" + file));
+      ASSERT_FALSE(bytes.empty()) << file;
+      EXPECT_EQ(ReadBytes(Path("b/" + file)), bytes) << file;
+      EXPECT_EQ(ReadBytes(Path("s/" + file)), bytes) << file;
+    }
+  }
+  EXPECT_NE(ReadBytes(Path("other/images/000000.png")), ReadBytes(Path("a/images/000000.png")));
+  EXPECT_EQ(ReadBytes(Path("b/annotations.json")), ReadBytes(Path("a/annotations.json")));
+  // shard 1/2 holds samples 0-2, shard 2/2 samples 3-4; together the whole file's
+  const nlohmann::json whole = Coco("a/annotations.json");
+  const nlohmann::json first = Coco("s/annotations.1-of-2.json"), second = Coco("s/annotations.2-of-2.json");
+  for (const char* key : {"images", "annotations"}) {
+    nlohmann::json joined = first[key];
+    joined.insert(joined.end(), second[key].begin(), second[key].end());
+    EXPECT_EQ(joined, whole[key]) << key;
+  }
+  EXPECT_EQ(first["categories"], whole["categories"]);
+}
+
+TEST_F(DatasetTest, AnnotationsAgreeWithTheLabelImages) {
+  URDFSNAP_REQUIRE_GL();
+  Dataset("d", "--seed 11 --distance 6:8");
+  const nlohmann::json coco = Coco("d/annotations.json");
+  ASSERT_EQ(coco["images"].size(), 5u);
+  ASSERT_EQ(coco["categories"].size(), 7u);   // six links, then the robot
+  EXPECT_EQ(coco["categories"][6]["keypoints"].size(), 5u);
+  int robots = 0;
+  for (const nlohmann::json& image : coco["images"]) {
+    EXPECT_EQ(image["camera"]["K"].size(), 9u);
+    EXPECT_EQ(image["joints"].size(), 5u);
+    const image::Gray16Image labels = image::ReadGray16Png(Path("d/" + image["labels_file"].get<std::string>()));
+    for (const nlohmann::json& a : coco["annotations"]) {
+      if (a["image_id"] != image["id"]) continue;
+      const int category = a["category_id"];
+      int area = 0, x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+      for (int y = 0; y < labels.height; ++y) {
+        for (int x = 0; x < labels.width; ++x) {
+          const int label = labels.values[static_cast<size_t>(y) * labels.width + x];
+          if (category == 7 ? label == 0 : label != category) continue;
+          ++area;
+          x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+        }
+      }
+      EXPECT_EQ(a["area"], area);
+      EXPECT_EQ(a["bbox"], nlohmann::json({x0, y0, x1 - x0 + 1, y1 - y0 + 1}));
+      EXPECT_EQ(a["segmentation"]["size"], nlohmann::json({72, 96}));
+      if (category == 7) {
+        ++robots;
+        ASSERT_EQ(a["keypoints"].size(), 15u);
+        for (size_t i = 2; i < 15; i += 3) EXPECT_TRUE(a["keypoints"][i] == 0 || a["keypoints"][i] == 1 || a["keypoints"][i] == 2);
+      }
+    }
+  }
+  EXPECT_EQ(robots, 5);   // from 6 to 8 m the robot is in every image
+}
+
+TEST_F(DatasetTest, ErrorsAreOneLine) {
+  const auto error = [&](const std::string& options) {
+    const Result r = RunUrdfsnap("dataset " + kMrm + " -o " + Path("e") + " " + options);
+    EXPECT_EQ(r.status, 2) << r.output;
+    return r.output;
+  };
+  EXPECT_EQ(error(""), "urdfsnap: error: dataset: give the number of samples with --count N\n");
+  EXPECT_EQ(error("--count 2.5"), "urdfsnap: error: --count '2.5': expected a whole number\n");
+  EXPECT_EQ(error("--count 3 --distance 4:2"),
+            "urdfsnap: error: --distance '4:2': expected MIN:MAX, MIN not above MAX, both from 0.001 to 1e+06\n");
+  EXPECT_EQ(error("--count 3 --elevation 0:95"),
+            "urdfsnap: error: --elevation '0:95': expected MIN:MAX, MIN not above MAX, both from -90 to 90\n");
+  EXPECT_FALSE(std::filesystem::exists(Path("e")));
+}
+
+}  // namespace
+}  // namespace urdfsnap::cli_test
