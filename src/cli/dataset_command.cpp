@@ -73,8 +73,9 @@ double ParseWhole(const std::string& text, const std::string& option, double low
 
 void Run(DatasetOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
-  // the writer thread keeps a core busy while samples are drawn
-  const std::string rasteriser = gl::LeaveCoresToOtherThreads(1);
+  // the writer thread keeps a core busy while samples are drawn (decided before the robot is
+  // loaded, as for a light robot: 0 triangles)
+  const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, 0);
   if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
   const auto gl_loading = gl::StartLoadingGl(backend.backend);
   request::RenderRequest& r = o.request;

@@ -50,16 +50,6 @@ int WriteAll(int fd, std::string_view bytes, std::int64_t offset = -1) {
 
 }  // namespace
 
-std::string RandomSuffix() {
-  // lower case only: the names stay distinct on case-insensitive file systems
-  static constexpr char kAlphabet[] = "abcdefghijklmnopqrstuvwxyz0123456789";
-  std::random_device device;
-  std::uniform_int_distribution<int> pick(0, sizeof kAlphabet - 2);
-  std::string suffix;
-  for (int i = 0; i < 6; ++i) suffix += kAlphabet[pick(device)];
-  return suffix;
-}
-
 void WriteFileAtomically(const std::string& path, std::string_view bytes) {
   AtomicFile file(path);
   file.Write(bytes);

@@ -8,10 +8,9 @@
 #include <string>
 #include <string_view>
 
-namespace urdfsnap {
+#include "common/random_suffix.h"   // RandomSuffix, for temporary names beside an output
 
-// Six random letters and digits, as mkstemp would pick: for temporary names beside an output.
-std::string RandomSuffix();
+namespace urdfsnap {
 
 // Writes `bytes` to "<path>.tmp-XXXXXX" (created new, mode 0666 less the umask) and renames it to
 // `path`. On any failure the temporary file is removed, an existing file at `path` is left as it

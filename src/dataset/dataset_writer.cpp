@@ -15,10 +15,10 @@
 #include "dataset/coco_regions.h"
 #include "dataset/frame_keypoints.h"
 #include "dataset/robot_bounds.h"
+#include "image/depth_label_files.h"
 #include "image/gray16_png.h"
 #include "image/png_writer.h"
 #include "model/forward_kinematics.h"
-#include "render/frame_files.h"
 #include "stream/pipeline.h"
 
 namespace urdfsnap::dataset {
@@ -127,7 +127,7 @@ void WriteDataset(const render::RobotRenderer& robot, gl::Renderer& gl, const re
     const std::int64_t k = spec.range.first + i;
     const std::string name = Numbered(k, spec.count) + ".png";
     image::WritePng(s.frame.colour, (folder / "images" / name).string());
-    render::WriteDepthFile(s.frame.depth, (folder / "depth" / name).string());
+    image::WriteDepthFile(s.frame.depth, (folder / "depth" / name).string());
     image::WriteGray16Png({s.frame.labels.width, s.frame.labels.height, s.frame.labels.labels},
                           (folder / "labels" / name).string());
 
