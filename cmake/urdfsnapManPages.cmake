@@ -27,7 +27,8 @@ if(URDFSNAP_MAN_PAGES)
     "urdfsnap-snapshot-update|snapshot update|rewrite the golden images of a snapshot suite"
     "urdfsnap-snapshot-merge|snapshot merge|merge the results of a snapshot suite's shards"
     "urdfsnap-serve|serve|live view of a robot in the browser"
-    "urdfsnap-docs|docs|write a robot's documentation page")
+    "urdfsnap-docs|docs|write a robot's documentation page"
+    "urdfsnap-dataset|dataset|render labelled samples of random poses through cameras, with COCO annotations")
   set(man_dir ${PROJECT_BINARY_DIR}/man)
   set(man_files)
   foreach(entry IN LISTS urdfsnap_man_pages)

@@ -46,10 +46,6 @@ std::optional<render::CameraSettings> ParseCameraSettings(const RenderRequest& r
     }
     return std::nullopt;
   }
-  if (r.fit) {
-    throw Error(label("fit") + " frames the orbit view; a camera (" + label("camera-info") + ", " +
-                label("camera-frame") + ", " + label("camera-pose") + ") is placed as given");
-  }
   if (r.distort && r.camera_info.empty()) {
     throw Error(label("distort") + " needs " + label("camera-info") + " (the lens's distortion coefficients)");
   }
@@ -77,6 +73,11 @@ std::optional<render::CameraSettings> ParseCameraSettings(const RenderRequest& r
     camera.underlay_file = r.underlay;
   }
   if (!r.underlay_alpha.empty()) camera.overlay_alpha = ParseInRange(r.underlay_alpha, label("underlay-alpha"), 0, 1);
+  // after the values, so that a bad number is named first
+  if (r.fit) {
+    throw Error(label("fit") + " frames the orbit view; a camera (" + label("camera-info") + ", " +
+                label("camera-frame") + ", " + label("camera-pose") + ") is placed as given");
+  }
   return camera;
 }
 

@@ -29,8 +29,9 @@ ResolvedRequest ResolveRequest(const RenderRequest& r, const RequestFiles& files
 }
 
 ResolvedRequest ResolveRequest(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
-  WarnOfOptionsWithoutEffect(r, label, warnings);
-  return ResolveRequest(r, ReadRequestFiles(r, warnings), label);
+  ResolvedRequest resolved = ResolveRequest(r, ReadRequestFiles(r, warnings), label);
+  WarnOfOptionsWithoutEffect(r, label, warnings);   // once the values are known to be good
+  return resolved;
 }
 
 }  // namespace urdfsnap::request

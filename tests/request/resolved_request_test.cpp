@@ -41,7 +41,7 @@ TEST(ResolvedRequest, FilesAreReadOnceAndRequestsOverThemReadNone) {
   base.model.path = "arm.urdf";
   base.rviz = folder.Write("view.rviz",
                            "Visualization Manager:\n  Global Options:\n    Background Color: 10; 20; 30\n"
-                           "    Fixed Frame: base_link\n");
+                           "    Fixed Frame: base_link\n  Displays:\n    - Class: rviz/Grid\n      Enabled: true\n");
   base.joint_file = folder.Write("joints.yaml", "elbow: 0.25\n");
   base.joints = {{"wrist", 1}};
   Warnings warnings;
