@@ -381,7 +381,9 @@ const std::map<std::string, std::pair<Value (*)(const StrCall&), bool>>& StrMeth
 Value StrMethod(const SharedString& s, const std::string& name) {
   const auto method = StrMethods().find(name);
   if (method == StrMethods().end()) throw EvalError("'str' object has no attribute '" + name + "'");
-  const auto [body, keywords] = method->second;
+  // copies, not structured bindings: clang 14 (the sanitizer build's) cannot capture those
+  const auto body = method->second.first;
+  const bool keywords = method->second.second;
   const std::string full = "str." + name;
   return Value::Callable(full, [s, name, full, body, keywords](ValueList& a, Kwargs& kw) {
     if (!keywords && !kw.empty()) throw EvalError(full + "() takes no keyword arguments");
