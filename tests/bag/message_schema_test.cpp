@@ -129,7 +129,8 @@ TEST(MessageSchemaTest, DefinitionsThatCannotBeAreErrorsSayingWhere) {
       {"int32 x\n===\nnot a type line\n", "line 3: expected 'MSG: package/Type' after a line of '='"},
       {"a/C c\n===\nMSG: a/C\na/B b\n", "a/B contains itself"},
   };
-  for (const auto& [text, error] : cases) {
+  for (const auto& [text_, error] : cases) {
+    const char* text = text_;   // a plain variable: clang 14 cannot capture a structured binding
     SCOPED_TRACE(text);
     EXPECT_THAT(test::ErrorText<SchemaError>([&] { MessageSchema::Parse("a/msg/B", text); }),
                 HasSubstr(error));

@@ -65,7 +65,8 @@ TEST(BagTransformsTest, BrokenTreesAreOneErrorAtTheirMessage) {
       {"tf_backwards.mcap", "message 6 on '/tf' (log time 1700000000.500000000 s): transform "
                             "'odom' -> 'base_link': stamped 1700000000000000000 ns, before"},
   };
-  for (const auto& [bag, error] : cases) {
+  for (const auto& [bag_, error] : cases) {
+    const auto& bag = bag_;   // clang 14 cannot capture a structured binding
     SCOPED_TRACE(bag);
     EXPECT_THAT(test::ErrorText([&] { ReadBagTransforms(test::TestBag(bag)); }), HasSubstr(error));
   }

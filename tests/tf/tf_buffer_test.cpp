@@ -105,7 +105,8 @@ TEST(TfBufferTest, BrokenTreesAreOneLocatedErrorEach) {
       {Make("odom", "odom", 4 * kSecond, {0, 0, 0}), "a frame that is its own parent"},
       {Make("", "x", 4 * kSecond, {0, 0, 0}), "a frame without a name"},
   };
-  for (const auto& [transform, error] : cases) {
+  for (const auto& [transform_, error] : cases) {
+    const auto& transform = transform_;   // clang 14 cannot capture a structured binding
     SCOPED_TRACE(error);
     TfBuffer buffer = Robot();
     EXPECT_THAT(test::ErrorText([&] { buffer.Add(transform, false, "bag"); }), HasSubstr(error));
