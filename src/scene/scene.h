@@ -45,11 +45,25 @@ struct TextLabel {
   Eigen::Vector4f rgba{1, 1, 1, 1};
 };
 
+// Points drawn as RViz's point-cloud renderer draws them (rviz/ogre_helpers/point_cloud.cpp): the
+// points of a PointCloud2 or LaserScan display and of POINTS, CUBE_LIST and SPHERE_LIST markers.
+// Points are GL points `size.x()` pixels wide; Squares and FlatSquares camera-facing quads of
+// `size` metres (Squares with RViz's thin darker outline); Spheres and Boxes lit solids of `size`
+// metres.
+struct PointSet {
+  enum class Style { kPoints, kSquares, kFlatSquares, kSpheres, kBoxes };
+  Style style = Style::kFlatSquares;
+  std::vector<Eigen::Vector3f> positions;  // in the fixed frame
+  std::vector<Eigen::Vector4f> colours;    // one rgba per position
+  Eigen::Vector3f size{0.01f, 0.01f, 0.01f};
+};
+
 struct Scene {
   Eigen::Vector3f background{48 / 255.f, 48 / 255.f, 48 / 255.f};
   std::vector<DrawItem> items;
   std::vector<LineSet> lines;           // transparent overlays such as the grid
   std::vector<TextLabel> labels;        // blended with the transparent geometry
+  std::vector<PointSet> points;         // display points; opaque unless a colour's alpha is < 1
 };
 
 }  // namespace urdfsnap::scene
