@@ -1,7 +1,7 @@
 // `urdfsnap render --bag FILE --at SECONDS` against the binary: a still of a recording is the frame
 // `animate` draws at that moment, byte for byte (joints, TF's fixed frame, TF display of the bag's
-// frames); MODEL may be the bag, or be left out for the bag's own description; bad times, missing
-// bags and frames TF does not know are one error line with nothing written.
+// frames, the followed frame); MODEL may be the bag, or be left out for the bag's own description;
+// bad times, missing bags and frames TF does not know are one error line with nothing written.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -69,6 +69,24 @@ Changed ChangedPixels(const image::Image& a, const image::Image& b, double cx, d
   return changed;
 }
 
+// The centre of the robot's pixels (coloured, not grey) in a PNG, and how many there are.
+struct Centre {
+  double x = 0, y = 0;
+  int pixels = 0;
+};
+Centre RobotCentre(const image::Image& image) {
+  Centre c;
+  for (int p = 0; p < image.width * image.height; ++p) {
+    const auto* rgb = &image.rgb[3 * static_cast<std::size_t>(p)];
+    if (std::max({rgb[0], rgb[1], rgb[2]}) - std::min({rgb[0], rgb[1], rgb[2]}) <= 40) continue;
+    c.x += p % image.width;
+    c.y += p / image.width;
+    ++c.pixels;
+  }
+  if (c.pixels > 0) c.x /= c.pixels, c.y /= c.pixels;
+  return c;
+}
+
 TEST_F(BagRenderTest, AStillIsTheFrameAnimateDrawsAtThatMoment) {
   const std::string bag = test::TestBag("rover_loop.mcap");
   for (const std::string& options : {std::string(" --fixed-frame odom --tf"), std::string(" --tf-scale 2 --tf")}) {
@@ -92,21 +110,39 @@ TEST_F(BagRenderTest, TheTfDisplayShowsTheBagsFramesBesideTheRobots) {
   const std::string still = "--bag " + test::TestBag("rover_loop.mcap") + " --at 4 --fixed-frame odom" + kTopView;
   const image::Image plain = image::DecodePng(Render(still), "plain");
   const image::Image tf = image::DecodePng(Render(still + " --tf --no-tf-names"), "tf");
-  // where the robot is: the pixels the robot (coloured, not grey) covers
-  double cx = 0, cy = 0;
-  int robot = 0;
-  for (int p = 0; p < plain.width * plain.height; ++p) {
-    const auto* rgb = &plain.rgb[3 * static_cast<std::size_t>(p)];
-    if (std::max({rgb[0], rgb[1], rgb[2]}) - std::min({rgb[0], rgb[1], rgb[2]}) <= 40) continue;
-    cx += p % plain.width;
-    cy += p / plain.width;
-    ++robot;
-  }
-  ASSERT_GT(robot, 50) << "no robot in the still";
-  const Changed changed = ChangedPixels(plain, tf, cx / robot, cy / robot);
+  const Centre robot = RobotCentre(plain);
+  ASSERT_GT(robot.pixels, 50) << "no robot in the still";
+  const Changed changed = ChangedPixels(plain, tf, robot.x, robot.y);
   EXPECT_GT(changed.count, 40);
   // 2 m is about 48 pixels in this view: odom's axes are drawn there
   EXPECT_GT(changed.far, 40);
+}
+
+TEST_F(BagRenderTest, FollowKeepsTheFocalPointOnAFrame) {
+  // the rover drives a loop in odom; followed, it stays in the middle of the picture
+  const std::string bag = test::TestBag("rover_loop.mcap");
+  const std::string view = " --fixed-frame odom --size 160x120 --no-grid --yaw 0 --pitch 1.5 --distance 3 --focal 0,0,0";
+  Ok("animate " + bag + view + " --follow base_link --fps 1 -o " + Path("follow/%d.png"));
+  Ok("animate " + bag + view + " --fps 1 -o " + Path("still/%d.png"));
+  for (int k : {0, 2, 4, 6}) {
+    const Centre followed = RobotCentre(image::ReadPng(Path("follow/" + std::to_string(k) + ".png")));
+    ASSERT_GT(followed.pixels, 50) << k;
+    EXPECT_LT(std::hypot(followed.x - 80, followed.y - 60), 12) << k;
+  }
+  // unfollowed, at 4 s it is 2 m (about 45 pixels) from the middle
+  const Centre away = RobotCentre(image::ReadPng(Path("still/4.png")));
+  EXPECT_GT(std::hypot(away.x - 80, away.y - 60), 30);
+  // render --bag --at draws animate's frame
+  EXPECT_EQ(ReadBytes(Path("follow/4.png")), Render("--bag " + bag + " --at 4 --follow base_link" + view));
+  // a frame of the bag's TF outside the robot is followed too: in base_link's frame at 4 s (turned
+  // half round, 2 m along odom's y) odom is at (0, 2, 0)
+  const std::string from_base = " --size 160x120 --no-grid --yaw 0 --pitch 1.5 --distance 6";
+  const Centre odom = RobotCentre(image::DecodePng(Render("--bag " + bag + " --at 4 --follow odom" + from_base), "odom"));
+  const Centre there = RobotCentre(image::DecodePng(Render("--bag " + bag + " --at 4 --focal 0,2,0" + from_base), "focal"));
+  ASSERT_GT(there.pixels, 50);
+  EXPECT_LT(std::hypot(odom.x - there.x, odom.y - there.y), 1.5);
+  Fails("render --bag " + bag + " --follow nowhere", "--follow 'nowhere': neither a link of robot");
+  Fails("render " + kMrm + " --follow odom", "--follow 'odom' is not a link of robot 'mrm'");
 }
 
 TEST_F(BagRenderTest, BadMomentsAndFramesAreOneErrorLine) {
