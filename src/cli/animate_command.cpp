@@ -61,6 +61,7 @@ struct AnimateOptions {
   std::string depth, labels;  // optional depth and link-label sequences (patterns)
   std::string print_frame;    // a frame number: print its render options instead of writing
   bool quiet = false;
+  bool model_from_bag = false;   // MODEL was a bag: its recorded description is the model
   ShardOptions sharding;      // a frame sequence's contiguous range of frames
   RenderOptions render;
   GlOptions gl_options;
@@ -168,7 +169,7 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   // and the TF display of its frames
   const bool bag = !o.trajectory.empty() && motion::IsBag(o.trajectory);
   PrepareBagScene(session, std::move(resolved), bag ? o.trajectory : "", a.trajectory.stamp_at_zero.value_or(0),
-                  warnings, a.scene);
+                  o.model_from_bag, warnings, a.scene);
   a.plan = Plan(o, a.trajectory);
   // joints the trajectory does not name: the joint file, then -j, as render takes them
   const request::Prepared& robot = a.scene.robot;
@@ -232,6 +233,7 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
   if (o.trajectory.empty() && motion::IsBag(o.model.path)) {
     o.trajectory = o.model.path;
     bag_model.emplace(o.model.path, o.description_topic);
+    o.model_from_bag = true;
   }
   r.model = o.model.ToRequest();
   if (bag_model) r.model.path = bag_model->path();

@@ -4,6 +4,7 @@
 #include "cli/bag_scene.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <utility>
 
 #include "tf/bag_transforms.h"
@@ -15,7 +16,13 @@ animation::SceneAdditions BagScene::Additions() const {
 }
 
 void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,
-                     double stamp_at_zero, Warnings& warnings, BagScene& out) {
+                     double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out) {
+  // the description's relative mesh paths: from the bag's folder, not the temporary file's
+  if (model_from_bag) {
+    std::filesystem::path place(bag);
+    if (!place.has_filename()) place = place.parent_path();   // a folder given as "run/"
+    resolved.settings.scene.model_file = place.string();
+  }
   const std::string fixed_frame = std::exchange(resolved.settings.scene.fixed_frame, "");
   const bool fixed_frame_given = std::exchange(resolved.fixed_frame_given, false);
   // the TF display is drawn here over the bag's frames, not by the robot's scene over its links,

@@ -33,11 +33,13 @@ struct BagScene {
 
 // Prepares `resolved` (its fit left to the caller) for the recording `bag` ("" for none: no TF,
 // the robot's links alone in the TF display), whose trajectory time 0 is the stamp `stamp_at_zero`
-// (seconds since 1970), into `out`. A fixed frame that is neither a link nor connected to the root
+// (seconds since 1970), into `out`. With `model_from_bag` (the description the bag recorded), mesh
+// file names relative to the description are found from the folder that holds the bag (a file's
+// folder, a rosbag2 folder's parent), as they would be from a URDF file saved beside it. A fixed frame that is neither a link nor connected to the root
 // by the bag's TF is an error when --fixed-frame gave it, and when an .rviz file gave it a warning,
 // the root link then fixed as `render` does without a bag. Throws urdfsnap::Error as
 // RenderSession::Prepare, tf::ReadBagTransforms and animation::FollowedFrame do.
 void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,
-                     double stamp_at_zero, Warnings& warnings, BagScene& out);
+                     double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out);
 
 }  // namespace urdfsnap::cli

@@ -33,7 +33,7 @@ void BagStillOptions::AddOptions(CLI::App& command) {
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
-                   Warnings& warnings) {
+                   bool model_from_bag, Warnings& warnings) {
   request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
   const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
   const model::NamedValues joints = resolved.joints;   // -j and --joints: for joints the bag does not name
@@ -45,7 +45,8 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
     throw Error("--at " + FormatNumber(at) + " is outside " + o.bag + ", whose '" + o.topic + "' lasts " +
                 FormatNumber(trajectory_.EndTime()) + " s from its first message");
   }
-  PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), warnings, scene_);
+  PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), model_from_bag,
+                  warnings, scene_);
   request::Prepared& prepared = scene_.robot;
   poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);
   const render::RenderSettings& s = prepared.settings;

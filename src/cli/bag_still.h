@@ -37,8 +37,9 @@ class BagStill {
   // at the time --at names: seconds from the first /joint_states stamp (as `animate --start`
   // counts), or a stamp (seconds since 1970, from 1e9 up). Throws urdfsnap::Error for a bad --at
   // (also one outside the recording) and as the bag's readers and RenderSession::Prepare do.
+  // `model_from_bag`: the request's model is the description the bag recorded (see PrepareBagScene).
   BagStill(const BagStillOptions& options, request::RenderSession& session, const request::RenderRequest& request,
-           Warnings& warnings);
+           bool model_from_bag, Warnings& warnings);
   BagStill(const BagStill&) = delete;
   BagStill& operator=(const BagStill&) = delete;
 

@@ -91,7 +91,7 @@ void Run(RenderCommandOptions& o) {
   std::string keypoints;
   try {
     std::optional<BagStill> still;
-    if (!o.bag.bag.empty()) still.emplace(o.bag, session, o.render.request, warnings);
+    if (!o.bag.bag.empty()) still.emplace(o.bag, session, o.render.request, bag_model.has_value(), warnings);
     const request::Prepared prepared =
         still ? still->prepared() : session.Prepare(o.render.request, request::CommandLineLabel, warnings);
     const bool wants_keypoints = !o.keypoints.empty();

@@ -145,6 +145,19 @@ TEST_F(BagRenderTest, FollowKeepsTheFocalPointOnAFrame) {
   Fails("render " + kMrm + " --follow odom", "--follow 'odom' is not a link of robot 'mrm'");
 }
 
+TEST_F(BagRenderTest, MeshesNamedRelativeToARecordedDescriptionAreFoundBesideTheBag) {
+  // the rover's body as meshes/base_plate.stl, a path relative to the description
+  fs::copy_file(test::TestBag("rover_relative_mesh.mcap"), Path("run.mcap"));
+  Fails("render --bag " + Path("run.mcap"),
+        "run.mcap: '/robot_description':11: link 'base_link': mesh 'meshes/base_plate.stl' not found");
+  fs::create_directory(Path("meshes"));
+  fs::copy_file(kSource / "models/meshbot_description/meshes/base_plate.stl", Path("meshes/base_plate.stl"));
+  const std::string still = Render("--bag " + Path("run.mcap") + " --size 160x120 --distance 2");
+  EXPECT_GT(RobotCentre(image::DecodePng(still, "still")).pixels, 200);
+  // animate finds it there too
+  Ok("animate " + Path("run.mcap") + " --size 160x120 --distance 2 --fps 2 -o " + Path("run.gif"));
+}
+
 TEST_F(BagRenderTest, BadMomentsAndFramesAreOneErrorLine) {
   const std::string bag = test::TestBag("rover_loop.mcap");
   Fails("render --bag " + bag + " --at 9", "--at 9 is outside");

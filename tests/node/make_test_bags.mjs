@@ -463,6 +463,9 @@ const hostileRovers = {
 for (const [name, options] of Object.entries(hostileRovers)) {
   writeFileSync(join(out, name), await roverLoop(1, 10, options));
 }
+// a description whose body is a mesh named relative to it: found next to the bag
+const relativeMeshUrdf = roverUrdf.replace('<geometry><box size="0.6 0.4 0.14"/></geometry>', '<geometry><mesh filename="meshes/base_plate.stl"/></geometry>');
+writeFileSync(join(out, "rover_relative_mesh.mcap"), await roverLoop(1, 10, { description: stringWriter.writeMessage({ data: relativeMeshUrdf }) }));
 // a description that is no URDF
 writeFileSync(join(out, "description_junk.mcap"), await writeBag({
   channels: [jointStateChannel, { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } }],
