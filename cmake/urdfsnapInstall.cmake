@@ -7,7 +7,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(urdfsnap_libraries urdfsnap_common urdfsnap_shard urdfsnap_xacro urdfsnap_model
-  urdfsnap_geometry urdfsnap_image urdfsnap_camera urdfsnap_scene urdfsnap_gl urdfsnap_render urdfsnap_request
+  urdfsnap_geometry urdfsnap_image urdfsnap_texture urdfsnap_camera urdfsnap_scene urdfsnap_gl urdfsnap_render urdfsnap_request
   urdfsnap_snapshot urdfsnap_stream urdfsnap_bag urdfsnap_tf urdfsnap_motion urdfsnap_video)
 set(urdfsnap_include_dir ${CMAKE_INSTALL_INCLUDEDIR}/urdfsnap)
 set(urdfsnap_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/urdfsnap)
@@ -33,7 +33,6 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${urdfsnap_include_dir}
   REGEX "bag/(byte_reader|file_cursor|chunk_decompressor)\\.h$" EXCLUDE
   REGEX "gl/(gl_api|gl_backends|framebuffer|gpu_mesh|gpu_texture|shader_program|shared_library|embedded_shaders)\\.h$" EXCLUDE
   REGEX "xacro/[a-z_]+\\.h$" EXCLUDE
-  REGEX "scene/mesh_loading\\.h$" EXCLUDE
   REGEX "model/urdf_validation\\.h$" EXCLUDE
   REGEX "geometry/(circle_parts|texture_coordinates|mesh_module)\\.h$" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/src/xacro/xacro.h DESTINATION ${urdfsnap_include_dir}/xacro)

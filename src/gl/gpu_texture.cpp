@@ -6,7 +6,7 @@
 
 namespace urdfsnap::gl {
 
-GpuTexture::GpuTexture(const scene::TextureImage& image) {
+GpuTexture::GpuTexture(const texture::TextureImage& image) {
   if (image.channels != 2 && image.channels != 4) {
     throw Error("texture with " + std::to_string(image.channels) + " channels; expected 2 or 4");
   }

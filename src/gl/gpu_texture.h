@@ -1,15 +1,15 @@
-// A scene::TextureImage uploaded to the GPU: 2 channels as GL_RG8 (luminance in r, alpha in g), clamped
+// A texture::TextureImage uploaded to the GPU: 2 channels as GL_RG8 (luminance in r, alpha in g), clamped
 // and without mipmaps as Ogre's font textures; 4 as GL_RGBA8, repeated and mipmapped as Ogre's
 // image textures (texture_image.h). Internal to the render library; needs a current GL context.
 #pragma once
 
-#include "scene/texture_image.h"
+#include "texture/texture_image.h"
 
 namespace urdfsnap::gl {
 
 class GpuTexture {
  public:
-  explicit GpuTexture(const scene::TextureImage& image);
+  explicit GpuTexture(const texture::TextureImage& image);
   ~GpuTexture();
   GpuTexture(const GpuTexture&) = delete;
   GpuTexture& operator=(const GpuTexture&) = delete;

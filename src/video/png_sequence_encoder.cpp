@@ -1,8 +1,8 @@
-// PngSequenceEncoder: image::EncodePng into FrameFiles.
+// PngSequenceEncoder: image::EncodePng into NumberedFiles.
 #include "video/png_sequence_encoder.h"
 
 #include "image/png_writer.h"
-#include "video/frame_files.h"
+#include "video/numbered_files.h"
 #include "video/frame_size.h"
 
 namespace urdfsnap::video {
@@ -23,7 +23,7 @@ class PngSequenceEncoder final : public FrameEncoder {
 
  private:
   EncoderSettings settings_;
-  FrameFiles files_;
+  NumberedFiles files_;
 };
 
 }  // namespace

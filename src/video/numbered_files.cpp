@@ -1,6 +1,6 @@
-// FrameFiles: WriteFileAtomically per frame to its temporary name; the files are found again by
+// NumberedFiles: WriteFileAtomically per frame to its temporary name; the files are found again by
 // number for the renames and removal, so nothing grows with the sequence's length.
-#include "video/frame_files.h"
+#include "video/numbered_files.h"
 
 #include <unistd.h>
 
@@ -13,28 +13,28 @@
 
 namespace urdfsnap::video {
 
-FrameFiles::FrameFiles(const std::string& pattern, std::int64_t first)
+NumberedFiles::NumberedFiles(const std::string& pattern, std::int64_t first)
     : pattern_(pattern), temporary_suffix_(".part-" + RandomSuffix()), first_(first) {
   AtomicFile probe(pattern_.Name(first_));  // created and removed: the place is writable
 }
 
-FrameFiles::~FrameFiles() {
+NumberedFiles::~NumberedFiles() {
   if (finished_) return;
   for (std::int64_t number = first_; number < first_ + count_; ++number) {
     ::unlink(TemporaryName(number).c_str());
   }
 }
 
-std::string FrameFiles::TemporaryName(std::int64_t number) const {
+std::string NumberedFiles::TemporaryName(std::int64_t number) const {
   return pattern_.Name(number) + temporary_suffix_;
 }
 
-void FrameFiles::Write(std::string_view bytes) {
+void NumberedFiles::Write(std::string_view bytes) {
   WriteFileAtomically(TemporaryName(first_ + count_), bytes);
   ++count_;
 }
 
-void FrameFiles::Finish() {
+void NumberedFiles::Finish() {
   for (std::int64_t number = first_; number < first_ + count_; ++number) {
     if (std::rename(TemporaryName(number).c_str(), pattern_.Name(number).c_str()) != 0) {
       throw Error(pattern_.Name(number) + ": cannot write: " + std::system_category().message(errno));

@@ -1,6 +1,6 @@
 // JPEG textures decoded as Ogre's FreeImage codec decodes them for RViz: exact texels against
 // FreeImage's own output, and errors for broken and oversized files (unit).
-#include "scene/jpeg_texture.h"
+#include "texture/jpeg_texture.h"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 
 #include "common/error.h"
 #include "image/png_reader.h"
-#include "scene/texture_file.h"
+#include "texture/texture_file.h"
 
-namespace urdfsnap::scene {
+namespace urdfsnap::texture {
 namespace {
 
 namespace fs = std::filesystem;
@@ -76,4 +76,4 @@ TEST(JpegTextureTest, BrokenAndOversizedFilesAreErrors) {
 }
 
 }  // namespace
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::texture

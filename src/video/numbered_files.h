@@ -12,18 +12,18 @@
 
 namespace urdfsnap::video {
 
-class FrameFiles {
+class NumberedFiles {
  public:
   // Parses `pattern` (see FramePattern) and checks that its first file, number `first`, can be
   // written (making and removing a temporary file beside it). Throws Error "NAME: cannot write:
   // ..." otherwise. A shard of a sequence starts at the number of its first frame, so that its
   // files are named as in the whole sequence.
-  explicit FrameFiles(const std::string& pattern, std::int64_t first = 0);
+  explicit NumberedFiles(const std::string& pattern, std::int64_t first = 0);
   // Removes the files written so far unless Finish was called.
-  ~FrameFiles();
+  ~NumberedFiles();
 
-  FrameFiles(const FrameFiles&) = delete;
-  FrameFiles& operator=(const FrameFiles&) = delete;
+  NumberedFiles(const NumberedFiles&) = delete;
+  NumberedFiles& operator=(const NumberedFiles&) = delete;
 
   // Writes the next frame's file (number first + count()) under its temporary name. Throws Error
   // naming the file.

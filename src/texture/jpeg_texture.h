@@ -8,9 +8,9 @@
 #include <memory>
 #include <string_view>
 
-#include "scene/texture_image.h"
+#include "texture/texture_image.h"
 
-namespace urdfsnap::scene {
+namespace urdfsnap::texture {
 
 // True when `bytes` start as a JPEG file does (the SOI marker and another marker).
 bool IsJpeg(std::string_view bytes);
@@ -22,4 +22,4 @@ bool IsJpeg(std::string_view bytes);
 // larger than image::kMaxImageSide on a side.
 std::shared_ptr<TextureImage> DecodeJpegAsFreeImage(std::string_view bytes, const std::string& path);
 
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::texture

@@ -1,7 +1,7 @@
 // Draws Scenes into images with OpenGL, the way RViz's Ogre pipeline does: one head-light,
 // per-vertex diffuse lighting, opaque geometry first, then transparent geometry and lines
 // blended back to front, 4x multisampling; and, from the same scene and view, the depth and
-// link-label images of the robot's geometry. One Renderer owns one GL context; reuse it for many
+// link-label images of the robot's geometry. One SceneRenderer owns one GL context; reuse it for many
 // frames (meshes and textures are uploaded once and kept while the scene objects live).
 #pragma once
 
@@ -15,16 +15,16 @@
 
 namespace urdfsnap::gl {
 
-class Renderer {
+class SceneRenderer {
  public:
   // samples: multisampling per pixel, 4 as RViz requests (render_system.cpp L272-275); 0 = off.
   // backend: the GL backend asked for ({} when none is: URDFSNAP_GL_BACKEND, else auto; see
   // CreateGlContext), and whom to tell which one the context uses. Throws urdfsnap::Error when no
   // GL context can be made.
-  explicit Renderer(int samples = 4, const BackendChoice& backend = {});
-  ~Renderer();
-  Renderer(const Renderer&) = delete;
-  Renderer& operator=(const Renderer&) = delete;
+  explicit SceneRenderer(int samples = 4, const BackendChoice& backend = {});
+  ~SceneRenderer();
+  SceneRenderer(const SceneRenderer&) = delete;
+  SceneRenderer& operator=(const SceneRenderer&) = delete;
 
   // Renders `scene` seen through `view` into width x height images: the colour image as RViz
   // shows it, and the depth and label images of the draw items with a link (robot geometry; never
@@ -41,7 +41,7 @@ class Renderer {
 
   // Leaves the context current on no thread (Render makes it current again), so that the next
   // Render may come from another thread: EGL lets a context be current on one thread only. For
-  // callers that hand a Renderer from thread to thread (the Python module); one thread at a time.
+  // callers that hand a SceneRenderer from thread to thread (the Python module); one thread at a time.
   void ReleaseContext();
 
   // The backend of the context (kOsMesa or kEgl), its one-line description and the line saying

@@ -1,13 +1,13 @@
 // LoadMeshFiles: a worker per core pulling paths from one list; errors are kept, not thrown, so the
 // caller can report them at the link that names the file.
-#include "scene/mesh_loading.h"
+#include "geometry/mesh_loading.h"
 
 #include <algorithm>
 #include <atomic>
 #include <thread>
 #include <vector>
 
-namespace urdfsnap::scene {
+namespace urdfsnap::geometry {
 
 std::map<std::string, MeshLoad> LoadMeshFiles(const std::set<std::string>& paths) {
   const std::vector<std::string> files(paths.begin(), paths.end());
@@ -16,7 +16,7 @@ std::map<std::string, MeshLoad> LoadMeshFiles(const std::set<std::string>& paths
   const auto work = [&] {
     for (size_t i = next++; i < files.size(); i = next++) {
       try {
-        loads[i].file = geometry::LoadMeshFile(files[i]);
+        loads[i].file = LoadMeshFile(files[i]);
       } catch (...) {
         loads[i].error = std::current_exception();
       }
@@ -34,4 +34,4 @@ std::map<std::string, MeshLoad> LoadMeshFiles(const std::set<std::string>& paths
   return by_path;
 }
 
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::geometry

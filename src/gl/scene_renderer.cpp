@@ -1,5 +1,5 @@
 // OpenGL drawing of a scene::Scene: state setup, draw order and per-item uniforms.
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 
 #include <algorithm>
 #include <string>
@@ -64,7 +64,7 @@ class GpuCache {
 
 }  // namespace
 
-struct Renderer::Impl {
+struct SceneRenderer::Impl {
   Impl(int samples, const BackendChoice& backend)
       : samples(samples),
         context(CreateGlContext(backend.backend, backend.asked_by)),
@@ -77,7 +77,7 @@ struct Renderer::Impl {
   }
   ~Impl() {
     // this context's objects are deleted in it (the members below too), not in whichever
-    // context another Renderer made current last
+    // context another SceneRenderer made current last
     try {
       context->MakeCurrent();
     } catch (const Error&) {
@@ -267,31 +267,31 @@ struct Renderer::Impl {
   std::unique_ptr<Framebuffer> framebuffer;
   std::unique_ptr<LabelFramebuffer> label_framebuffer;
   GpuCache<geometry::TriangleMesh, GpuMesh> meshes;
-  GpuCache<scene::TextureImage, GpuTexture> textures;
+  GpuCache<texture::TextureImage, GpuTexture> textures;
 };
 
-Renderer::Renderer(int samples, const BackendChoice& backend)
+SceneRenderer::SceneRenderer(int samples, const BackendChoice& backend)
     : impl_(std::make_unique<Impl>(samples, backend)) {
   if (backend.on_context) backend.on_context(Summary());
 }
 
-Renderer::~Renderer() = default;
+SceneRenderer::~SceneRenderer() = default;
 
-Backend Renderer::backend() const { return impl_->context->backend(); }
+Backend SceneRenderer::backend() const { return impl_->context->backend(); }
 
-const std::string& Renderer::description() const { return impl_->context->description(); }
+const std::string& SceneRenderer::description() const { return impl_->context->description(); }
 
-std::string Renderer::Summary() const { return impl_->context->Summary(); }
+std::string SceneRenderer::Summary() const { return impl_->context->Summary(); }
 
-void Renderer::ReleaseContext() { impl_->context->Release(); }
+void SceneRenderer::ReleaseContext() { impl_->context->Release(); }
 
-image::Frame Renderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width,
+image::Frame SceneRenderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width,
                               int height, const image::FrameOutputs& outputs) {
   return Render(scene, scene::ViewMatrix(view), scene::ProjectionMatrix(view, static_cast<double>(width) / height),
                 width, height, outputs);
 }
 
-image::Frame Renderer::Render(const scene::Scene& scene, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P,
+image::Frame SceneRenderer::Render(const scene::Scene& scene, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P,
                               int width, int height, const image::FrameOutputs& outputs) {
   Impl& r = *impl_;
   r.context->MakeCurrent();

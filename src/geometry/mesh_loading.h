@@ -10,15 +10,15 @@
 
 #include "geometry/mesh_file.h"
 
-namespace urdfsnap::scene {
+namespace urdfsnap::geometry {
 
-// What loading one file gave: the file, or the exception geometry::LoadMeshFile threw.
+// What loading one file gave: the file, or the exception LoadMeshFile threw.
 struct MeshLoad {
   std::shared_ptr<const geometry::MeshFile> file;
   std::exception_ptr error;
 };
 
-// Loads every file of `paths` (resolved file names) with geometry::LoadMeshFile, in parallel.
+// Loads every file of `paths` (resolved file names) with LoadMeshFile, in parallel.
 std::map<std::string, MeshLoad> LoadMeshFiles(const std::set<std::string>& paths);
 
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::geometry

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace urdfsnap::scene {
+namespace urdfsnap::texture {
 
 struct TextureImage {
   int width = 0;
@@ -17,4 +17,4 @@ struct TextureImage {
   std::vector<std::uint8_t> texels;   // width * height * channels bytes, row after row
 };
 
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::texture

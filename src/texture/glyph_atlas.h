@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/texture_image.h"
+#include "texture/texture_image.h"
 
-namespace urdfsnap::scene {
+namespace urdfsnap::texture {
 
 // Where one glyph's cell lies in the texture. A cell is as wide as the glyph's advance and as high
 // as the font's tallest cell (Ogre's max_height), with the baseline at the same height in every
@@ -45,4 +45,4 @@ std::string FindLiberationSans(const std::vector<std::string>& candidates = Libe
 std::shared_ptr<const GlyphAtlas> BuildGlyphAtlas(const std::string& font_path,
                                                   const std::set<char32_t>& code_points);
 
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::texture

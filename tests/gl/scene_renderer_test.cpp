@@ -1,6 +1,6 @@
 // GL plumbing by exact pixels (after MuJoCo's render test): cleared background, a lit triangle
 // facing the camera, row order of the read-back, and the grid's blended line colour.
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 
 #include <cstdlib>
 #include <string>
@@ -13,7 +13,7 @@
 
 #include "common/error.h"
 #include "gl/shader_program.h"
-#include "scene/glyph_atlas.h"
+#include "texture/glyph_atlas.h"
 #include "front_view.h"
 #include "scene/grid.h"
 #include "scene/primitive_meshes.h"
@@ -110,7 +110,7 @@ TEST_F(RendererTest, BackFacesAreCulled) {
 }
 
 TEST_F(RendererTest, GridLinesBlendAtHalfAlphaAsRvizMeasured) {
-  Renderer no_aa(0);
+  SceneRenderer no_aa(0);
   Scene scene;
   scene.lines.push_back(MakeGrid({}));
   OrbitView top;
@@ -140,8 +140,8 @@ void ExpectNear(const image::Image& image, const Rgb& expected, int x, int y) {
 }
 
 // A 2x2 RGBA texture: red, green on top; blue, white below.
-std::shared_ptr<const TextureImage> FourColours() {
-  auto texture = std::make_shared<TextureImage>();
+std::shared_ptr<const texture::TextureImage> FourColours() {
+  auto texture = std::make_shared<texture::TextureImage>();
   texture->width = texture->height = 2;
   texture->texels = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
   return texture;
@@ -156,7 +156,7 @@ TEST_F(RendererTest, TextureModulatesTheLitColourWithVZeroAtTheImageTop) {
   box.rgba = {1, 1, 0.5f, 1};
   box.texture = FourColours();
   scene.items.push_back(box);
-  Renderer no_aa(0);
+  SceneRenderer no_aa(0);
   const image::Image image = no_aa.Render(scene, FrontView(), 128, 128).colour;
   // the face spans 77 px around the centre; the texel centres (u, v = 0.25, 0.75) lie 19 px from
   // it, where bilinear filtering gives nearly the texels' own colours (within half a pixel). Seen from +X, +Y (u) runs to the
@@ -170,7 +170,7 @@ TEST_F(RendererTest, TextureModulatesTheLitColourWithVZeroAtTheImageTop) {
 
 TEST_F(RendererTest, EachTextureUnitModulatesByTheTextureAgain) {
   // one texel, so filtering plays no part: the lit white times (128, 192, 255)/255 per unit
-  auto texel = std::make_shared<TextureImage>();
+  auto texel = std::make_shared<texture::TextureImage>();
   texel->width = texel->height = 1;
   texel->texels = {128, 192, 255, 255};
   Scene scene;
@@ -203,7 +203,7 @@ TEST_F(RendererTest, EmissionAddsToTheLitColourAndClampsAtOne) {
 
 // A label "H" 0.4 m high at the origin, seen from the front.
 TextLabel LetterH() {
-  const auto atlas = BuildGlyphAtlas(FindLiberationSans(), {U'A', U'H'});
+  const auto atlas = texture::BuildGlyphAtlas(texture::FindLiberationSans(), {U'A', U'H'});
   return {atlas->texture, LayOutText(*atlas, "H", 0.4f), Eigen::Vector3d::Zero(), {1, 1, 1, 1}};
 }
 

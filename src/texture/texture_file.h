@@ -6,9 +6,9 @@
 #include <memory>
 #include <string>
 
-#include "scene/texture_image.h"
+#include "texture/texture_image.h"
 
-namespace urdfsnap::scene {
+namespace urdfsnap::texture {
 
 // Loads the image file at `path` (PNG, JPEG, BMP, TGA, GIF, PSD, PNM) as 4-channel RGBA, top row
 // first. While the returned image is held anywhere, later calls naming the same unchanged file
@@ -23,4 +23,4 @@ std::shared_ptr<const TextureImage> LoadTextureFile(const std::string& path);
 // map. The same object on every call.
 std::shared_ptr<const TextureImage> WarningTexture();
 
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::texture

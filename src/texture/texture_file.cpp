@@ -1,6 +1,6 @@
 // Texture decoding (JPEG as FreeImage decodes it for Ogre, the other formats with stb_image,
 // compiled here privately) and a process-wide cache.
-#include "scene/texture_file.h"
+#include "texture/texture_file.h"
 
 #include <filesystem>
 #include <utility>
@@ -9,7 +9,7 @@
 #include "common/file_reading.h"
 #include "common/shared_cache.h"
 #include "image/image.h"
-#include "scene/jpeg_texture.h"
+#include "texture/jpeg_texture.h"
 
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
@@ -18,7 +18,7 @@
 #define STBI_MAX_DIMENSIONS 16384   // the same as image::kMaxImageSide
 #include <stb/stb_image.h>
 
-namespace urdfsnap::scene {
+namespace urdfsnap::texture {
 
 namespace {
 
@@ -79,4 +79,4 @@ std::shared_ptr<const TextureImage> WarningTexture() {
   return warning;
 }
 
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::texture

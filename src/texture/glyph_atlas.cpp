@@ -6,7 +6,7 @@
 // 28 px and a baseline 24 px below the cell top; stb_truetype, which does not hint, gives 30 and 22.
 // The cell height sets the size of every letter on screen (0.1 m per cell) and the baseline their
 // height, so the unhinted metrics draw RViz's names 7% smaller and about 2 px too high.
-#include "scene/glyph_atlas.h"
+#include "texture/glyph_atlas.h"
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -20,7 +20,7 @@
 #include "common/error.h"
 #include "common/shared_cache.h"
 
-namespace urdfsnap::scene {
+namespace urdfsnap::texture {
 
 namespace {
 
@@ -174,4 +174,4 @@ std::shared_ptr<const GlyphAtlas> BuildGlyphAtlas(const std::string& font_path,
   return LoadFont(font_path)->Atlas(code_points);
 }
 
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::texture

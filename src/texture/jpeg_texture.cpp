@@ -1,5 +1,5 @@
 // JPEG decoding with libjpeg(-turbo), set up as FreeImage's default load sets it up.
-#include "scene/jpeg_texture.h"
+#include "texture/jpeg_texture.h"
 
 #include <csetjmp>
 #include <cstdio>   // jpeglib.h needs FILE
@@ -11,7 +11,7 @@
 #include "common/error.h"
 #include "image/image.h"
 
-namespace urdfsnap::scene {
+namespace urdfsnap::texture {
 
 namespace {
 
@@ -115,4 +115,4 @@ std::shared_ptr<TextureImage> DecodeJpegAsFreeImage(std::string_view bytes, cons
   return texture;
 }
 
-}  // namespace urdfsnap::scene
+}  // namespace urdfsnap::texture

@@ -1,5 +1,5 @@
 // Joint motion for docs pages: mimic followers, moving subtrees, stills and sweeps.
-#include "docs/joint_motion.h"
+#include "docs/joint_sweeps.h"
 
 #include <numbers>
 
