@@ -1,8 +1,8 @@
 // Upload of textures.
-#include "gl/gpu_texture.h"
+#include "gl/internal/gpu_texture.h"
 
 #include "common/error.h"
-#include "gl/gl_api.h"
+#include "gl/internal/gl_api.h"
 
 namespace urdfsnap::gl {
 

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "common/error.h"
-#include "gl/framebuffer.h"
-#include "gl/gl_api.h"
+#include "gl/internal/framebuffer.h"
+#include "gl/internal/gl_api.h"
 #include "gl/gl_context.h"
-#include "gl/gpu_mesh.h"
-#include "gl/gpu_texture.h"
-#include "gl/shader_program.h"
+#include "gl/internal/gpu_mesh.h"
+#include "gl/internal/gpu_texture.h"
+#include "gl/internal/shader_program.h"
 
 namespace urdfsnap::gl {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "common/error.h"
-#include "video/codec_module.h"
-#include "video/png_sequence_encoder.h"
+#include "video/internal/codec_module.h"
+#include "video/internal/png_sequence_encoder.h"
 
 namespace urdfsnap::video {
 

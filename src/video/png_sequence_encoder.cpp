@@ -1,9 +1,9 @@
 // PngSequenceEncoder: image::EncodePng into NumberedFiles.
-#include "video/png_sequence_encoder.h"
+#include "video/internal/png_sequence_encoder.h"
 
 #include "image/png_writer.h"
 #include "video/numbered_files.h"
-#include "video/frame_size.h"
+#include "video/internal/frame_size.h"
 
 namespace urdfsnap::video {
 namespace {

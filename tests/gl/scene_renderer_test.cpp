@@ -12,7 +12,7 @@
 #include <numbers>
 
 #include "common/error.h"
-#include "gl/shader_program.h"
+#include "gl/internal/shader_program.h"
 #include "texture/glyph_atlas.h"
 #include "front_view.h"
 #include "scene/grid.h"

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

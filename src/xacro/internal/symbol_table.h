@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/warnings.h"
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

@@ -8,7 +8,7 @@
 #include <unordered_map>
 
 #include "common/package_finder.h"
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "xacro/expression_parser.h"
-#include "xacro/python_value.h"
+#include "xacro/internal/expression_parser.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

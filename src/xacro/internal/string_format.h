@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 namespace urdfsnap::xacro {
 

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "common/warnings.h"
-#include "xacro/expression_parser.h"
-#include "xacro/macro_table.h"
-#include "xacro/substitution_args.h"
-#include "xacro/symbol_table.h"
+#include "xacro/internal/expression_parser.h"
+#include "xacro/internal/macro_table.h"
+#include "xacro/internal/substitution_args.h"
+#include "xacro/internal/symbol_table.h"
 #include "xacro/xacro.h"
-#include "xacro/xml_tree.h"
+#include "xacro/internal/xml_tree.h"
 
 namespace urdfsnap::xacro {
 
