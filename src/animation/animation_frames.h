@@ -65,6 +65,8 @@ class AnimationFrames {
   scene::Scene Scene(const render::RobotRenderer& robot, std::int64_t k, Warnings& warnings) const;
   // The camera of frame `k` (its focal point relative to the followed frame's origin then).
   scene::OrbitView View(std::int64_t k) const;
+  // The frame the view follows, if any (none with a fitted camera).
+  const FollowedFrame* followed() const { return additions_.follow; }
   // The calibrated camera every frame is seen through, if one was asked for (View is then unused).
   const std::optional<render::CameraSettings>& camera() const { return camera_; }
 

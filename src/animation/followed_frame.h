@@ -23,6 +23,9 @@ class FollowedFrame {
   FollowedFrame(const render::RobotRenderer& robot, const std::string& frame,
                 std::optional<motion::TfDisplayFrames> tf);
 
+  // Whether the frame is a link of the robot (else a frame of the bag's TF).
+  bool is_link() const { return index_ < robot_.robot().links().size(); }
+
   // The frame's origin in the scene for joint `positions` with the fixed link placed at X_SF,
   // at trajectory time `t` (used for a frame of the bag's TF).
   Eigen::Vector3d Origin(const std::vector<double>& positions, const Eigen::Isometry3d& X_SF, double t,

@@ -189,9 +189,18 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
 void PrintFrame(const AnimateOptions& o, const PreparedAnimation& a, Warnings& warnings) {
   const std::int64_t k = FrameNumber(o.print_frame, a.plan);
   const std::vector<double> positions = a.frames->Positions(k, warnings);
+  scene::OrbitView view = a.frames->View(k);
+  if (const animation::FollowedFrame* followed = a.frames->followed()) {
+    // `render` with the same --follow adds the link's origin back for the frame's joints
+    if (!followed->is_link()) {
+      throw Error("--print-frame: the view follows a frame of the bag's TF, which `render` follows with --bag " +
+                  o.trajectory + " --at SECONDS");
+    }
+    view.focal -= followed->Origin(positions, Eigen::Isometry3d::Identity(), a.plan.TrajectoryTime(k), warnings);
+  }
   PrintWarnings(warnings);
   WriteToStdout(animation::JoinWords(
-      animation::RenderWords(*a.scene.robot.robot, positions, a.frames->View(k), !o.render.request.no_clamp)) + "\n");
+      animation::RenderWords(*a.scene.robot.robot, positions, view, !o.render.request.no_clamp)) + "\n");
 }
 
 // Renders this shard's frames into the outputs `outputs` planned (prepared: checked and their folders

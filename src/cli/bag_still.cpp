@@ -4,8 +4,6 @@
 
 #include <utility>
 
-#include "bag/joint_state_bag.h"
-#include "bag/robot_description.h"
 #include "common/error.h"
 #include "common/number_text.h"
 #include "motion/trajectory_file.h"
@@ -23,13 +21,10 @@ void BagStillOptions::AddOptions(CLI::App& command) {
                      "with --bag, the moment drawn: seconds from the first /joint_states stamp (as "
                      "`animate --start` counts), or a stamp (seconds since 1970, from 1e9 up) "
                      "(default 0)");
-  command.add_option("--topic", topic, "with --bag, its sensor_msgs/msg/JointState topic (default /joint_states)")
-      ->default_str(bag::kDefaultJointStateTopic);
+  command.add_option("--topic", topic, "with --bag, its sensor_msgs/msg/JointState topic (default /joint_states)");
   command.add_option("--description-topic", description_topic,
                      "with --bag and no MODEL, the std_msgs/msg/String topic whose first message is "
                      "the robot description (default /robot_description)");
-  topic = bag::kDefaultJointStateTopic;
-  description_topic = bag::kDefaultDescriptionTopic;
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,

@@ -11,6 +11,8 @@
 #include <CLI/CLI.hpp>
 
 #include "animation/animation_frames.h"
+#include "bag/joint_state_bag.h"
+#include "bag/robot_description.h"
 #include "cli/bag_scene.h"
 #include "common/warnings.h"
 #include "image/image.h"
@@ -25,7 +27,8 @@ namespace urdfsnap::cli {
 struct BagStillOptions {
   std::string bag;   // --bag; "" for a render without a bag
   std::string at;    // --at, checked as a number when the still is made
-  std::string topic, description_topic;
+  std::string topic = bag::kDefaultJointStateTopic;
+  std::string description_topic = bag::kDefaultDescriptionTopic;
 
   // Adds --bag, --at, --topic and --description-topic to `command`.
   void AddOptions(CLI::App& command);

@@ -132,8 +132,15 @@ TEST_F(BagRenderTest, FollowKeepsTheFocalPointOnAFrame) {
   // unfollowed, at 4 s it is 2 m (about 45 pixels) from the middle
   const Centre away = RobotCentre(image::ReadPng(Path("still/4.png")));
   EXPECT_GT(std::hypot(away.x - 80, away.y - 60), 30);
-  // render --bag --at draws animate's frame
+  // render --bag --at draws animate's frame; --print-frame's words with the same --follow too
   EXPECT_EQ(ReadBytes(Path("follow/4.png")), Render("--bag " + bag + " --at 4 --follow base_link" + view));
+  const std::string wave = Write("wave.csv", "time,base_link__link_01,link_01__link_02\n0,0,0\n1,1.2,0.6\n2,0.2,-0.5\n");
+  const std::string arm = " --size 160x120 --no-grid --distance 2 --follow link_04";
+  std::string words = Ok("animate " + kMrm + arm + " --trajectory " + wave + " --fps 2 --print-frame 3");
+  words.erase(words.find_last_not_of('\n') + 1);
+  Ok("animate " + kMrm + arm + " --trajectory " + wave + " --fps 2 -o " + Path("arm/%d.png"));
+  EXPECT_EQ(ReadBytes(Path("arm/3.png")), Render(kMrm + arm + " " + words));
+  EXPECT_NE(ReadBytes(Path("arm/0.png")), ReadBytes(Path("arm/3.png")));
   // a frame of the bag's TF outside the robot is followed too: in base_link's frame at 4 s (turned
   // half round, 2 m along odom's y) odom is at (0, 2, 0)
   const std::string from_base = " --size 160x120 --no-grid --yaw 0 --pitch 1.5 --distance 6";
