@@ -2,6 +2,7 @@
 #include "gl/scene_renderer.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <variant>
@@ -105,16 +106,21 @@ struct SceneRenderer::Impl {
     for (; index < 2; ++index) glDisableVertexAttribArray(index);
   }
 
+  // A texture shown by no unit leaves the colour as it is: such a surface is drawn untextured.
   void DrawMesh(const scene::DrawItem& item, const Eigen::Matrix4d& V, const Eigen::Matrix4d& PV) {
+    const int units = item.texture ? std::clamp(item.texture_units, 0, kMaxTextureUnits) : 0;
+    if (units > 0 && !lit_textured) lit_textured.emplace("lit.vert", "lit.frag", "TEXTURED");
+    const ShaderProgram& program = units > 0 ? *lit_textured : lit;
+    program.Use();
     const Eigen::Matrix4d M = item.X_FG.matrix();
-    lit.Set("model_view_projection", Eigen::Matrix4f((PV * M).cast<float>()));
+    program.Set("model_view_projection", Eigen::Matrix4f((PV * M).cast<float>()));
     const Eigen::Matrix3d MV = (V * M).topLeftCorner<3, 3>();
-    lit.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
-    lit.Set("diffuse", item.rgba);
-    lit.Set("emissive", item.emissive);
-    lit.Set("texture_units", item.texture ? std::clamp(item.texture_units, 0, kMaxTextureUnits) : 0);
-    if (item.texture) {
-      lit.Set("image", 0);
+    program.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
+    program.Set("diffuse", item.rgba);
+    program.Set("emissive", item.emissive);
+    if (units > 0) {
+      program.Set("texture_units", units);
+      program.Set("image", 0);
       textures.Get(item.texture).Bind(0);
     }
     // a mirroring scale turns the winding around; Ogre flips culling for such nodes, and so do we
@@ -186,7 +192,6 @@ struct SceneRenderer::Impl {
 
     // opaque geometry first, writing depth
     glDisable(GL_BLEND);
-    lit.Use();
     std::vector<Transparent> transparent;
     for (const auto& item : scene.items) {
       if (item.rgba.w() >= kOpaqueAlpha) {
@@ -214,7 +219,6 @@ struct SceneRenderer::Impl {
     glDepthMask(GL_FALSE);
     for (const auto& t : transparent) {
       if (const auto* item = std::get_if<const scene::DrawItem*>(&t.what)) {
-        lit.Use();
         DrawMesh(**item, V, PV);
       } else if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
         DrawLines(**lines, PV);
@@ -259,7 +263,8 @@ struct SceneRenderer::Impl {
 
   int samples;
   std::unique_ptr<GlContext> context;
-  ShaderProgram lit;
+  ShaderProgram lit;                           // untextured surfaces
+  std::optional<ShaderProgram> lit_textured;   // and textured ones, made for the first
   ShaderProgram line;
   ShaderProgram text;
   ShaderProgram label;

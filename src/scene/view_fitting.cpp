@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace urdfsnap::scene {
@@ -49,6 +50,34 @@ class DistinctScenes {
   std::vector<Placement> last_;
 };
 
+// The least distance from `view`'s focal point, along its own yaw, pitch and field of view, at
+// which one vertex lies in the image shrunk by `margin` and in front of the near clip plane.
+class Framing {
+ public:
+  Framing(const OrbitView& view, double aspect, double margin)
+      : focal_(view.focal),
+        near_clip_(view.near_clip),
+        tan_x_(std::tan(view.fov_y / 2) * aspect * (1 - 2 * margin)),
+        tan_y_(std::tan(view.fov_y / 2) * (1 - 2 * margin)) {
+    const Eigen::Matrix4d V = ViewMatrix(view);
+    right_ = V.block<1, 3>(0, 0).transpose();
+    up_ = V.block<1, 3>(1, 0).transpose();
+    back_ = V.block<1, 3>(2, 0).transpose();
+  }
+
+  double Distance(const Eigen::Vector3d& p) const {
+    const Eigen::Vector3d q = p - focal_;
+    const double depth_offset = q.dot(back_);
+    // in the image, and in front of the near clip plane
+    return std::max({depth_offset + std::abs(q.dot(right_)) / tan_x_, depth_offset + std::abs(q.dot(up_)) / tan_y_,
+                     depth_offset + near_clip_});
+  }
+
+ private:
+  Eigen::Vector3d focal_, right_, up_, back_;
+  double near_clip_, tan_x_, tan_y_;
+};
+
 }  // namespace
 
 OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitView view, double aspect,
@@ -61,22 +90,13 @@ OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitVie
     if (box.isEmpty()) return view;
     view.focal = box.center();
   }
-  const Eigen::Matrix4d V = ViewMatrix(view);
-  const Eigen::Vector3d right = V.block<1, 3>(0, 0).transpose();
-  const Eigen::Vector3d up = V.block<1, 3>(1, 0).transpose();
-  const Eigen::Vector3d back = V.block<1, 3>(2, 0).transpose();
-  const double tan_y = std::tan(view.fov_y / 2) * (1 - 2 * margin);
-  const double tan_x = std::tan(view.fov_y / 2) * aspect * (1 - 2 * margin);
+  const Framing framing(view, aspect, margin);
   double distance = 0;
   bool any = false;
   DistinctScenes scenes;
   for (int k = 0; k < count; ++k) {
     scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) {
-      const Eigen::Vector3d q = p - view.focal;
-      const double depth_offset = q.dot(back);
-      // in the image, and in front of the near clip plane
-      distance = std::max({distance, depth_offset + std::abs(q.dot(right)) / tan_x,
-                           depth_offset + std::abs(q.dot(up)) / tan_y, depth_offset + view.near_clip});
+      distance = std::max(distance, framing.Distance(p));
       any = true;
     });
   }
@@ -87,6 +107,36 @@ OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitVie
 
 OrbitView FitView(const Scene& scene, OrbitView view, double aspect, bool keep_focal, double margin) {
   return FitView(1, [&](int) { return scene; }, view, aspect, keep_focal, margin);
+}
+
+double FitDistance(const Scene& scene, const OrbitView& view, const std::vector<double>& yaws, double aspect,
+                   double margin) {
+  // each vertex placed once (the same point of a mesh once per placement), not once per yaw
+  std::vector<Eigen::Vector3d> points;
+  for (const auto& item : scene.items) {
+    // equal bit for bit: a total order even with NaNs in a hostile mesh
+    std::vector<Eigen::Vector3f> local = item.mesh->positions;
+    std::sort(local.begin(), local.end(), [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+      return std::memcmp(a.data(), b.data(), sizeof(float) * 3) < 0;
+    });
+    local.erase(std::unique(local.begin(), local.end(),
+                            [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+                              return std::memcmp(a.data(), b.data(), sizeof(float) * 3) == 0;
+                            }),
+                local.end());
+    for (const auto& p : local) points.push_back(item.X_FG * p.cast<double>());
+  }
+  if (points.empty()) return 0;
+  double fitted = 0;
+  for (const double yaw : yaws) {
+    OrbitView side = view;
+    side.yaw = yaw;
+    const Framing framing(side, aspect, margin);
+    double distance = 0;
+    for (const auto& p : points) distance = std::max(distance, framing.Distance(p));
+    fitted = std::max({fitted, distance, view.near_clip * 2});
+  }
+  return fitted;
 }
 
 }  // namespace urdfsnap::scene

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "scene/orbit_view.h"
 #include "scene/scene.h"
@@ -22,5 +23,10 @@ OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitVie
 // FitView for one scene.
 OrbitView FitView(const Scene& scene, OrbitView view, double aspect, bool keep_focal,
                   double margin = 0.05);
+
+// The largest of the distances FitView(scene, view with each of `yaws`, aspect, true, margin) gives,
+// with the scene's vertices placed once for all yaws (a turntable's frames). No vertices: 0.
+double FitDistance(const Scene& scene, const OrbitView& view, const std::vector<double>& yaws, double aspect,
+                   double margin = 0.05);
 
 }  // namespace urdfsnap::scene
