@@ -54,6 +54,7 @@ std::string Intro(const RobotPage& page) {
   for (const View& view : Views(page)) text += Figure(Img(view.file, view.alt, view.size), view.caption);
   text += "</div>\n";
   if (page.collision_file.empty()) text += "<p class=\"note\">The robot has no collision geometry.</p>\n";
+  if (!page.tf_note.empty()) text += "<p class=\"note\">" + EscapeMarkup(page.tf_note) + "</p>\n";
   text += "<nav><ul><li><a href=\"#tree\">Kinematic tree</a></li><li><a href=\"#joints\">Joints</a></li>"
           "<li><a href=\"#joint-by-joint\">Joint by joint</a></li><li><a href=\"#links\">Links</a></li></ul></nav>\n";
   return text;

@@ -42,6 +42,7 @@ std::string Intro(const RobotPage& page) {
   }
   text += Grid(header, {images}, ":-:");
   if (page.collision_file.empty()) text += "The robot has no collision geometry.\n\n";
+  if (!page.tf_note.empty()) text += MarkdownText(page.tf_note) + "\n\n";
   return text;
 }
 
