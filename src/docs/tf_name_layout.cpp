@@ -23,6 +23,7 @@ struct Box {
 
 constexpr double kGap = 2;   // pixels between a frame's origin and its name, and between names
 constexpr int kRows[] = {0, -1, 1, -2};   // the rows a name may take: 0 below its frame, -1 above
+constexpr double kPull = 0.75;            // a name's distance from the eye, a share of its frame's
 
 }  // namespace
 
@@ -35,6 +36,7 @@ std::vector<LeftOutName> LayOutTfNames(scene::Scene& scene, const std::vector<st
   const Eigen::Matrix4d view_matrix = scene::ViewMatrix(view);
   const Eigen::Matrix4d clip_matrix = scene::ProjectionMatrix(view, static_cast<double>(size.width) / size.height);
   const double focal_pixels = size.height / 2.0 / std::tan(view.fov_y / 2);
+  const Eigen::Vector3d eye_position = scene::EyePosition(view);
   std::vector<Box> placed;
   std::vector<Eigen::Vector2d> placed_at;   // the frame's pixel of each placed name
   std::vector<size_t> placed_frame;
@@ -43,9 +45,12 @@ std::vector<LeftOutName> LayOutTfNames(scene::Scene& scene, const std::vector<st
   std::vector<std::pair<size_t, Eigen::Vector2d>> unplaced;
   for (size_t i = 0; i < frames.size(); ++i) {
     scene::TextLabel label = scene.labels[i];
+    const Eigen::Vector4d clip = clip_matrix * view_matrix * label.anchor.homogeneous();
+    if (label.quads.empty() || clip.w() <= view.near_clip) continue;   // behind the camera
+    // pulled along its ray towards the eye, where it projects to the same pixel: in front of the
+    // axes and geometry around its frame, which would hide parts of it
+    label.anchor = eye_position + (label.anchor - eye_position) * kPull;
     const Eigen::Vector4d eye = view_matrix * label.anchor.homogeneous();
-    const Eigen::Vector4d clip = clip_matrix * eye;
-    if (label.quads.empty() || -eye.z() <= view.near_clip || clip.w() <= 0) continue;   // behind the camera
     const Eigen::Vector2d at((clip.x() / clip.w() + 1) / 2 * size.width, (1 - clip.y() / clip.w()) / 2 * size.height);
     // the name's extent in metres, then in pixels once scaled to `pixels` high
     Eigen::Vector2f low = label.quads.front().min, high = label.quads.front().max;

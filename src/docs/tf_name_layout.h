@@ -23,8 +23,9 @@ struct LeftOutName {
 // Lays out `scene.labels`, the names of `frames` (one label per frame, in order, as the TF display
 // adds them) seen through `view` in a picture of `size`: each scaled to `pixels` high, centred on
 // its frame and put in the row below it, above it, or one row further below or above, the first
-// of these that overlaps no name placed before it (frames in order); a name with no such place is
-// removed. Returns those, in order.
+// of these that overlaps no name placed before it (frames in order), and brought nearer the eye
+// (to the same pixels) so that the geometry around its frame does not hide it; a name with no
+// such place is removed. Returns those, in order.
 std::vector<LeftOutName> LayOutTfNames(scene::Scene& scene, const std::vector<std::string>& frames,
                                        const scene::OrbitView& view, render::ImageSize size, double pixels = 15);
 

@@ -47,7 +47,9 @@ TEST(TfNameLayout, ScalesNamesToTheirHeightInPixels) {
   const scene::OrbitView view = FrontView();
   EXPECT_TRUE(LayOutTfNames(scene, {"base"}, view, size, 13).empty());
   ASSERT_EQ(scene.labels.size(), 1u);
-  const double metres_per_pixel = view.distance * 2 * std::tan(view.fov_y / 2) / size.height;
+  // brought a quarter of the way to the eye at (5, 0, 0), where it covers the same pixels
+  EXPECT_TRUE(scene.labels[0].anchor.isApprox(Eigen::Vector3d(1.25, 0, 0))) << scene.labels[0].anchor.transpose();
+  const double metres_per_pixel = 3.75 * 2 * std::tan(view.fov_y / 2) / size.height;
   EXPECT_NEAR(ExtentOf(scene.labels[0]).height / metres_per_pixel, 13, 1e-3);
   EXPECT_NEAR(ExtentOf(scene.labels[0]).width / metres_per_pixel, 4 * 13, 1e-3);   // square cells, as given
   // hung below its frame: the top edge under the origin
