@@ -184,7 +184,7 @@ void AddDocsCommand(CLI::App& app) {
                   "gif or none (default webp)")
       ->check(CLI::IsMember(formats));
   cmd->add_option("--stills", o->stills,
-                  "format of the pictures: webp (lossy, a fifth of png's bytes) or png (lossless; default webp)")
+                  "format of the pictures: webp (lossy, a third to an eighth of png's bytes) or png (lossless; default webp)")
       ->check(CLI::IsMember({"webp", "png"}));
   cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
   o->sharding.AddOptions(*cmd, "pictures and animations of the page");
