@@ -41,7 +41,8 @@ std::string FrameSource::RenderPng(const request::RenderRequest& request, Warnin
 scene::OrbitView FrameSource::FitView(const request::RenderRequest& request, const std::string& link,
                                       Warnings& warnings) {
   request::RenderRequest fitted = request;
-  fitted.fit = link.empty();   // the whole robot: the view `render --fit` draws
+  fitted.fit = link.empty();   // the whole robot: the view `render --fit` draws without --focal
+  fitted.focal.clear();
   const request::Prepared prepared =
       session_->Prepare(request::ResolveRequest(fitted, base_files_, request::CommandLineLabel), warnings);
   if (prepared.settings.camera) throw Error("a calibrated camera's view cannot be fitted (--camera-info)");

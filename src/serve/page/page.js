@@ -509,14 +509,17 @@ async function copyText(text, note) {
 
 // ---- start -------------------------------------------------------------------------------
 
-// /api/view, asked for again while the model has never loaded (served as its error meanwhile).
+// /api/view, once /api/status says the model has loaded (a model broken at start-up is served as
+// its error until an edit mends it; asking /api/status first keeps 422s out of the console).
 async function initialView() {
   for (;;) {
     try {
-      const response = await fetch('api/view', {cache: 'no-store'});
-      const body = await response.json();
-      if (response.ok) return body;
-      page.modelError = body.error;
+      const status = await (await fetch('api/status', {cache: 'no-store'})).json();
+      page.modelError = status.error ?? '';
+      if (!status.error) {
+        const response = await fetch('api/view', {cache: 'no-store'});
+        if (response.ok) return response.json();
+      }
     } catch (error) {
       page.modelError = 'urdfsnap serve does not answer (' + error.message + '); retrying';
     }
