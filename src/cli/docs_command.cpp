@@ -1,8 +1,8 @@
 // `urdfsnap docs`: a robot's documentation page (README.md, index.html and their pictures) written
 // into a folder that appears only when complete, or `--check`ed against a fresh one for CI.
 #include <filesystem>
-#include <string_view>
 #include <memory>
+#include <string_view>
 #include <utility>
 
 #include "cli/command.h"
@@ -180,7 +180,7 @@ void AddDocsCommand(CLI::App& app) {
   formats.push_back("none");
   o->animations = "webp";
   cmd->add_option("--animations", o->animations,
-                  "format of the joint sweeps and the turntable: webp (lossy, a fraction of gif's bytes), "
+                  "format of the joint sweeps and the turntable: webp (lossy, about a quarter of gif's bytes), "
                   "gif or none (default webp)")
       ->check(CLI::IsMember(formats));
   cmd->add_option("--stills", o->stills,
