@@ -2,6 +2,8 @@
 // over them.
 #include "serve/frame_source.h"
 
+#include <algorithm>
+
 #include "common/error.h"
 #include "image/png_writer.h"
 #include "request/render_session.h"
@@ -51,7 +53,8 @@ scene::OrbitView FrameSource::FitView(const request::RenderRequest& request, con
   const int index = robot.FindLink(link);
   if (index < 0) throw Error("link '" + link + "' is not a link of robot '" + robot.name() + "'");
   const scene::Scene posed = prepared.renderer->Pose(prepared.positions);
-  // the link's geometry; a link without any (a frame such as a tool point): the links below it
+  // the link's geometry; for a link without any, its subtree's; for a frame with none below it
+  // either (a tool point), the subtree of the nearest link above it that has some
   std::vector<bool> framed(robot.links().size(), false);
   framed[index] = true;
   const auto framed_items = [&] {
@@ -60,14 +63,19 @@ scene::OrbitView FrameSource::FitView(const request::RenderRequest& request, con
     return scene;
   };
   scene::Scene scene = framed_items();
-  if (scene.items.empty()) {
+  for (int top = index; scene.items.empty();) {
+    std::fill(framed.begin(), framed.end(), false);
+    framed[top] = true;
     for (size_t i = 0; i < robot.links().size(); ++i) {   // parents come before their children
       const int joint = robot.links()[i].parent_joint;
       if (joint >= 0 && framed[robot.joints()[joint].parent_link]) framed[i] = true;
     }
     scene = framed_items();
+    const int joint = robot.links()[top].parent_joint;
+    if (joint < 0) break;
+    top = robot.joints()[joint].parent_link;
   }
-  if (scene.items.empty()) throw Error("link '" + link + "' and the links below it have no geometry shown to frame");
+  if (scene.items.empty()) throw Error("robot '" + robot.name() + "' has no geometry shown to frame");
   const render::ImageSize size = prepared.settings.size;
   return scene::FitView(scene, prepared.settings.view, static_cast<double>(size.width) / size.height, false);
 }

@@ -231,6 +231,23 @@ TEST_F(ServeApiTest, FitFramesTheRobotOrOneLink) {
   EXPECT_EQ(nlohmann::json::parse(unknown->body)["error"], "urdfsnap: error: link 'elbow' is not a link of robot 'mrm'");
   EXPECT_EQ(client->Get("/api/fit?yaw=abc")->status, 400);
   EXPECT_EQ(server.Stop(SIGINT), 0);
+
+  // a frame without geometry, nothing below it (a tool point): the link it hangs from
+  const std::string tool = folder_.Write("tool.urdf", R"(<robot name="t">
+  <link name="base"><visual><geometry><box size="2 2 2"/></geometry></visual></link>
+  <link name="hand"><visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual></link>
+  <link name="tcp"/>
+  <joint name="arm" type="fixed"><parent link="base"/><child link="hand"/><origin xyz="0 0 3"/></joint>
+  <joint name="tip" type="fixed"><parent link="hand"/><child link="tcp"/><origin xyz="0 0 0.1"/></joint>
+</robot>)");
+  ServeProcess tooled(tool + " --port 0");
+  ASSERT_TRUE(tooled.started()) << tooled.Stderr();
+  auto tool_client = tooled.Client();
+  const auto at_tcp = nlohmann::json::parse(tool_client->Get("/api/fit?link=tcp")->body);
+  const auto at_hand = nlohmann::json::parse(tool_client->Get("/api/fit?link=hand")->body);
+  EXPECT_EQ(at_tcp, at_hand);
+  EXPECT_NEAR(at_hand["focal"][2].get<double>(), 3, 1e-6);
+  EXPECT_EQ(tooled.Stop(SIGINT), 0);
 }
 
 TEST_F(ServeApiTest, StartStopAndBind) {
