@@ -9,16 +9,15 @@
 
 namespace urdfsnap::animation {
 
-void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const AnimationFrames& frames,
+void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const AnimationFrames& frames,
                      shard::FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
                      Warnings& warnings, std::size_t depth) {
   const image::FrameOutputs wanted{true, outputs.depth != nullptr, outputs.labels != nullptr};
   const auto render = [&](std::int64_t i, image::Frame& frame) {
     const std::int64_t k = range.first + i;
-    const std::vector<double> positions = frames.Positions(k, warnings);
-    frame = frames.camera() ? robot.Render(gl, positions, *frames.camera(), wanted)
-                            : robot.Render(gl, positions, frames.View(k), frames.size(), wanted,
-                                           frames.Place(k, warnings));
+    frame = frames.camera() ? robot.Render(gl, frames.Positions(k, warnings), *frames.camera(), wanted)
+                            : gl.Render(frames.Scene(robot, k, warnings), frames.View(k), frames.size().width,
+                                        frames.size().height, wanted);
   };
   // the depth files' format, by the pattern's extension as `render --depth FILE` decides it
   const std::string depth_extension =

@@ -11,9 +11,9 @@
 #include "common/number_text.h"
 #include "geometry/mesh_uri.h"
 #include "scene/link_colours.h"
-#include "scene/mesh_loading.h"
+#include "geometry/mesh_loading.h"
 #include "scene/primitive_meshes.h"
-#include "scene/texture_file.h"
+#include "texture/texture_file.h"
 
 namespace urdfsnap::scene {
 
@@ -67,7 +67,7 @@ class FileLoader {
         // reported when the shape is built
       }
     }
-    meshes_ = LoadMeshFiles(paths);
+    meshes_ = geometry::LoadMeshFiles(paths);
   }
 
   // The mesh file of `uri` for `link`; null when it is missing and missing files are allowed.
@@ -81,7 +81,7 @@ class FileLoader {
                           "but not by RViz and other ROS tools")
                         .what());
     }
-    const MeshLoad& load = meshes_.at(path);
+    const geometry::MeshLoad& load = meshes_.at(path);
     if (load.error) {
       try {
         std::rethrow_exception(load.error);
@@ -99,22 +99,22 @@ class FileLoader {
   // material's, already a path). When it is missing and missing files are allowed: Ogre's warning
   // texture, which RViz shows for a texture it cannot load (robot_link.cpp and mesh_loader.cpp
   // name the image to Ogre even when loading it failed).
-  std::shared_ptr<const TextureImage> Texture(const model::Link& link, const std::string& uri, bool is_uri) {
+  std::shared_ptr<const texture::TextureImage> Texture(const model::Link& link, const std::string& uri, bool is_uri) {
     return ForLink(
         link, "drawn with Ogre's warning texture, as RViz draws it",
         [&] {
           const std::string path = is_uri ? geometry::ResolveMeshUri(uri, options_.model_file, options_.packages) : uri;
-          std::shared_ptr<const TextureImage> texture = LoadTextureFile(path);
+          std::shared_ptr<const texture::TextureImage> texture = texture::LoadTextureFile(path);
           Use(path);
           return texture;
         },
-        WarningTexture());
+        texture::WarningTexture());
   }
 
   // The image the texture units of a mesh part's own material show (geometry::MeshPart): the
   // diffuse map's file, or, for a material whose maps include no diffuse map in a file, Ogre's
   // warning texture with a warning (RViz names an image that cannot exist to its units).
-  std::shared_ptr<const TextureImage> UnitTexture(const model::Link& link, const std::string& mesh_uri,
+  std::shared_ptr<const texture::TextureImage> UnitTexture(const model::Link& link, const std::string& mesh_uri,
                                                   const geometry::MeshPart& part) {
     if (!part.texture.empty()) return Texture(link, part.texture, false);
     warnings_.Add(Error(SourceLocation{options_.model_file, link.line},
@@ -122,7 +122,7 @@ class FileLoader {
                             "': a material has texture maps but no diffuse map in a file; RViz draws "
                             "it with Ogre's yellow and black warning texture, and so does urdfsnap")
                       .what());
-    return WarningTexture();
+    return texture::WarningTexture();
   }
 
   std::vector<std::string> TakeFiles() { return std::move(files_); }
@@ -164,7 +164,7 @@ class FileLoader {
   const SceneOptions& options_;
   Warnings& warnings_;
   std::map<std::string, std::variant<std::string, std::exception_ptr>> resolved_;   // by URI
-  std::map<std::string, MeshLoad> meshes_;                                         // by path
+  std::map<std::string, geometry::MeshLoad> meshes_;                                         // by path
   std::set<std::string> used_;
   std::vector<std::string> files_;
 };
@@ -278,12 +278,21 @@ RobotScene::RobotScene(const model::Robot& robot, SceneOptions options, Warnings
   }
   files_ = files.TakeFiles();
   if (options_.tf.enabled && options_.tf.show_names) tf_names_ = MakeTfNameLabels(robot_, options_.tf);
+  if (options_.tf.enabled) tf_parents_ = robot_.ParentLinks();
 }
 
 std::size_t RobotScene::triangle_count() const {
   std::size_t triangles = 0;
   for (const LinkPart& part : parts_) triangles += part.mesh->indices.size() / 3;
   return triangles;
+}
+
+std::vector<Eigen::Isometry3d> RobotScene::LinkPoses(const std::vector<Eigen::Isometry3d>& X_RL,
+                                                     const Eigen::Isometry3d& X_SF) const {
+  const Eigen::Isometry3d X_SR = X_SF * X_RL[fixed_link_].inverse();
+  std::vector<Eigen::Isometry3d> X_SL(X_RL.size());
+  for (size_t i = 0; i < X_RL.size(); ++i) X_SL[i] = X_SR * X_RL[i];
+  return X_SL;
 }
 
 Scene RobotScene::Pose(const std::vector<Eigen::Isometry3d>& X_RL,
@@ -295,15 +304,13 @@ Scene RobotScene::Pose(const std::vector<Eigen::Isometry3d>& X_RL,
   Scene scene;
   scene.background = options_.background;
   // (X_FL below is in the scene's frame S, which is F's unless X_SF says otherwise)
-  const Eigen::Isometry3d X_FR = X_SF * X_RL[fixed_link_].inverse();
-  std::vector<Eigen::Isometry3d> X_FL(X_RL.size());
-  for (size_t i = 0; i < X_RL.size(); ++i) X_FL[i] = X_FR * X_RL[i];
+  const std::vector<Eigen::Isometry3d> X_FL = LinkPoses(X_RL, X_SF);
   scene.items.reserve(parts_.size());
   for (const LinkPart& part : parts_) {
     scene.items.push_back({part.mesh, X_FL[part.link] * part.X_LG, part.rgba, part.link, part.texture,
                            part.texture_units, part.emissive});
   }
-  if (options_.tf.enabled) AddTfMarkers(robot_, X_FL, options_.tf, tf_names_, scene);
+  if (options_.tf.enabled) AddTfFrames(X_FL, tf_parents_, options_.tf, tf_names_, scene);
   if (options_.grid.enabled) scene.lines.push_back(MakeGrid(options_.grid));
   return scene;
 }

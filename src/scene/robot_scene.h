@@ -23,7 +23,7 @@ struct LinkPart {
   std::shared_ptr<const geometry::TriangleMesh> mesh;
   Eigen::Affine3d X_LG = Eigen::Affine3d::Identity();   // in the link frame, scale included
   Eigen::Vector4f rgba{1, 0, 0, 1};       // RobotModel alpha and the link's alpha applied
-  std::shared_ptr<const TextureImage> texture;
+  std::shared_ptr<const texture::TextureImage> texture;
   int texture_units = 1;                  // how often `texture` modulates (scene::DrawItem)
   Eigen::Vector3f emissive{0, 0, 0};
 };
@@ -54,6 +54,9 @@ class RobotScene {
   // pose TF gives the fixed link there. Does no I/O.
   Scene Pose(const std::vector<Eigen::Isometry3d>& X_RL,
              const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
+  // The link poses in the scene's frame that Pose draws them at.
+  std::vector<Eigen::Isometry3d> LinkPoses(const std::vector<Eigen::Isometry3d>& X_RL,
+                                           const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
 
  private:
   const model::Robot& robot_;
@@ -61,6 +64,7 @@ class RobotScene {
   int fixed_link_ = 0;
   std::vector<LinkPart> parts_;
   std::vector<TextLabel> tf_names_;   // anchored at the origin; Pose() moves them to the frames
+  std::vector<int> tf_parents_;       // robot.ParentLinks(), for the TF display
   std::vector<std::string> files_;
 };
 
