@@ -1,8 +1,8 @@
 // `urdfsnap animate`: MODEL + a trajectory (CSV, ROS messages in YAML/JSON, a ROS 2 bag), or a
 // bag alone as MODEL (its robot description and motion), and/or a turntable → MP4, WebM, GIF,
-// animated WebP or a PNG sequence, with depth and label sequences from the same frames. Every
-// output appears only when complete; --print-frame K instead prints the `render` options that make
-// frame K.
+// animated WebP or a PNG sequence, with depth, label, mask and keypoint sequences from the same
+// frames. Every output appears only when complete; --print-frame K instead prints the `render`
+// options that make frame K.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +26,7 @@
 #include "common/error.h"
 #include "common/number_text.h"
 #include "gl/gl_context.h"
+#include "dataset/frame_extras.h"
 #include "image/depth_label_files.h"
 #include "gl/rasteriser_threads.h"
 #include "motion/frame_plan.h"
@@ -58,6 +59,8 @@ struct AnimateOptions {
   bool turntable = false;
   bool clamp = false, strict_joints = false;  // how the trajectory's joints meet the model's
   std::string depth, labels;  // optional depth and link-label sequences (patterns)
+  std::string mask, keypoints;  // optional robot-mask and keypoint sequences (patterns)
+  int mask_dilate = 0;
   std::string print_frame;    // a frame number: print its render options instead of writing
   bool quiet = false;
   ShardOptions sharding;      // a frame sequence's contiguous range of frames
@@ -216,8 +219,10 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
   a.frames->Positions(0, warnings);  // a pose's warnings are every frame's: print them first
   const auto encoder = video::OpenFrameEncoder(
       o.output, {settings.size.width, settings.size.height, a.plan.fps, range.first}, warnings);
-  std::optional<video::FrameFiles> depth, labels;
+  std::optional<video::FrameFiles> depth, labels, mask, keypoints;
   if (!o.depth.empty()) depth.emplace(o.depth, range.first);
+  if (!o.mask.empty()) mask.emplace(o.mask, range.first);
+  if (!o.keypoints.empty()) keypoints.emplace(o.keypoints, range.first);
   if (!o.labels.empty()) {
     labels.emplace(o.labels, range.first);
     outputs.Write(animation::LabelNamesPath(o.labels), image::LabelNamesJson(a.robot.robot->LinkNames()));
@@ -229,7 +234,8 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
                                   : stream::ProgressBar::Display::kIfTerminal);
   Warnings later;
   animation::RenderAnimation(*a.robot.renderer, session.GlRenderer(settings.samples), *a.frames, range,
-                             {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr},
+                             {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr,
+                              mask ? &*mask : nullptr, o.mask_dilate, keypoints ? &*keypoints : nullptr},
                              &bar, later);
   outputs.Commit();
   bar.Finish(WrittenText(o.output, range));
@@ -256,6 +262,9 @@ void Run(AnimateOptions& o) {
   const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
+  if (!o.mask.empty()) animation::CheckPattern(o.mask, ".png", "--mask");
+  dataset::CheckMaskDilate(o.mask_dilate, "--mask-dilate");
+  if (!o.keypoints.empty()) animation::CheckPattern(o.keypoints, ".json", "--keypoints");
   // no output may be another output or an input; their folders are made (removed again on failure)
   OutputPlan outputs;
   if (o.print_frame.empty()) {
@@ -267,6 +276,8 @@ void Run(AnimateOptions& o) {
       animation::PlanOutput(outputs, o.labels, "--labels");
       outputs.AddFile(animation::LabelNamesPath(o.labels), "the link names of --labels");
     }
+    if (!o.mask.empty()) animation::PlanOutput(outputs, o.mask, "--mask");
+    if (!o.keypoints.empty()) animation::PlanOutput(outputs, o.keypoints, "--keypoints");
     outputs.Prepare();
   }
 
@@ -346,6 +357,14 @@ void AddAnimateCommand(CLI::App& app) {
                   "labels/%05d.png, as `render --labels` writes them, with the link names once in "
                   "the pattern's name without the number, .json (labels/labels.json; each shard writes "
                   "the same one)");
+  cmd->add_option("--mask", o->mask,
+                  "also write the robot's mask of every frame: a pattern such as masks/%05d.png, "
+                  "as `render --mask` writes it (8-bit, 255 on the robot)");
+  cmd->add_option("--mask-dilate", o->mask_dilate, "grow each --mask by N pixels (a disc), 0 to 1000 (default 0)");
+  cmd->add_option("--keypoints", o->keypoints,
+                  "also write every frame's keypoints: a pattern such as keypoints/%05d.json, each "
+                  "file as `render --keypoints` writes it (link frames' and joint origins' pixels, "
+                  "depth, visibility, and the camera)");
   cmd->add_option("--print-frame", o->print_frame,
                   "write nothing; print the options that make `render` (with the same MODEL and "
                   "options, without --fit) draw frame K byte for byte: the view and every joint");

@@ -1,9 +1,9 @@
 // `urdfsnap animate` against the binary, judged by other programs: PNG sequences byte for byte
 // against `urdfsnap render` of the interpolated pose, videos through the real FFmpeg tools (ffprobe
 // for frame count, size and rate; ffmpeg to decode every frame) and libwebp, trajectories in every
-// input format and bags written by the MCAP project's own writer (the test_bags fixture), depth and
-// label sequences, clamping, the one camera of --fit and turntables, --print-frame, and memory that
-// does not grow with the animation's length. Frames show a posed robot, never a blank picture.
+// input format and bags written by the MCAP project's own writer (the test_bags fixture), depth,
+// label, mask and keypoint sequences, clamping, the one camera of --fit and turntables,
+// --print-frame, and memory that does not grow with the animation's length. Frames show a posed robot, never a blank picture.
 #include <sys/stat.h>
 
 #include <cmath>
@@ -510,6 +510,44 @@ TEST_F(AnimateTest, DepthAndLabelSequencesAreRendersOfTheSameFrames) {
   // the link names once for the sequence, as render writes them beside its label image
   EXPECT_EQ(ReadBytes(Path("l/labels.json")), ReadBytes(Path("r_l.json")));
   EXPECT_FALSE(fs::exists(Path("l/0.json")));
+}
+
+TEST_F(AnimateTest, MaskAndKeypointSequencesAreWhatRenderWritesForEachFrame) {
+  // the orbit view fitted over the motion, and a calibrated camera with its lens
+  const std::string camera = " --camera-info " + (kSource / "tests/data/camera/ost.yaml").string() +
+                             " --camera-pose 5,0.05,1,-0.5,-0.5,0.5,0.5 --distort";
+  for (const std::string& view : {std::string(" --fit --size 240x180"), camera}) {
+    const std::string animation = mrm_ + " --trajectory " + csv_ + " --fps 2" + view;
+    Ok("animate " + animation + " -o " + Path("c/%d.png") + " --mask " + Path("m/%d.png") + " --mask-dilate 2" +
+       " --keypoints " + Path("k/%02d.json"));
+    EXPECT_FALSE(fs::exists(Path("m/5.png")));
+    for (int k : {1, 4}) {
+      // the words give the joints (and the orbit view); a camera is render's own option
+      const std::string words = (view == camera ? camera : " --size 240x180") + " " + FrameWords(animation, k);
+      Ok("render " + mrm_ + " " + words + " -o " + Path("r.png") + " --mask " + Path("r_m.png") +
+         " --mask-dilate 2 --keypoints " + Path("r_k.json"));
+      const std::string n = std::to_string(k);
+      EXPECT_EQ(ReadBytes(Path("c/" + n + ".png")), ReadBytes(Path("r.png"))) << view << k;
+      EXPECT_EQ(ReadBytes(Path("m/" + n + ".png")), ReadBytes(Path("r_m.png"))) << view << k;
+      EXPECT_EQ(ReadBytes(Path("k/0" + n + ".json")), ReadBytes(Path("r_k.json"))) << view << k;
+      EXPECT_GT(RobotPixels(image::ReadPng(Path("c/" + n + ".png"))), 500) << view << k;
+    }
+    fs::remove_all(Path("c"));
+    fs::remove_all(Path("m"));
+    fs::remove_all(Path("k"));
+  }
+  // the sequences' names are checked before anything is drawn
+  const Result bad = RunUrdfsnap("animate " + mrm_ + " --trajectory " + csv_ + " -o " + Path("c/%d.png") +
+                                 " --keypoints " + Path("k/%d.txt"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("--keypoints '" + Path("k/%d.txt") + "': expected .json files"), std::string::npos)
+      << bad.output;
+  const Result one = RunUrdfsnap("animate " + mrm_ + " --trajectory " + csv_ + " -o " + Path("c/%d.png") +
+                                 " --mask " + Path("mask.png"));
+  EXPECT_EQ(one.status, 2);
+  EXPECT_NE(one.output.find("expected a pattern with the frame number, such as frames/%05d.png"), std::string::npos)
+      << one.output;
+  EXPECT_FALSE(fs::exists(Path("c")));
 }
 
 TEST_F(AnimateTest, JointsBeyondTheirLimitsAreDrawnAsRecordedWithOneWarningPerJoint) {
