@@ -9,7 +9,7 @@ AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motio
                                  const motion::FramePoses& poses, const CameraRequest& camera,
                                  Warnings& warnings, const motion::RootPoses* root)
     : plan_(plan), poses_(poses), root_(root), size_(camera.size), turntable_(camera.turntable),
-      view_(camera.view), camera_(camera.camera) {
+      view_(camera.view), camera_(camera.camera), camera_tf_(camera.camera_tf) {
   // motion::kMaxFrames keeps the count within FitView's int
   const int count = static_cast<int>(plan_.frame_count);
   const auto pose = [&](int k) { return Positions(k, warnings); };
@@ -28,6 +28,15 @@ std::vector<double> AnimationFrames::Positions(std::int64_t k, Warnings& warning
 
 Eigen::Isometry3d AnimationFrames::Place(std::int64_t k, Warnings& warnings) const {
   return root_ ? root_->At(plan_.TrajectoryTime(k), warnings) : Eigen::Isometry3d::Identity();
+}
+
+std::optional<render::CameraSettings> AnimationFrames::Camera(std::int64_t k, Warnings& warnings) const {
+  if (!camera_ || !camera_tf_) return camera_;
+  // X_TR: the robot's root in the camera's TF frame T; the camera then hangs off the root link
+  render::CameraSettings placed = *camera_;
+  placed.pose = camera_tf_->At(plan_.TrajectoryTime(k), warnings).inverse() * camera_->pose;
+  placed.frame = camera_tf_->root();
+  return placed;
 }
 
 scene::OrbitView AnimationFrames::View(std::int64_t k) const {

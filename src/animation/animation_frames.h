@@ -24,6 +24,9 @@ struct CameraRequest {
   render::Fit fit = render::Fit::kNone;
   bool turntable = false;  // the yaw turns once around over the animation
   std::optional<render::CameraSettings> camera;   // when set, every frame is seen through it instead
+  // when set, camera->frame is a TF frame of the bag (not a link): its pose in the robot's root
+  // link at each frame's time (kept by reference)
+  const motion::RootPoses* camera_tf = nullptr;
 };
 
 class AnimationFrames {
@@ -50,8 +53,9 @@ class AnimationFrames {
   Eigen::Isometry3d Place(std::int64_t k, Warnings& warnings) const;
   // The camera of frame `k`.
   scene::OrbitView View(std::int64_t k) const;
-  // The calibrated camera every frame is seen through, if one was asked for (View is then unused).
-  const std::optional<render::CameraSettings>& camera() const { return camera_; }
+  // The calibrated camera frame `k` is seen through, if one was asked for (View is then unused):
+  // the same for every frame unless its frame is a TF frame of the bag, which moves it per frame.
+  std::optional<render::CameraSettings> Camera(std::int64_t k, Warnings& warnings) const;
 
  private:
   const motion::FramePlan& plan_;
@@ -61,6 +65,7 @@ class AnimationFrames {
   bool turntable_;
   scene::OrbitView view_;  // frame 0's, fitted
   std::optional<render::CameraSettings> camera_;
+  const motion::RootPoses* camera_tf_;
 };
 
 }  // namespace urdfsnap::animation

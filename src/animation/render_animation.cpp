@@ -24,8 +24,9 @@ struct DrawnFrame {
 
 // The camera frame `k` is seen through, with its pose in the robot's fixed frame: the calibrated
 // camera, or the orbit view as one (moved into the robot's fixed frame when `X_SF` places it).
-render::CameraSettings FrameCamera(const AnimationFrames& frames, std::int64_t k, const Eigen::Isometry3d& X_SF) {
-  if (frames.camera()) return *frames.camera();
+render::CameraSettings FrameCamera(const AnimationFrames& frames, std::int64_t k,
+                                   const std::optional<render::CameraSettings>& calibrated, const Eigen::Isometry3d& X_SF) {
+  if (calibrated) return *calibrated;
   render::CameraSettings camera = render::OrbitCamera(frames.View(k), frames.size().width, frames.size().height);
   camera.pose = X_SF.inverse() * camera.pose;
   return camera;
@@ -42,11 +43,13 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const
   const auto render = [&](std::int64_t i, DrawnFrame& drawn) {
     const std::int64_t k = range.first + i;
     const std::vector<double> positions = frames.Positions(k, warnings);
-    const Eigen::Isometry3d X_SF = frames.camera() ? Eigen::Isometry3d::Identity() : frames.Place(k, warnings);
-    drawn.frame = frames.camera() ? robot.Render(gl, positions, *frames.camera(), wanted)
-                                  : robot.Render(gl, positions, frames.View(k), frames.size(), wanted, X_SF);
+    const std::optional<render::CameraSettings> camera = frames.Camera(k, warnings);
+    const Eigen::Isometry3d X_SF = camera ? Eigen::Isometry3d::Identity() : frames.Place(k, warnings);
+    drawn.frame = camera ? robot.Render(gl, positions, *camera, wanted)
+                         : robot.Render(gl, positions, frames.View(k), frames.size(), wanted, X_SF);
     if (outputs.keypoints) {
-      drawn.keypoints = dataset::RenderedKeypointsJson(robot, positions, FrameCamera(frames, k, X_SF), drawn.frame);
+      drawn.keypoints =
+          dataset::RenderedKeypointsJson(robot, positions, FrameCamera(frames, k, camera, X_SF), drawn.frame);
     }
   };
   // the depth files' format, by the pattern's extension as `render --depth FILE` decides it

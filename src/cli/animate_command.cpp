@@ -153,6 +153,7 @@ struct PreparedAnimation {
   motion::FramePlan plan;
   std::optional<motion::FramePoses> poses;
   std::optional<motion::RootPoses> root;   // where the bag's TF puts the robot, for a fixed frame outside it
+  std::optional<motion::RootPoses> camera_tf;   // where it puts the robot from a --camera-frame outside it
   std::optional<animation::AnimationFrames> frames;
 };
 
@@ -194,9 +195,17 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
                    a.trajectory.stamp_at_zero.value_or(0), o.trajectory);
   }
   const render::RenderSettings& settings = a.robot.settings;
+  // a camera frame outside the robot (a camera's optical frame in the bag's TF) moves per frame
+  if (settings.camera && !settings.camera->frame.empty() && a.robot.robot->FindLink(settings.camera->frame) < 0 &&
+      !o.trajectory.empty() && motion::IsBag(o.trajectory)) {
+    a.camera_tf.emplace(tf::ReadBagTransforms(o.trajectory), settings.camera->frame,
+                        a.robot.robot->links().front().name, a.trajectory.stamp_at_zero.value_or(0), o.trajectory,
+                        "--camera-frame");
+  }
   a.frames.emplace(*a.robot.renderer, a.plan, *a.poses,
-                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable, settings.camera}, warnings,
-                   a.root ? &*a.root : nullptr);
+                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable, settings.camera,
+                                            a.camera_tf ? &*a.camera_tf : nullptr},
+                   warnings, a.root ? &*a.root : nullptr);
 }
 
 // --print-frame K: the render options that draw frame K, to stdout.

@@ -16,6 +16,7 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "bag/test_bags.h"
 #include "cli_fixture.h"
@@ -478,6 +479,31 @@ TEST_F(AnimateTest, AFixedFrameOutsideTheRobotPlacesItWhereTfSays) {
   const Result other = RunUrdfsnap("animate " + rover + " --fixed-frame map -o " + Path("map/%d.png"));
   EXPECT_EQ(other.status, 2);
   EXPECT_NE(other.output.find("--fixed-frame 'map': neither a link of the robot nor a frame"), std::string::npos)
+      << other.output;
+}
+
+TEST_F(AnimateTest, ACameraFrameOutsideTheRobotFollowsTheBagsTf) {
+  // a camera fixed in odom 6 m above the rover's loop centre (0, 1), looking down (x along +x, y
+  // along -y): 180° about x. f = 60 / tan(22.5°) at 160x120
+  const std::string camera = " --camera-frame odom --camera-pose 0,1,6,1,0,0,0 --size 160x120 --no-grid";
+  const std::string rover = test::TestBag("rover_loop.mcap");
+  Ok("animate " + rover + " --fps 1" + camera + " -o " + Path("c/%d.png") + " --keypoints " + Path("k/%d.json"));
+  const double f = 60 / std::tan(std::numbers::pi / 8);
+  for (const auto& [k, y] : {std::pair{0, 0.0}, std::pair{4, 2.0}}) {
+    // base_link at (0, y, 0) in odom: 6 m below the camera, 1 - y metres along the image's v
+    const nlohmann::json keypoints = nlohmann::json::parse(ReadBytes(Path("k/" + std::to_string(k) + ".json")));
+    const nlohmann::json& base = keypoints["frames"][0];
+    EXPECT_EQ(base["name"], "base_link");
+    EXPECT_NEAR(base["u"].get<double>(), 79.5, 1e-6) << k;
+    EXPECT_NEAR(base["v"].get<double>(), 59.5 + f * (1 - y) / 6, 1e-6) << k;
+    EXPECT_NEAR(base["depth"].get<double>(), 6, 1e-9) << k;
+    EXPECT_GT(RobotPixels(image::ReadPng(Path("c/" + std::to_string(k) + ".png"))), 100) << k;
+  }
+  EXPECT_GT(Apart(RobotCentre(image::ReadPng(Path("c/0.png"))), RobotCentre(image::ReadPng(Path("c/4.png")))), 35);
+  // a frame TF does not connect to the robot
+  const Result other = RunUrdfsnap("animate " + rover + " --camera-frame map -o " + Path("map/%d.png"));
+  EXPECT_EQ(other.status, 2);
+  EXPECT_NE(other.output.find("--camera-frame 'map': neither a link of the robot nor a frame"), std::string::npos)
       << other.output;
 }
 

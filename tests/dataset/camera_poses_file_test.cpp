@@ -2,6 +2,8 @@
 // normalised, and errors located at their line.
 #include "dataset/camera_poses_file.h"
 
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "common/error.h"
@@ -32,12 +34,16 @@ TEST(CameraPosesFile, OnePosePerLineWithSpacesOrCommas) {
 }
 
 TEST(CameraPosesFile, ErrorsNameTheLine) {
-  EXPECT_EQ(ErrorOf("1 2 3 0 0 0 1\n1 2 3 0 0 1\n"), "poses.txt:2: expected a camera pose: seven numbers X Y Z QX QY QZ QW");
-  EXPECT_EQ(ErrorOf("# one\n1 2 3 0 0 0 1 8\n"), "poses.txt:2: expected a camera pose: seven numbers X Y Z QX QY QZ QW");
-  EXPECT_EQ(ErrorOf("1 2 nan 0 0 0 1\n"), "poses.txt:1: expected a camera pose: seven numbers X Y Z QX QY QZ QW");
-  EXPECT_EQ(ErrorOf("1 2 3 0 0 0 0\n"), "poses.txt:1: the quaternion QX QY QZ QW is zero");
-  EXPECT_EQ(ErrorOf("# nothing\n\n"), "poses.txt: no camera pose in the file");
-  EXPECT_EQ(ErrorOf(""), "poses.txt: no camera pose in the file");
+  const std::string seven = "expected a camera pose: seven numbers X Y Z QX QY QZ QW";
+  const std::pair<std::string, std::string> cases[] = {
+      {"1 2 3 0 0 0 1\n1 2 3 0 0 1\n", "poses.txt:2: " + seven},
+      {"# one\n1 2 3 0 0 0 1 8\n", "poses.txt:2: " + seven},
+      {"1 2 nan 0 0 0 1\n", "poses.txt:1: " + seven},
+      {"1 2 3 0 0 0 0\n", "poses.txt:1: the quaternion QX QY QZ QW is zero"},
+      {"# nothing\n\n", "poses.txt: no camera pose in the file"},
+      {"", "poses.txt: no camera pose in the file"},
+  };
+  for (const auto& [text, message] : cases) EXPECT_EQ(ErrorOf(text), message) << text;
 }
 
 }  // namespace
