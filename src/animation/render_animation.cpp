@@ -34,7 +34,7 @@ render::CameraSettings FrameCamera(const AnimationFrames& frames, std::int64_t k
 
 }  // namespace
 
-void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const AnimationFrames& frames,
+void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const AnimationFrames& frames,
                      shard::FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
                      Warnings& warnings, std::size_t depth) {
   const image::FrameOutputs wanted = dataset::OutputsFor(
@@ -71,7 +71,7 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const
   };
   stream::RunPipeline<DrawnFrame>(range.size(), depth, render, write);
   outputs.colour->Finish();
-  for (video::FrameFiles* files : {outputs.depth, outputs.labels, outputs.mask, outputs.keypoints}) {
+  for (video::NumberedFiles* files : {outputs.depth, outputs.labels, outputs.mask, outputs.keypoints}) {
     if (files) files->Finish();
   }
 }

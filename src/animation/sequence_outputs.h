@@ -1,5 +1,5 @@
 // The sequences beside an animation (`--depth`, `--labels`, `--mask`, `--keypoints`): numbered files
-// (video::FrameFiles) in the formats `render --depth/--labels/--mask/--keypoints` writes, one per
+// (video::NumberedFiles) in the formats `render --depth/--labels/--mask/--keypoints` writes, one per
 // frame, from the same renders as the colour frames.
 #pragma once
 
