@@ -202,6 +202,10 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
     a.camera_tf.emplace(tf::ReadBagTransforms(o.trajectory), settings.camera->frame,
                         a.robot.robot->links().front().name, a.trajectory.stamp_at_zero.value_or(0), o.trajectory,
                         "--camera-frame");
+    if (!o.print_frame.empty()) {
+      throw Error("--print-frame: the camera is placed by TF from '" + settings.camera->frame +
+                  "', which `render` cannot do");
+    }
   }
   a.frames.emplace(*a.robot.renderer, a.plan, *a.poses,
                    animation::CameraRequest{settings.view, settings.size, fit, o.turntable, settings.camera,
