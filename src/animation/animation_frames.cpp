@@ -9,7 +9,7 @@ AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motio
                                  const motion::FramePoses& poses, const CameraRequest& camera,
                                  Warnings& warnings, SceneAdditions additions)
     : plan_(plan), poses_(poses), additions_(additions), size_(camera.size), turntable_(camera.turntable),
-      view_(camera.view), camera_(camera.camera) {
+      view_(camera.view), camera_(camera.camera), camera_tf_(camera.camera_tf) {
   // motion::kMaxFrames keeps the count within FitView's int
   const int count = static_cast<int>(plan_.frame_count);
   if (camera.fit != render::Fit::kNone && additions_.follow) {
@@ -41,6 +41,15 @@ scene::Scene AnimationFrames::Scene(const render::RobotRenderer& robot, std::int
   scene::Scene scene = robot.Pose(positions, X_SF);
   if (additions_.tf) additions_.tf->AddTo(robot, positions, X_SF, plan_.TrajectoryTime(k), scene, warnings);
   return scene;
+}
+
+std::optional<render::CameraSettings> AnimationFrames::Camera(std::int64_t k, Warnings& warnings) const {
+  if (!camera_ || !camera_tf_) return camera_;
+  // X_TR: the robot's root in the camera's TF frame T; the camera then hangs off the root link
+  render::CameraSettings placed = *camera_;
+  placed.pose = camera_tf_->At(plan_.TrajectoryTime(k), warnings).inverse() * camera_->pose;
+  placed.frame = camera_tf_->root();
+  return placed;
 }
 
 scene::OrbitView AnimationFrames::View(std::int64_t k) const {

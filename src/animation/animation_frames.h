@@ -26,6 +26,9 @@ struct CameraRequest {
   render::Fit fit = render::Fit::kNone;
   bool turntable = false;  // the yaw turns once around over the animation
   std::optional<render::CameraSettings> camera;   // when set, every frame is seen through it instead
+  // when set, camera->frame is a TF frame of the bag (not a link): its pose in the robot's root
+  // link at each frame's time (kept by reference)
+  const motion::RootPoses* camera_tf = nullptr;
 };
 
 // What a recording adds to each frame, each kept by reference when given: where TF places the
@@ -67,8 +70,9 @@ class AnimationFrames {
   scene::OrbitView View(std::int64_t k) const;
   // The frame the view follows, if any (none with a fitted camera).
   const FollowedFrame* followed() const { return additions_.follow; }
-  // The calibrated camera every frame is seen through, if one was asked for (View is then unused).
-  const std::optional<render::CameraSettings>& camera() const { return camera_; }
+  // The calibrated camera frame `k` is seen through, if one was asked for (View is then unused):
+  // the same for every frame unless its frame is a TF frame of the bag, which moves it per frame.
+  std::optional<render::CameraSettings> Camera(std::int64_t k, Warnings& warnings) const;
 
  private:
   const motion::FramePlan& plan_;
@@ -78,6 +82,7 @@ class AnimationFrames {
   bool turntable_;
   scene::OrbitView view_;  // frame 0's, fitted
   std::optional<render::CameraSettings> camera_;
+  const motion::RootPoses* camera_tf_;
 };
 
 }  // namespace urdfsnap::animation

@@ -1,8 +1,8 @@
 // `urdfsnap animate`: MODEL + a trajectory (CSV, ROS messages in YAML/JSON, a ROS 2 bag), or a
 // bag alone as MODEL (its robot description and motion), and/or a turntable → MP4, WebM, GIF,
-// animated WebP or a PNG sequence, with depth and label sequences from the same frames. Every
-// output appears only when complete; --print-frame K instead prints the `render` options that make
-// frame K.
+// animated WebP or a PNG sequence, with depth, label, mask and keypoint sequences from the same
+// frames. Every output appears only when complete; --print-frame K instead prints the `render`
+// options that make frame K.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -29,6 +29,7 @@
 #include "common/error.h"
 #include "common/number_text.h"
 #include "gl/gl_context.h"
+#include "dataset/frame_extras.h"
 #include "image/depth_label_files.h"
 #include "gl/rasteriser_threads.h"
 #include "motion/frame_plan.h"
@@ -60,6 +61,8 @@ struct AnimateOptions {
   bool turntable = false;
   bool clamp = false, strict_joints = false;  // how the trajectory's joints meet the model's
   std::string depth, labels;  // optional depth and link-label sequences (patterns)
+  std::string mask, keypoints;  // optional robot-mask and keypoint sequences (patterns)
+  int mask_dilate = 0;
   std::string print_frame;    // a frame number: print its render options instead of writing
   bool quiet = false;
   bool model_from_bag = false;   // MODEL was a bag: its recorded description is the model
@@ -152,6 +155,7 @@ struct PreparedAnimation {
   motion::Trajectory trajectory;
   motion::FramePlan plan;
   std::optional<motion::FramePoses> poses;
+  std::optional<motion::RootPoses> camera_tf;   // where the bag's TF puts the robot from a --camera-frame outside it
   std::optional<animation::AnimationFrames> frames;
 };
 
@@ -180,9 +184,22 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
                 "draws with --bag " + o.trajectory + " --at SECONDS");
   }
   const render::RenderSettings& settings = robot.settings;
+  // a camera frame outside the robot (a camera's optical frame in the bag's TF) moves per frame
+  if (settings.camera && !settings.camera->frame.empty() && robot.robot->FindLink(settings.camera->frame) < 0 &&
+      bag) {
+    a.camera_tf.emplace(a.scene.transforms ? a.scene.transforms
+                                           : std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(o.trajectory)),
+                        settings.camera->frame, robot.robot->links().front().name,
+                        a.trajectory.stamp_at_zero.value_or(0), o.trajectory, "--camera-frame");
+    if (!o.print_frame.empty()) {
+      throw Error("--print-frame: the camera is placed by TF from '" + settings.camera->frame +
+                  "', which `render` cannot do");
+    }
+  }
   a.frames.emplace(*robot.renderer, a.plan, *a.poses,
-                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable, settings.camera}, warnings,
-                   a.scene.Additions());
+                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable, settings.camera,
+                                            a.camera_tf ? &*a.camera_tf : nullptr},
+                   warnings, a.scene.Additions());
 }
 
 // --print-frame K: the render options that draw frame K, to stdout.
@@ -214,8 +231,10 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
   a.frames->Positions(0, warnings);  // a pose's warnings are every frame's: print them first
   const auto encoder = video::OpenFrameEncoder(
       o.output, {settings.size.width, settings.size.height, a.plan.fps, range.first}, warnings);
-  std::optional<video::NumberedFiles> depth, labels;
+  std::optional<video::NumberedFiles> depth, labels, mask, keypoints;
   if (!o.depth.empty()) depth.emplace(o.depth, range.first);
+  if (!o.mask.empty()) mask.emplace(o.mask, range.first);
+  if (!o.keypoints.empty()) keypoints.emplace(o.keypoints, range.first);
   if (!o.labels.empty()) {
     labels.emplace(o.labels, range.first);
     outputs.Write(animation::LabelNamesPath(o.labels), image::LabelNamesJson(a.scene.robot.robot->LinkNames()));
@@ -227,7 +246,8 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
                                   : stream::ProgressBar::Display::kIfTerminal);
   Warnings later;
   animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(settings.samples), *a.frames, range,
-                             {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr},
+                             {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr,
+                              mask ? &*mask : nullptr, o.mask_dilate, keypoints ? &*keypoints : nullptr},
                              &bar, later);
   outputs.Commit();
   bar.Finish(WrittenText(o.output, range));
@@ -255,6 +275,9 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
   const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
+  if (!o.mask.empty()) animation::CheckPattern(o.mask, ".png", "--mask");
+  dataset::CheckMaskDilate(o.mask_dilate, "--mask-dilate");
+  if (!o.keypoints.empty()) animation::CheckPattern(o.keypoints, ".json", "--keypoints");
   // no output may be another output or an input; their folders are made (removed again on failure)
   OutputPlan outputs;
   if (o.print_frame.empty()) {
@@ -266,6 +289,8 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
       animation::PlanOutput(outputs, o.labels, "--labels");
       outputs.AddFile(animation::LabelNamesPath(o.labels), "the link names of --labels");
     }
+    if (!o.mask.empty()) animation::PlanOutput(outputs, o.mask, "--mask");
+    if (!o.keypoints.empty()) animation::PlanOutput(outputs, o.keypoints, "--keypoints");
     outputs.Prepare();
   }
 
@@ -383,6 +408,14 @@ void AddAnimateCommand(CLI::App& app) {
                   "labels/%05d.png, as `render --labels` writes them, with the link names once in "
                   "the pattern's name without the number, .json (labels/labels.json; each shard writes "
                   "the same one)");
+  cmd->add_option("--mask", o->mask,
+                  "also write the robot's mask of every frame: a pattern such as masks/%05d.png, "
+                  "as `render --mask` writes it (8-bit, 255 on the robot)");
+  cmd->add_option("--mask-dilate", o->mask_dilate, "grow each --mask by N pixels (a disc), 0 to 1000 (default 0)");
+  cmd->add_option("--keypoints", o->keypoints,
+                  "also write every frame's keypoints: a pattern such as keypoints/%05d.json, each "
+                  "file as `render --keypoints` writes it (link frames' and joint origins' pixels, "
+                  "depth, visibility, and the camera)");
   cmd->add_option("--print-frame", o->print_frame,
                   "write nothing; print the options that make `render` (with the same MODEL and "
                   "options, without --fit) draw frame K byte for byte: the view and every joint");

@@ -11,11 +11,10 @@
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
-#include "camera/robot_mask.h"
 #include "common/error.h"
 #include "common/file_extension.h"
 #include "common/output_plan.h"
-#include "dataset/rendered_keypoints.h"
+#include "dataset/frame_extras.h"
 #include "image/depth_label_files.h"
 #include "image/png_writer.h"
 #include "motion/trajectory_file.h"
@@ -65,9 +64,7 @@ void Run(RenderCommandOptions& o) {
   if (!o.depth.empty()) image::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) image::CheckLabelsPath(o.labels, "--labels");
   if (!o.mask.empty()) CheckExtension(o.mask, ".png", "--mask");
-  if (o.mask_dilate < 0 || o.mask_dilate > 1000) {
-    throw Error("--mask-dilate " + std::to_string(o.mask_dilate) + ": expected a number of pixels from 0 to 1000");
-  }
+  dataset::CheckMaskDilate(o.mask_dilate, "--mask-dilate");
   if (!o.keypoints.empty()) CheckExtension(o.keypoints, ".json", "--keypoints");
   // every output checked, and its folder made, before drawing; all written, or none
   const std::string output = o.output.empty() ? DefaultOutput(bag_model ? o.bag.bag : o.model.path) : o.output;
@@ -88,23 +85,20 @@ void Run(RenderCommandOptions& o) {
   request::RenderSession session(backend);
   image::Frame frame;
   std::shared_ptr<const model::Robot> robot;
-  std::string keypoints;
+  const dataset::ExtrasWanted wanted{!o.mask.empty(), o.mask_dilate, !o.keypoints.empty()};
+  dataset::FrameExtras extras;
   try {
     std::optional<BagStill> still;
     if (!o.bag.bag.empty()) still.emplace(o.bag, session, o.render.request, bag_model.has_value(), warnings);
     const request::Prepared prepared =
         still ? still->prepared() : session.Prepare(o.render.request, request::CommandLineLabel, warnings);
-    const bool wants_keypoints = !o.keypoints.empty();
-    const image::FrameOutputs outputs{true, !o.depth.empty() || wants_keypoints,
-                                      !o.labels.empty() || !o.mask.empty() || wants_keypoints};
+    const image::FrameOutputs outputs = dataset::OutputsFor({true, !o.depth.empty(), !o.labels.empty()}, wanted);
     frame = still ? still->Draw(session, outputs, warnings) : session.Draw(prepared, outputs);
     robot = prepared.robot;
-    if (wants_keypoints) {
-      const render::RenderSettings& s = prepared.settings;
-      keypoints = dataset::RenderedKeypointsJson(
-          *prepared.renderer, prepared.positions,
-          s.camera ? *s.camera : render::OrbitCamera(s.view, s.size.width, s.size.height), frame);
-    }
+    const render::RenderSettings& s = prepared.settings;
+    extras = dataset::MakeFrameExtras(wanted, *prepared.renderer, prepared.positions,
+                                      s.camera ? *s.camera : render::OrbitCamera(s.view, s.size.width, s.size.height),
+                                      frame);
   } catch (const Error& e) {
     PrintWarningsBeforeError(warnings);
     if (bag_model) throw Error(bag_model->Located(e.what()));
@@ -122,8 +116,8 @@ void Run(RenderCommandOptions& o) {
     plan.Write(o.labels, image::EncodeLabels(frame.labels));
     plan.Write(image::LabelNamesFile(o.labels), image::LabelNamesJson(robot->LinkNames()));
   }
-  if (!o.mask.empty()) plan.Write(o.mask, image::EncodeGray8Png(camera::RobotMask(frame.labels, o.mask_dilate)));
-  if (!o.keypoints.empty()) plan.Write(o.keypoints, keypoints);
+  if (!o.mask.empty()) plan.Write(o.mask, image::EncodeGray8Png(extras.mask));
+  if (!o.keypoints.empty()) plan.Write(o.keypoints, extras.keypoints);
   plan.Commit();
 }
 

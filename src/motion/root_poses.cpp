@@ -8,13 +8,13 @@
 namespace urdfsnap::motion {
 
 RootPoses::RootPoses(std::shared_ptr<const tf::TfBuffer> buffer, std::string fixed_frame, std::string root,
-                     double stamp_at_zero, const std::string& bag)
+                     double stamp_at_zero, const std::string& bag, const std::string& option)
     : buffer_(std::move(buffer)), fixed_frame_(std::move(fixed_frame)), root_(std::move(root)),
       bag_(bag), stamp_at_zero_(stamp_at_zero) {
   if (buffer_->Find(fixed_frame_, root_, 0)) return;
   std::string frames;
   for (const std::string& frame : buffer_->frames()) frames += (frames.empty() ? "'" : ", '") + frame + "'";
-  throw Error("--fixed-frame '" + fixed_frame_ + "': neither a link of the robot nor a frame that " + bag_ +
+  throw Error(option + " '" + fixed_frame_ + "': neither a link of the robot nor a frame that " + bag_ +
               "'s /tf and /tf_static connect to its root link '" + root_ + "' (" +
               (frames.empty() ? std::string("the bag has no TF") : "its TF frames: " + frames) + ")");
 }
