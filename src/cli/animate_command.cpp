@@ -187,7 +187,7 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   // a camera frame outside the robot (a camera's optical frame in the bag's TF) moves per frame
   if (settings.camera && !settings.camera->frame.empty() && robot.robot->FindLink(settings.camera->frame) < 0 &&
       bag) {
-    a.camera_tf.emplace(a.scene.transforms ? a.scene.transforms
+    a.camera_tf.emplace(!a.scene.transforms->frames().empty() ? a.scene.transforms
                                            : std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(o.trajectory)),
                         settings.camera->frame, robot.robot->links().front().name,
                         a.trajectory.stamp_at_zero.value_or(0), o.trajectory, "--camera-frame");
