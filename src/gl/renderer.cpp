@@ -13,6 +13,7 @@
 #include "gl/gl_context.h"
 #include "gl/gpu_mesh.h"
 #include "gl/gpu_texture.h"
+#include "gl/point_set_drawing.h"
 #include "gl/shader_program.h"
 
 namespace urdfsnap::gl {
@@ -30,7 +31,7 @@ constexpr int kMaxTextureUnits = 32;
 
 struct Transparent {
   double depth;            // squared distance from the eye, for back-to-front order
-  std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*> what;
+  std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*, const scene::PointSet*> what;
 };
 
 // GPU copies of scene data, made on first use and kept while the source object lives: entries
@@ -61,6 +62,22 @@ class GpuCache {
   std::unordered_map<const Source*, Entry> entries_;
   size_t purge_at_ = 64;
 };
+
+// Whether every point of `points` is opaque: RViz's point cloud blends (without depth writes) once
+// its alpha or any point's is below 1 (point_cloud.cpp, PointCloud::setAlpha).
+bool Opaque(const scene::PointSet& points) {
+  return std::all_of(points.colours.begin(), points.colours.end(),
+                     [](const Eigen::Vector4f& rgba) { return rgba.w() >= kOpaqueAlpha; });
+}
+
+// The mean of `points`, where a set of them is sorted among the transparent objects.
+template <typename Points>
+Eigen::Vector3d Centre(const Points& points) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& p : points) centre += p.template cast<double>();
+  if (!points.empty()) centre /= static_cast<double>(points.size());
+  return centre;
+}
 
 }  // namespace
 
@@ -195,11 +212,15 @@ struct Renderer::Impl {
         transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
       }
     }
+    for (const auto& points : scene.points) {
+      if (Opaque(points)) {
+        point_sets.Draw(points, V, P);
+      } else {
+        transparent.push_back({(Centre(points.positions) - eye).squaredNorm(), &points});
+      }
+    }
     for (const auto& lines : scene.lines) {
-      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-      for (const auto& p : lines.points) centre += p.cast<double>();
-      if (!lines.points.empty()) centre /= static_cast<double>(lines.points.size());
-      transparent.push_back({(centre - eye).squaredNorm(), &lines});
+      transparent.push_back({(Centre(lines.points) - eye).squaredNorm(), &lines});
     }
     // Ogre sorts MovableText with the transparent objects by its node's position, the anchor
     for (const auto& text_label : scene.labels) {
@@ -218,6 +239,8 @@ struct Renderer::Impl {
         DrawMesh(**item, V, PV);
       } else if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
         DrawLines(**lines, PV);
+      } else if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
+        point_sets.Draw(**points, V, P);
       } else {
         DrawLabel(*std::get<const scene::TextLabel*>(t.what), V, P);
       }
@@ -263,6 +286,7 @@ struct Renderer::Impl {
   ShaderProgram line;
   ShaderProgram text;
   ShaderProgram label;
+  PointSetDrawing point_sets;
   unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
   std::unique_ptr<Framebuffer> framebuffer;
   std::unique_ptr<LabelFramebuffer> label_framebuffer;
