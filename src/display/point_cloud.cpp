@@ -25,6 +25,7 @@ scene::PointSet CloudPointSet(const PointCloud2& cloud, const PointCloudSettings
   scene::PointSet points;
   points.style = settings.style;
   points.size.setConstant(settings.style == scene::PointSet::Style::kPoints ? settings.size_px : settings.size_m);
+  points.box_axes = X_FC.linear().cast<float>();
   const Eigen::Affine3f X = Eigen::Affine3f(X_FC.cast<float>());
   points.positions.reserve(local.size());
   for (const Eigen::Vector3f& p : local) points.positions.push_back(X * p);

@@ -106,6 +106,7 @@ void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d&
   } else {
     box_.Set("model_view_projection", MVP);
     box_.Set("size", points.size);
+    box_.Set("axes", points.box_axes);
   }
   // boxes wind counter-clockwise seen from outside and lose their far faces to culling, as Ogre's
   // default culling does; a camera-facing square needs none

@@ -1,6 +1,6 @@
 // The GL drawing of scene::PointSet in RViz's point-cloud styles (rviz/ogre_helpers/point_cloud.cpp
 // and its materials in ogre_media/materials): Points as GL points of N pixels, Squares, Flat
-// Squares and Spheres as camera-facing squares, Boxes as shaded axis-aligned cubes. The points
+// Squares and Spheres as camera-facing squares, Boxes as shaded boxes along the set's axes. The points
 // are streamed in batches, four vertices per square and 24 per box sharing one index buffer, so
 // the GPU memory stays bounded however many points a set holds. Internal to the render library;
 // needs a current GL context.

@@ -1,9 +1,10 @@
 // The drawing of scene::PointSet in RViz's five point-cloud styles: each style against its golden
 // image (tests/golden/points_STYLE.png; URDFSNAP_UPDATE_GOLDENS=1 rewrites them, look at them
 // after), and the rules of RViz's point-cloud materials by pixel: a flat square's colour, the
-// outline of Squares, the shaded disc of Spheres, the per-face lightness of Boxes, the pixel size of
-// Points, blending below alpha 1, and no points in the label image.
+// outline of Squares, the shaded disc of Spheres, the per-face lightness of Boxes and their axes,
+// the pixel size of Points, blending below alpha 1, and no points in the label image.
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -127,6 +128,16 @@ TEST_F(PointSetTest, BoxFaceTowardsPlusXHasHalfTheColour) {
 
 // a white point of 5 pixels covers 25 pixels' worth of samples (partly covered pixels at its edges
 // count by their share), within a 6 x 6 box
+// boxes turned with their set's axes (45 degrees about Z) show the -y' face (0.4) on the left and
+// the +x' face (0.5) on the right
+TEST_F(PointSetTest, BoxesFollowTheSetsAxes) {
+  PointSet points = OnePoint(Style::kBoxes, 0.4f, {1, 1, 1, 1});
+  points.box_axes = Eigen::AngleAxisf(static_cast<float>(M_PI) / 4, Eigen::Vector3f::UnitZ()).toRotationMatrix();
+  const image::Image image = Draw(points, *renderer_);
+  EXPECT_EQ(Pixel(image, kWidth / 2 - 6, kHeight / 2), (Rgb{102, 102, 102}));
+  EXPECT_EQ(Pixel(image, kWidth / 2 + 6, kHeight / 2), (Rgb{128, 128, 128}));
+}
+
 TEST_F(PointSetTest, PointsAreSquaresOfTheirSizeInPixels) {
   const image::Image image = Draw(OnePoint(Style::kPoints, 5.f, {1, 1, 1, 1}), *renderer_);
   double covered = 0;
