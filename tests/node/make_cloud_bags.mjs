@@ -10,23 +10,14 @@ import { fileURLToPath } from "node:url";
 import { ros2humble } from "@foxglove/rosmsg-msgs-common";
 import { MessageWriter } from "@foxglove/rosmsg2-serialization";
 import { nanos, writeBag } from "./bag_writing.mjs";
+import { kHeaderSections, kJointStateSchema, kSeparator, kStringSchema, kTfMessageSchema } from "./ros2_schemas.mjs";
 
 const out = process.argv[2];
 if (!out) throw new Error("usage: node make_cloud_bags.mjs OUT_DIR [POINTS]");
 const animatedPoints = Number(process.argv[3] ?? 2000);
 mkdirSync(out, { recursive: true });
 
-// the schema texts as rosbag2 stores them: the type's .msg, then each type it uses
-const kSeparator = "=".repeat(80);
-const kHeader = `${kSeparator}
-MSG: std_msgs/Header
-builtin_interfaces/Time stamp
-string frame_id
-${kSeparator}
-MSG: builtin_interfaces/Time
-int32 sec
-uint32 nanosec
-`;
+// the schemas of the display messages, and the robot's from ros2_schemas.mjs
 const schemas = {
   "sensor_msgs/msg/PointCloud2": `std_msgs/Header header
 uint32 height
@@ -37,7 +28,7 @@ uint32 point_step
 uint32 row_step
 uint8[] data
 bool is_dense
-${kHeader}${kSeparator}
+${kHeaderSections}${kSeparator}
 MSG: sensor_msgs/PointField
 uint8 INT8=1
 uint8 UINT8=2
@@ -62,36 +53,10 @@ float32 range_min
 float32 range_max
 float32[] ranges
 float32[] intensities
-${kHeader}`,
-  "std_msgs/msg/String": "string data\n",
-  "sensor_msgs/msg/JointState": `std_msgs/Header header
-string[] name
-float64[] position
-float64[] velocity
-float64[] effort
-${kHeader}`,
-  "tf2_msgs/msg/TFMessage": `geometry_msgs/TransformStamped[] transforms
-${kSeparator}
-MSG: geometry_msgs/TransformStamped
-std_msgs/Header header
-string child_frame_id
-geometry_msgs/Transform transform
-${kHeader}${kSeparator}
-MSG: geometry_msgs/Transform
-geometry_msgs/Vector3 translation
-geometry_msgs/Quaternion rotation
-${kSeparator}
-MSG: geometry_msgs/Vector3
-float64 x
-float64 y
-float64 z
-${kSeparator}
-MSG: geometry_msgs/Quaternion
-float64 x 0
-float64 y 0
-float64 z 0
-float64 w 1
-`,
+${kHeaderSections}`,
+  "std_msgs/msg/String": kStringSchema,
+  "sensor_msgs/msg/JointState": kJointStateSchema,
+  "tf2_msgs/msg/TFMessage": kTfMessageSchema,
 };
 const writers = {};
 for (const type of Object.keys(schemas)) {

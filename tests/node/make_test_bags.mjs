@@ -19,6 +19,7 @@ import { ros2humble } from "@foxglove/rosmsg-msgs-common";
 import { MessageWriter } from "@foxglove/rosmsg2-serialization";
 import zstd from "@foxglove/wasm-zstd";
 import { nanos, writeBag } from "./bag_writing.mjs";
+import { kJointStateSchema, kStringSchema, kTfMessageSchema } from "./ros2_schemas.mjs";
 
 const out = process.argv[2];
 if (!out) throw new Error("usage: node make_test_bags.mjs OUT_DIR [--large]");
@@ -29,25 +30,6 @@ await zstd.isLoaded;
 
 const kStartSec = 1700000000;
 const kJoints = ["shoulder", "elbow", "wrist"];
-
-// the schema texts rosbag2 stores (ros2msg: the type's .msg, then each type it uses after a line
-// of '=' and "MSG: pkg/Name")
-const kSeparator = "=".repeat(80);
-const kHeaderSections = `${kSeparator}
-MSG: std_msgs/Header
-builtin_interfaces/Time stamp
-string frame_id
-${kSeparator}
-MSG: builtin_interfaces/Time
-int32 sec
-uint32 nanosec
-`;
-const kJointStateSchema = `std_msgs/Header header
-string[] name
-float64[] position
-float64[] velocity
-float64[] effort
-${kHeaderSections}`;
 
 const jointStateWriter = new MessageWriter([
   ros2humble["sensor_msgs/JointState"],
@@ -298,28 +280,6 @@ writeFileSync(join(out, "bad_not_sqlite.db3"), "SQLite format 3\0but nothing els
 // transforms: a base driving +x while turning on /tf (odom -> base_link every 100 ms, x = 0.1 i m,
 // yaw = 0.1 i rad, i = 0 .. 10) with its laser on /tf_static (base_link -> laser at 0.1, 0, 0.3),
 // as MCAP with definitions and as SQLite without; and broken trees
-const kTfMessageSchema = `geometry_msgs/TransformStamped[] transforms
-${kSeparator}
-MSG: geometry_msgs/TransformStamped
-std_msgs/Header header
-string child_frame_id
-Transform transform
-${kHeaderSections}${kSeparator}
-MSG: geometry_msgs/Transform
-Vector3 translation
-Quaternion rotation
-${kSeparator}
-MSG: geometry_msgs/Vector3
-float64 x
-float64 y
-float64 z
-${kSeparator}
-MSG: geometry_msgs/Quaternion
-float64 x 0
-float64 y 0
-float64 z 0
-float64 w 1
-`;
 const tfWriter = new MessageWriter([
   ros2humble["tf2_msgs/TFMessage"], ros2humble["geometry_msgs/TransformStamped"], ros2humble["std_msgs/Header"],
   ros2humble["builtin_interfaces/Time"], ros2humble["geometry_msgs/Transform"], ros2humble["geometry_msgs/Vector3"],
@@ -362,7 +322,6 @@ for (const [name, messages] of Object.entries(tfBags)) {
 // 0.1 m radius), its head panning, odom -> base_link on /tf, its description on /robot_description
 const roverUrdf = readFileSync(join(dirname(fileURLToPath(import.meta.url)), "../../models/rover_description/urdf/rover.urdf"), "utf8");
 const stringWriter = new MessageWriter([ros2humble["std_msgs/String"]]);
-const kStringSchema = "string data\n";
 function roverLoop(seconds, hz) {
   const radius = 1, track = 0.46, wheel = 0.1;
   const channels = [
