@@ -41,7 +41,7 @@ PointSet OnePoint(Style style, float size, const Eigen::Vector4f& rgba) {
   return points;
 }
 
-image::Image Draw(const PointSet& points, Renderer& renderer) {
+image::Image Draw(const PointSet& points, SceneRenderer& renderer) {
   scene::Scene scene;
   scene.points.push_back(points);
   return renderer.Render(scene, FrontView(), kWidth, kHeight).colour;
