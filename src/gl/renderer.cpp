@@ -13,6 +13,7 @@
 #include "gl/gl_context.h"
 #include "gl/gpu_mesh.h"
 #include "gl/gpu_texture.h"
+#include "gl/point_set_drawing.h"
 #include "gl/shader_program.h"
 
 namespace urdfsnap::gl {
@@ -30,7 +31,7 @@ constexpr int kMaxTextureUnits = 32;
 
 struct Transparent {
   double depth;            // squared distance from the eye, for back-to-front order
-  std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*,
+  std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*, const scene::PointSet*,
                const scene::FlatTriangles*>
       what;
 };
@@ -100,15 +101,22 @@ std::vector<float> RibbonVertices(const scene::LineSet& lines, const Eigen::Vect
   return floats;
 }
 
-bool IsOpaque(const scene::FlatTriangles& triangles) {
-  return std::all_of(triangles.colours.begin(), triangles.colours.end(),
-                     [](const Eigen::Vector4f& c) { return c.w() >= kOpaqueAlpha; });
+// Whether every colour of `set` (a PointSet, FlatTriangles) is opaque: RViz's point cloud blends
+// (without depth writes) once its alpha or any point's is below 1 (point_cloud.cpp,
+// PointCloud::setAlpha), and so does a triangle list whose alpha is (triangle_list_marker.cpp).
+template <typename Set>
+bool Opaque(const Set& set) {
+  return std::all_of(set.colours.begin(), set.colours.end(),
+                     [](const Eigen::Vector4f& rgba) { return rgba.w() >= kOpaqueAlpha; });
 }
 
-Eigen::Vector3d Centre(const std::vector<Eigen::Vector3f>& points) {
+// The mean of `points`, where a set of them is sorted among the transparent objects.
+template <typename Points>
+Eigen::Vector3d Centre(const Points& points) {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const auto& p : points) centre += p.cast<double>();
-  return points.empty() ? centre : centre / static_cast<double>(points.size());
+  for (const auto& p : points) centre += p.template cast<double>();
+  if (!points.empty()) centre /= static_cast<double>(points.size());
+  return centre;
 }
 
 }  // namespace
@@ -258,8 +266,15 @@ struct Renderer::Impl {
         transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
       }
     }
+    for (const auto& points : scene.points) {
+      if (Opaque(points)) {
+        point_sets.Draw(points, V, P);
+      } else {
+        transparent.push_back({(Centre(points.positions) - eye).squaredNorm(), &points});
+      }
+    }
     for (const auto& triangles : scene.triangles) {
-      if (IsOpaque(triangles)) {
+      if (Opaque(triangles)) {
         DrawTriangles(triangles, PV);
       } else {
         transparent.push_back({(Centre(triangles.positions) - eye).squaredNorm(), &triangles});
@@ -285,6 +300,8 @@ struct Renderer::Impl {
         DrawMesh(**item, V, PV);
       } else if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
         DrawLines(**lines, PV, eye);
+      } else if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
+        point_sets.Draw(**points, V, P);
       } else if (const auto* triangles = std::get_if<const scene::FlatTriangles*>(&t.what)) {
         DrawTriangles(**triangles, PV);
       } else {
@@ -332,6 +349,7 @@ struct Renderer::Impl {
   ShaderProgram line;
   ShaderProgram text;
   ShaderProgram label;
+  PointSetDrawing point_sets;
   unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
   std::unique_ptr<Framebuffer> framebuffer;
   std::unique_ptr<LabelFramebuffer> label_framebuffer;

@@ -67,6 +67,9 @@ struct PointSet {
   std::vector<Eigen::Vector3f> positions;  // in the fixed frame
   std::vector<Eigen::Vector4f> colours;    // one rgba per position
   Eigen::Vector3f size{0.01f, 0.01f, 0.01f};
+  // Boxes: the axes the boxes are aligned with, in the fixed frame (those of the cloud's or the
+  // marker's frame: RViz's box.geom builds them in the point cloud's scene node)
+  Eigen::Matrix3f box_axes = Eigen::Matrix3f::Identity();
 };
 
 struct Scene {
