@@ -69,12 +69,17 @@ void AddLineMarker(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene&
   if (!lines.points.empty()) scene.lines.push_back(std::move(lines));
 }
 
-// points_marker.cpp: POINTS are camera-facing squares of scale.x by scale.y metres with RViz's
-// Squares material (PointCloud::RM_SQUARES).
-void AddPointsMarker(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
+// points_marker.cpp: POINTS, CUBE_LIST and SPHERE_LIST are RViz point clouds in the marker's
+// frame: POINTS camera-facing squares of scale.x by scale.y metres with RViz's Squares material
+// (RM_SQUARES), the lists boxes (turned with the marker) and spheres of size scale (RM_BOXES,
+// RM_SPHERES).
+void AddPointList(const Marker& m, const Eigen::Isometry3d& X_FM, scene::PointSet::Style style,
+                  scene::Scene& scene) {
   scene::PointSet points;
-  points.style = scene::PointSet::Style::kSquares;
-  points.size = Eigen::Vector3f(static_cast<float>(m.scale.x()), static_cast<float>(m.scale.y()), 0);
+  points.style = style;
+  points.size = m.scale.cast<float>();
+  if (style == scene::PointSet::Style::kSquares) points.size.z() = 0;
+  points.box_axes = X_FM.linear().cast<float>();
   const Eigen::Affine3f X = X_FM.cast<float>();
   points.positions.reserve(m.points.size());
   points.colours.reserve(m.points.size());
@@ -83,16 +88,6 @@ void AddPointsMarker(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scen
     points.colours.push_back(PointColour(m, i));
   }
   if (!points.positions.empty()) scene.points.push_back(std::move(points));
-}
-
-// points_marker.cpp: CUBE_LIST and SPHERE_LIST are RViz point clouds of boxes and spheres of
-// size scale, lit, in the marker's frame (so boxes turn with the pose).
-void AddSolidList(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
-  const auto& mesh = m.type == Marker::kCubeList ? scene::UnitBoxMesh() : scene::UnitSphereMesh();
-  for (size_t i = 0; i < m.points.size(); ++i) {
-    AddShape(mesh, X_FM * Eigen::Translation3d(m.points[i].cast<double>()) * Eigen::Scaling(m.scale),
-             PointColour(m, i), scene);
-  }
 }
 
 // triangle_list_marker.cpp: every three points one triangle, the points scaled by scale, with
@@ -195,8 +190,9 @@ void AddMarker(const Marker& m, const Eigen::Isometry3d& X_FH, const MarkerResou
     case Marker::kSphere: AddShape(scene::UnitSphereMesh(), X_FS, m.colour, scene); break;
     case Marker::kCylinder: AddShape(scene::UnitCylinderMesh(), X_FS, m.colour, scene); break;
     case Marker::kLineStrip: case Marker::kLineList: AddLineMarker(m, X_FM, scene); break;
-    case Marker::kCubeList: case Marker::kSphereList: AddSolidList(m, X_FM, scene); break;
-    case Marker::kPoints: AddPointsMarker(m, X_FM, scene); break;
+    case Marker::kCubeList: AddPointList(m, X_FM, scene::PointSet::Style::kBoxes, scene); break;
+    case Marker::kSphereList: AddPointList(m, X_FM, scene::PointSet::Style::kSpheres, scene); break;
+    case Marker::kPoints: AddPointList(m, X_FM, scene::PointSet::Style::kSquares, scene); break;
     case Marker::kTextViewFacing: AddText(m, X_FM, scene); break;
     case Marker::kMeshResource: AddMesh(m, X_FM, resources, scene); break;
     case Marker::kTriangleList: AddTriangleList(m, X_FM, scene); break;

@@ -106,7 +106,7 @@ TEST(MarkerShapesTest, LinesAreRibbonsOfScaleXWithPerPointColours) {
   EXPECT_EQ(scene.lines[0].colours[3], list.colour);
 }
 
-TEST(MarkerShapesTest, PointsAreSquaresInMetresAndListsAreSolids) {
+TEST(MarkerShapesTest, PointsAreSquaresInMetresAndListsAreBoxesAndSpheres) {
   Marker points = Make(Marker::kPoints);
   points.points = {{1, 0, 0}, {2, 0, 0}};
   Eigen::Isometry3d X_FH = Eigen::Isometry3d::Identity();
@@ -116,14 +116,20 @@ TEST(MarkerShapesTest, PointsAreSquaresInMetresAndListsAreSolids) {
   EXPECT_EQ(scene.points[0].style, scene::PointSet::Style::kSquares);
   EXPECT_EQ(scene.points[0].size, Eigen::Vector3f(1, 0.1f, 0));
   EXPECT_EQ(scene.points[0].positions[1], Eigen::Vector3f(2, 0, 1));
+  EXPECT_EQ(scene.points[0].colours[1], points.colour);
 
-  for (const int type : {Marker::kCubeList, Marker::kSphereList}) {
+  X_FH.linear() = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  for (const auto& [type, style] : {std::pair{Marker::kCubeList, scene::PointSet::Style::kBoxes},
+                                    std::pair{Marker::kSphereList, scene::PointSet::Style::kSpheres}}) {
     Marker list = Make(type);
     list.points = points.points;
-    scene = Draw(list);
-    ASSERT_EQ(scene.items.size(), 2u);
-    EXPECT_TRUE(scene.items[1].X_FG.linear().isApprox(Eigen::Vector3d(1, 0.1, 0.2).asDiagonal().toDenseMatrix()));
-    EXPECT_TRUE(scene.items[1].X_FG.translation().isApprox(Eigen::Vector3d(2, 0, 0)));
+    list.colours = {{1, 0, 0, 0.5f}, {0, 1, 0, 1}};
+    scene = Draw(list, X_FH);
+    ASSERT_EQ(scene.points.size(), 1u);
+    EXPECT_EQ(scene.points[0].style, style);
+    EXPECT_EQ(scene.points[0].size, Eigen::Vector3f(1, 0.1f, 0.2f));
+    EXPECT_TRUE(scene.points[0].box_axes.isApprox(X_FH.linear().cast<float>()));
+    EXPECT_EQ(scene.points[0].colours[0], Eigen::Vector4f(1, 0, 0, 0.5f));
   }
 }
 
