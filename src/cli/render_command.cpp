@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "cli/display_options.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
@@ -15,6 +16,7 @@
 #include "image/depth_label_files.h"
 #include "image/png_writer.h"
 #include "gl/gl_context.h"
+#include "request/display_frame.h"
 #include "request/render_session.h"
 #include "request/request_inputs.h"
 
@@ -29,6 +31,7 @@ struct RenderCommandOptions {
   std::string mask, keypoints;  // optional robot mask and keypoint files
   int mask_dilate = 0;
   RenderOptions render;
+  DisplayOptions displays;
   GlOptions gl_options;
 };
 
@@ -78,8 +81,16 @@ void Run(RenderCommandOptions& o) {
   try {
     const request::Prepared prepared = session.Prepare(o.render.request, request::CommandLineLabel, warnings);
     const bool wants_keypoints = !o.keypoints.empty();
-    frame = session.Draw(prepared, {true, !o.depth.empty() || wants_keypoints,
-                                    !o.labels.empty() || !o.mask.empty() || wants_keypoints});
+    const image::FrameOutputs outputs{true, !o.depth.empty() || wants_keypoints,
+                                      !o.labels.empty() || !o.mask.empty() || wants_keypoints};
+    if (o.displays.empty() && prepared.settings.displays.empty()) {
+      frame = session.Draw(prepared, outputs);
+    } else {
+      const scene::SceneOptions& scene = prepared.settings.scene;
+      const display::DisplaySet displays = o.displays.MakeDisplays(
+          prepared.settings.displays, scene.fixed_frame, request::MarkerResourcesFor(scene), warnings);
+      frame = request::DrawWithDisplays(session, prepared, displays, 0, {}, warnings, outputs);
+    }
     robot = prepared.robot;
     if (wants_keypoints) {
       const render::RenderSettings& s = prepared.settings;
@@ -131,6 +142,7 @@ void AddRenderCommand(CLI::App& app) {
                   "camera (OpenCV's projectPoints convention, distortion included), depth, whether "
                   "it is in the image and visible, and the camera (K, D, pose) (default: none)");
   o->render.AddOptions(*cmd);
+  o->displays.AddOptions(*cmd);
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
 }
