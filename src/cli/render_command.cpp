@@ -2,7 +2,11 @@
 // options come from request::TextOptions/FlagOptions, the table snapshot suites read as well.
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <utility>
 
+#include "cli/bag_model.h"
+#include "cli/bag_still.h"
 #include "cli/command.h"
 #include "cli/display_options.h"
 #include "cli/gl_options.h"
@@ -15,6 +19,7 @@
 #include "dataset/rendered_keypoints.h"
 #include "image/depth_label_files.h"
 #include "image/png_writer.h"
+#include "motion/trajectory_file.h"
 #include "gl/gl_context.h"
 #include "request/display_frame.h"
 #include "request/render_session.h"
@@ -32,6 +37,7 @@ struct RenderCommandOptions {
   int mask_dilate = 0;
   RenderOptions render;
   DisplayOptions displays;
+  BagStillOptions bag;   // --bag, --at: a moment of a recording
   GlOptions gl_options;
 };
 
@@ -50,7 +56,14 @@ void CheckExtension(const std::string& path, const std::string& extension, const
 void Run(RenderCommandOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
+  // a recording: MODEL may be the bag itself, and without a MODEL the bag's robot description
+  if (o.bag.bag.empty() && !o.model.path.empty() && motion::IsBag(o.model.path)) o.bag.bag = std::exchange(o.model.path, "");
+  if (o.bag.bag.empty() && !o.bag.at.empty()) throw Error("--at: a moment of a recording; give the recording with --bag");
+  if (o.bag.bag.empty() && o.model.path.empty()) throw Error("render: give MODEL (a URDF or xacro file) or --bag");
+  std::optional<BagModel> bag_model;
+  if (o.model.path.empty()) bag_model.emplace(o.bag.bag, o.bag.description_topic);
   o.render.request.model = o.model.ToRequest();
+  if (bag_model) o.render.request.model.path = bag_model->path();
   o.render.ParseJointWords();
   if (!o.depth.empty()) image::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) image::CheckLabelsPath(o.labels, "--labels");
@@ -60,9 +73,10 @@ void Run(RenderCommandOptions& o) {
   }
   if (!o.keypoints.empty()) CheckExtension(o.keypoints, ".json", "--keypoints");
   // every output checked, and its folder made, before drawing; all written, or none
-  const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
+  const std::string output = o.output.empty() ? DefaultOutput(bag_model ? o.bag.bag : o.model.path) : o.output;
   OutputPlan plan;
   request::AddRequestInputs(plan, o.render.request);
+  if (!o.bag.bag.empty()) plan.AddInput(o.bag.bag, "--bag");
   // (the default output/ folder is made; a folder given must exist)
   plan.AddFile(output, o.output.empty() ? "the output" : "-o", o.output.empty());
   if (!o.depth.empty()) plan.AddFile(o.depth, "--depth", false);
@@ -79,17 +93,24 @@ void Run(RenderCommandOptions& o) {
   std::shared_ptr<const model::Robot> robot;
   std::string keypoints;
   try {
-    const request::Prepared prepared = session.Prepare(o.render.request, request::CommandLineLabel, warnings);
+    std::optional<BagStill> still;
+    if (!o.bag.bag.empty()) still.emplace(o.bag, session, o.render.request, warnings);
+    const request::Prepared prepared =
+        still ? still->prepared() : session.Prepare(o.render.request, request::CommandLineLabel, warnings);
     const bool wants_keypoints = !o.keypoints.empty();
     const image::FrameOutputs outputs{true, !o.depth.empty() || wants_keypoints,
                                       !o.labels.empty() || !o.mask.empty() || wants_keypoints};
     if (o.displays.empty() && prepared.settings.displays.empty()) {
-      frame = session.Draw(prepared, outputs);
+      frame = still ? still->Draw(session, outputs, warnings) : session.Draw(prepared, outputs);
     } else {
       const scene::SceneOptions& scene = prepared.settings.scene;
-      const display::DisplaySet displays = o.displays.MakeDisplays(
+      display::DisplaySet displays = o.displays.MakeDisplays(
           prepared.settings.displays, scene.fixed_frame, request::MarkerResourcesFor(scene), warnings);
-      frame = request::DrawWithDisplays(session, prepared, displays, 0, {}, warnings, outputs);
+      // a recording's displays show its messages up to the moment, placed through its TF
+      const std::int64_t time_ns = still ? still->StampNanoseconds() : 0;
+      if (still) display::ReadBagDisplayMessages(o.bag.bag, time_ns, displays, warnings);
+      frame = request::DrawWithDisplays(session, prepared, displays, time_ns,
+                                        still ? still->Frames() : display::FrameLookup{}, warnings, outputs);
     }
     robot = prepared.robot;
     if (wants_keypoints) {
@@ -98,6 +119,10 @@ void Run(RenderCommandOptions& o) {
           *prepared.renderer, prepared.positions,
           s.camera ? *s.camera : render::OrbitCamera(s.view, s.size.width, s.size.height), frame);
     }
+  } catch (const Error& e) {
+    PrintWarningsBeforeError(warnings);
+    if (bag_model) throw Error(bag_model->Located(e.what()));
+    throw;
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -121,7 +146,7 @@ void Run(RenderCommandOptions& o) {
 void AddRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a robot pose to a PNG image, as RViz shows it");
-  o->model.AddOptions(*cmd);
+  o->model.AddOptions(*cmd, true);
   cmd->add_option("-o,--output", o->output, "PNG file to write (default output/<model>.png)");
   cmd->add_option("--depth", o->depth,
                   "also write the robot's depth image from the same view: FILE.png (16-bit, mm along "
@@ -143,6 +168,7 @@ void AddRenderCommand(CLI::App& app) {
                   "it is in the image and visible, and the camera (K, D, pose) (default: none)");
   o->render.AddOptions(*cmd);
   o->displays.AddOptions(*cmd);
+  o->bag.AddOptions(*cmd);
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
 }

@@ -16,6 +16,7 @@ namespace urdfsnap::request {
 struct RvizConfig {
   scene::SceneOptions scene;
   scene::OrbitView view;
+  std::string target_frame;   // the orbit view's Target Frame; "" for <Fixed Frame>
   // the enabled Marker, MarkerArray, Path, PoseArray and Axes displays (rviz_displays.cpp)
   std::vector<display::DisplaySettings> displays;
 };
@@ -28,7 +29,7 @@ struct RvizConfig {
 //  - the TF display (enabled, Show Names, Show Axes, Show Arrows, Marker Scale);
 //  - every enabled Marker, MarkerArray, Path, PoseArray and Axes display (rviz_displays.cpp);
 //  - Views/Current when it is an rviz/Orbit view (Distance, Yaw and Pitch in radians, Focal Point
-//    in metres, Field of View in radians, Near Clip Distance in metres).
+//    in metres, Field of View in radians, Near Clip Distance in metres, Target Frame).
 // Keys that are missing keep the defaults. Numbers are limited to the ranges RViz's properties
 // allow. Displays in rviz/Group displays count as well. Adds one warning per display class that
 // urdfsnap does not draw, and one for a current view that is not rviz/Orbit (the default view
