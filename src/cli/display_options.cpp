@@ -21,7 +21,8 @@ std::pair<std::string, std::string> SplitLast(const std::string& value, const st
 void DisplayOptions::AddOptions(CLI::App& cmd) {
   cmd.add_option("--display", displays,
                  "add an RViz display with RViz's defaults: CLASS:TOPIC, CLASS one of Marker, "
-                 "MarkerArray, Path, PoseArray, Axes (Axes: no topic, e.g. Axes:); repeatable")
+                 "MarkerArray, Path, PoseArray, Axes, PointCloud2, LaserScan (Axes: no topic, e.g. Axes:); "
+                 "repeatable")
       ->take_all();
   cmd.add_option("--message", messages,
                  "draw a message file: FILE:TYPE, FILE as `ros2 topic echo` prints a message (the "

@@ -1,8 +1,8 @@
 // The common shape of an RViz display in urdfsnap: it takes the messages of its topic as they are
 // received, keeping what RViz would keep, and adds what it shows at a time to a scene in the fixed
 // frame, looking each message's frame up through TF at the message's stamp as RViz's
-// FrameManager does. Markers, Path, PoseArray and Axes are displays; PointCloud2 and LaserScan
-// plug in the same way (display/make_display.h).
+// FrameManager does. Markers, Path, PoseArray, Axes, PointCloud2 and LaserScan are displays
+// (display/make_display.h).
 #pragma once
 
 #include <cstdint>

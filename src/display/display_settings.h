@@ -1,7 +1,7 @@
 // The typed settings of each RViz display urdfsnap draws, with RViz 1.14's defaults (the
 // constructors of src/rviz/default_plugin/*_display.cpp). A .rviz config, --display and the C++
-// API fill them; display/make_display.h turns them into a display. A new display type (the point
-// cloud ones) adds its settings struct to DisplayKind and its class to MakeDisplay.
+// API fill them; display/make_display.h turns them into a display. A new display type adds its
+// settings struct to DisplayKind and its class to MakeDisplay.
 #pragma once
 
 #include <map>
@@ -9,6 +9,8 @@
 #include <variant>
 
 #include <Eigen/Core>
+
+#include "display/point_cloud_settings.h"
 
 namespace urdfsnap::display {
 
@@ -62,7 +64,16 @@ struct AxesSettings {
   bool operator==(const AxesSettings&) const = default;
 };
 
-using DisplayKind = std::variant<MarkerSettings, PathSettings, PoseArraySettings, AxesSettings>;
+// point_cloud2_display.cpp and laser_scan_display.cpp: the same point-cloud settings
+// (point_cloud_common.cpp), for PointCloud2 messages or LaserScans.
+struct CloudSettings {
+  bool laser_scan = false;
+  PointCloudSettings points;
+
+  bool operator==(const CloudSettings&) const = default;
+};
+
+using DisplayKind = std::variant<MarkerSettings, PathSettings, PoseArraySettings, AxesSettings, CloudSettings>;
 
 // One display as a config lists it.
 struct DisplaySettings {

@@ -9,6 +9,7 @@
 #include "display/axes_display.h"
 #include "display/marker_display.h"
 #include "display/path_display.h"
+#include "display/point_cloud_display.h"
 #include "display/pose_array_display.h"
 
 namespace urdfsnap::display {
@@ -24,13 +25,15 @@ struct Known {
   const char* type;
   DisplayKind defaults;
 };
-const std::array<Known, 5>& KnownDisplays() {
-  static const std::array<Known, 5> known = {{
+const std::array<Known, 7>& KnownDisplays() {
+  static const std::array<Known, 7> known = {{
       {"Marker", "visualization_msgs/Marker", MarkerSettings{false, {}}},
       {"MarkerArray", "visualization_msgs/MarkerArray", MarkerSettings{true, {}}},
       {"Path", "nav_msgs/Path", PathSettings{}},
       {"PoseArray", "geometry_msgs/PoseArray", PoseArraySettings{}},
       {"Axes", "", AxesSettings{}},
+      {"PointCloud2", "sensor_msgs/PointCloud2", CloudSettings{false, {}}},
+      {"LaserScan", "sensor_msgs/LaserScan", CloudSettings{true, {}}},
   }};
   return known;
 }
@@ -56,8 +59,8 @@ DisplaySettings DefaultDisplayForType(const std::string& type, const std::string
     if (short_type == known.type) return {known.class_name, topic, known.defaults};
   }
   throw Error("no display draws messages of type '" + type +
-              "'; urdfsnap draws visualization_msgs/msg/Marker and MarkerArray, nav_msgs/msg/Path and "
-              "geometry_msgs/msg/PoseArray");
+              "'; urdfsnap draws visualization_msgs/msg/Marker and MarkerArray, nav_msgs/msg/Path, "
+              "geometry_msgs/msg/PoseArray, sensor_msgs/msg/PointCloud2 and LaserScan");
 }
 
 std::unique_ptr<Display> MakeDisplay(const DisplaySettings& settings, const std::string& fixed_frame,
@@ -75,6 +78,9 @@ std::unique_ptr<Display> MakeDisplay(const DisplaySettings& settings, const std:
           },
           [&](const AxesSettings& s) -> std::unique_ptr<Display> {
             return std::make_unique<AxesDisplay>(s, fixed_frame);
+          },
+          [&](const CloudSettings& s) -> std::unique_ptr<Display> {
+            return std::make_unique<PointCloudDisplay>(settings.topic, s);
           }},
       settings.kind);
 }

@@ -1,5 +1,5 @@
 // The one place a display's settings become a display: each settings type of DisplayKind maps to
-// its class here (PointCloud2 and LaserScan join by adding theirs).
+// its class here.
 #pragma once
 
 #include <memory>
@@ -11,7 +11,8 @@
 namespace urdfsnap::display {
 
 // A display of RViz class `class_name` ("MarkerArray", "rviz/Path", "rviz_default_plugins/PoseArray",
-// ...: Marker, MarkerArray, Path, PoseArray, Axes) on `topic` with RViz's defaults (--display).
+// ...: Marker, MarkerArray, Path, PoseArray, Axes, PointCloud2, LaserScan) on `topic` with RViz's
+// defaults (--display).
 // Throws urdfsnap::Error naming the classes known for another name.
 DisplaySettings DefaultDisplay(const std::string& class_name, const std::string& topic);
 

@@ -36,7 +36,12 @@ PointCloud2 DecodePointCloud2(const bag::MessageValue& value) {
   cloud.is_bigendian = value["is_bigendian"].number != 0;
   cloud.point_step = Uint32(value["point_step"]);
   cloud.row_step = Uint32(value["row_step"]);
-  cloud.data = value["data"].bytes;
+  const bag::MessageValue& data = value["data"];
+  cloud.data = data.bytes;
+  if (cloud.data.empty()) {   // a message file's YAML gives the bytes as numbers
+    cloud.data.reserve(data.items.size());
+    for (const bag::MessageValue& byte : data.items) cloud.data.push_back(static_cast<std::uint8_t>(byte.number));
+  }
   cloud.is_dense = value["is_dense"].number != 0;
   return cloud;
 }

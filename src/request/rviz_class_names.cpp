@@ -9,7 +9,7 @@
 namespace urdfsnap::request {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, DisplayClass>, 18> kDisplayClasses = {{
+constexpr std::array<std::pair<std::string_view, DisplayClass>, 22> kDisplayClasses = {{
     {"rviz/Grid", DisplayClass::kGrid},
     {"rviz_default_plugins/Grid", DisplayClass::kGrid},
     {"rviz/RobotModel", DisplayClass::kRobotModel},
@@ -28,6 +28,10 @@ constexpr std::array<std::pair<std::string_view, DisplayClass>, 18> kDisplayClas
     {"rviz_default_plugins/PoseArray", DisplayClass::kPoseArray},
     {"rviz/Axes", DisplayClass::kAxes},
     {"rviz_default_plugins/Axes", DisplayClass::kAxes},
+    {"rviz/PointCloud2", DisplayClass::kPointCloud2},
+    {"rviz_default_plugins/PointCloud2", DisplayClass::kPointCloud2},
+    {"rviz/LaserScan", DisplayClass::kLaserScan},
+    {"rviz_default_plugins/LaserScan", DisplayClass::kLaserScan},
 }};
 
 }  // namespace

@@ -19,6 +19,8 @@ enum class DisplayClass {
   kPath,        // rviz/Path, rviz_default_plugins/Path
   kPoseArray,   // rviz/PoseArray, rviz_default_plugins/PoseArray
   kAxes,        // rviz/Axes, rviz_default_plugins/Axes
+  kPointCloud2, // rviz/PointCloud2, rviz_default_plugins/PointCloud2
+  kLaserScan,   // rviz/LaserScan, rviz_default_plugins/LaserScan
   kOther,       // anything else: a display urdfsnap does not draw
 };
 

@@ -70,7 +70,8 @@ void CollectDisplays(const Section& parent, bool parent_enabled, Displays& displ
         CollectDisplays(section, display.enabled, displays, warnings);
         break;
       case DisplayClass::kMarker: case DisplayClass::kMarkerArray: case DisplayClass::kPath:
-      case DisplayClass::kPoseArray: case DisplayClass::kAxes:
+      case DisplayClass::kPoseArray: case DisplayClass::kAxes: case DisplayClass::kPointCloud2:
+      case DisplayClass::kLaserScan:
         if (display.enabled) {
           displays.messages.push_back(ReadMessageDisplay(ClassifyDisplay(class_id), section, name, warnings));
         }

@@ -17,7 +17,8 @@ struct RvizConfig {
   scene::SceneOptions scene;
   scene::OrbitView view;
   std::string target_frame;   // the orbit view's Target Frame; "" for <Fixed Frame>
-  // the enabled Marker, MarkerArray, Path, PoseArray and Axes displays (rviz_displays.cpp)
+  // the enabled Marker, MarkerArray, Path, PoseArray, Axes, PointCloud2 and LaserScan displays
+  // (rviz_displays.cpp)
   std::vector<display::DisplaySettings> displays;
 };
 
@@ -27,7 +28,8 @@ struct RvizConfig {
 //    without an enabled Grid display turns the grid off;
 //  - the RobotModel display (Alpha, Visual Enabled, Collision Enabled; disabled hides the robot);
 //  - the TF display (enabled, Show Names, Show Axes, Show Arrows, Marker Scale);
-//  - every enabled Marker, MarkerArray, Path, PoseArray and Axes display (rviz_displays.cpp);
+//  - every enabled Marker, MarkerArray, Path, PoseArray, Axes, PointCloud2 and LaserScan display
+//    (rviz_displays.cpp);
 //  - Views/Current when it is an rviz/Orbit view (Distance, Yaw and Pitch in radians, Focal Point
 //    in metres, Field of View in radians, Near Clip Distance in metres, Target Frame).
 // Keys that are missing keep the defaults. Numbers are limited to the ranges RViz's properties

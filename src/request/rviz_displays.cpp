@@ -3,6 +3,7 @@
 // and "Arrow 3D ..." properties).
 #include "request/internal/rviz_displays.h"
 
+#include "request/internal/rviz_point_clouds.h"
 #include "request/internal/rviz_properties.h"
 
 namespace urdfsnap::request {
@@ -105,7 +106,8 @@ display::AxesSettings ReadAxes(const YamlSection& section) {
 
 bool IsMessageDisplay(DisplayClass kind) {
   return kind == DisplayClass::kMarker || kind == DisplayClass::kMarkerArray || kind == DisplayClass::kPath ||
-         kind == DisplayClass::kPoseArray || kind == DisplayClass::kAxes;
+         kind == DisplayClass::kPoseArray || kind == DisplayClass::kAxes || kind == DisplayClass::kPointCloud2 ||
+         kind == DisplayClass::kLaserScan;
 }
 
 display::DisplaySettings ReadMessageDisplay(DisplayClass kind, const YamlSection& section,
@@ -119,6 +121,9 @@ display::DisplaySettings ReadMessageDisplay(DisplayClass kind, const YamlSection
   if (kind == DisplayClass::kPath) settings.kind = ReadPath(section, warnings);
   if (kind == DisplayClass::kPoseArray) settings.kind = ReadPoseArray(section);
   if (kind == DisplayClass::kAxes) settings.kind = ReadAxes(section);
+  if (kind == DisplayClass::kPointCloud2 || kind == DisplayClass::kLaserScan) {
+    settings.kind = display::CloudSettings{kind == DisplayClass::kLaserScan, ReadPointCloudSettings(section, warnings)};
+  }
   return settings;
 }
 

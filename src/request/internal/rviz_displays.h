@@ -1,6 +1,6 @@
-// The message displays of a `.rviz` file (Marker, MarkerArray, Path, PoseArray, Axes) read into
-// display/display_settings.h's typed settings, RViz 1.14's property names and RViz 2's
-// (rviz_default_plugins) alike.
+// The message displays of a `.rviz` file (Marker, MarkerArray, Path, PoseArray, Axes, PointCloud2,
+// LaserScan) read into display/display_settings.h's typed settings, RViz 1.14's property names and
+// RViz 2's (rviz_default_plugins) alike.
 #pragma once
 
 #include "common/internal/yaml_section.h"
