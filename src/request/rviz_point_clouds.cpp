@@ -72,7 +72,7 @@ display::PointCloudSettings ReadPointCloudSettings(const YamlSection& section, W
   // AxisColor: Min Value and Max Value are saved under Autocompute Value Bounds
   ReadChoice<int, 3>(section, "Axis", {{{"X", 0}, {"Y", 1}, {"Z", 2}}}, s.axis);
   section.ReadBool("Autocompute Value Bounds", s.auto_axis_bounds);
-  if (section.Entry("Autocompute Value Bounds").IsMap()) {
+  if (const YAML::Node node = section.Entry("Autocompute Value Bounds"); node.IsDefined() && node.IsMap()) {
     const auto bounds = section.Child("Autocompute Value Bounds", section.name() + ": 'Autocompute Value Bounds'");
     ReadFloat(*bounds, "Min Value", s.min_value);
     ReadFloat(*bounds, "Max Value", s.max_value);

@@ -413,7 +413,7 @@ TEST_F(RvizConfigTest, UnknownDisplayClassesWarnOncePerClass) {
     - Class: rviz/Map
       Enabled: true
       Name: Map B
-    - Class: rviz/PointCloud2
+    - Class: rviz/Image
       Enabled: true
       Name: Cloud
   Views:
@@ -423,7 +423,7 @@ TEST_F(RvizConfigTest, UnknownDisplayClassesWarnOncePerClass) {
   EXPECT_THAT(warnings.messages(),
               ElementsAre(path + ": skipped display class 'rviz/Map', which urdfsnap "
                                  "does not draw",
-                          path + ": skipped display class 'rviz/PointCloud2', which urdfsnap "
+                          path + ": skipped display class 'rviz/Image', which urdfsnap "
                                  "does not draw"));
   EXPECT_FALSE(config.scene.grid.enabled);
 }
@@ -567,7 +567,7 @@ Visualization Manager:
             {}
       Update Interval: 0
       Value: true
-    - Class: rviz_default_plugins/LaserScan
+    - Class: rviz_default_plugins/Image
       Enabled: true
       Name: LaserScan
   Enabled: true
@@ -629,14 +629,14 @@ TEST_F(RvizConfigTest, ReadsRviz2ConfigsAsRviz1Ones) {
   EXPECT_TRUE(config.view.focal.isApprox(Eigen::Vector3d(-0.0457618, -0.0705851, 0.4973494), 1e-6));
   EXPECT_NEAR(config.view.near_clip, 0.01, 1e-9);
   EXPECT_THAT(warnings.messages(),
-              ElementsAre(path + ": skipped display class 'rviz_default_plugins/LaserScan', which "
+              ElementsAre(path + ": skipped display class 'rviz_default_plugins/Image', which "
                                  "urdfsnap does not draw"));
 }
 
 TEST_F(RvizConfigTest, NothingUsableIsAnErrorNamingWhatWasSkipped) {
   EXPECT_EQ(ErrorFor(R"(Visualization Manager:
   Displays:
-    - Class: rviz_default_plugins/LaserScan
+    - Class: rviz_default_plugins/Image
       Name: Scan
     - Class: rviz_default_plugins/Map
       Name: Map
@@ -645,7 +645,7 @@ TEST_F(RvizConfigTest, NothingUsableIsAnErrorNamingWhatWasSkipped) {
       Class: rviz_default_plugins/TopDownOrtho
 )"),
             path + ": nothing urdfsnap can use: no Grid, RobotModel, TF or message display and "
-                   "no Orbit view; skipped display classes 'rviz_default_plugins/LaserScan', "
+                   "no Orbit view; skipped display classes 'rviz_default_plugins/Image', "
                    "'rviz_default_plugins/Map'");
   EXPECT_EQ(ErrorFor("Visualization Manager:\n  Displays: []\n"),
             path + ": nothing urdfsnap can use: no Grid, RobotModel, TF or message display and "

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
+#include "request/internal/rviz_properties.h"
 
 namespace urdfsnap::request {
 namespace {
