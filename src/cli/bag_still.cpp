@@ -2,6 +2,7 @@
 // PrepareBagScene and fitted by AnimationFrames, drawn with its TF display.
 #include "cli/bag_still.h"
 
+#include <cmath>
 #include <utility>
 
 #include "common/error.h"
@@ -49,6 +50,22 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
                   warnings, scene_.Additions());
   prepared.positions = frames_->Positions(0, warnings);
   prepared.settings.view = frames_->View(0);
+}
+
+std::int64_t BagStill::StampNanoseconds() const {
+  return static_cast<std::int64_t>(std::llround((trajectory_.stamp_at_zero.value_or(0) + plan_.trajectory_start) * 1e9));
+}
+
+display::FrameLookup BagStill::Frames() const {
+  const std::shared_ptr<const tf::TfBuffer> transforms = scene_.transforms;
+  if (!transforms) return {};
+  const request::Prepared& p = scene_.robot;
+  const std::string fixed = p.settings.scene.fixed_frame.empty() ? p.robot->links().front().name : p.settings.scene.fixed_frame;
+  return [transforms, fixed](const std::string& frame, std::int64_t time_ns) -> std::optional<Eigen::Isometry3d> {
+    const std::optional<tf::Lookup> found = transforms->Find(fixed, frame, time_ns);
+    if (!found) return std::nullopt;
+    return found->X_TS;
+  };
 }
 
 image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameOutputs& outputs,

@@ -15,6 +15,7 @@
 #include "bag/robot_description.h"
 #include "cli/bag_scene.h"
 #include "common/warnings.h"
+#include "display/display.h"
 #include "image/image.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
@@ -48,6 +49,12 @@ class BagStill {
 
   // The robot as drawn: the moment's joint positions and the view (--fit applied to this moment).
   const request::Prepared& prepared() const { return scene_.robot; }
+
+  // The moment drawn as a stamp, nanoseconds since 1970.
+  std::int64_t StampNanoseconds() const;
+  // Frames of the bag's TF in the fixed frame (the root link when none is set), for message
+  // displays; nothing for frames TF does not connect to it.
+  display::FrameLookup Frames() const;
 
   // Draws the still through `session`'s GL renderer into the images `outputs` asks for.
   image::Frame Draw(request::RenderSession& session, const image::FrameOutputs& outputs, Warnings& warnings) const;

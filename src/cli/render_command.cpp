@@ -8,6 +8,7 @@
 #include "cli/bag_model.h"
 #include "cli/bag_still.h"
 #include "cli/command.h"
+#include "cli/display_options.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
@@ -19,6 +20,7 @@
 #include "image/png_writer.h"
 #include "motion/trajectory_file.h"
 #include "gl/gl_context.h"
+#include "request/display_frame.h"
 #include "request/render_session.h"
 #include "request/request_inputs.h"
 
@@ -33,6 +35,7 @@ struct RenderCommandOptions {
   std::string mask, keypoints;  // optional robot mask and keypoint files
   int mask_dilate = 0;
   RenderOptions render;
+  DisplayOptions displays;
   BagStillOptions bag;   // --bag, --at: a moment of a recording
   GlOptions gl_options;
 };
@@ -93,7 +96,18 @@ void Run(RenderCommandOptions& o) {
     const request::Prepared prepared =
         still ? still->prepared() : session.Prepare(o.render.request, request::CommandLineLabel, warnings);
     const image::FrameOutputs outputs = dataset::OutputsFor({true, !o.depth.empty(), !o.labels.empty()}, wanted);
-    frame = still ? still->Draw(session, outputs, warnings) : session.Draw(prepared, outputs);
+    if (o.displays.empty() && prepared.settings.displays.empty()) {
+      frame = still ? still->Draw(session, outputs, warnings) : session.Draw(prepared, outputs);
+    } else {
+      const scene::SceneOptions& scene = prepared.settings.scene;
+      display::DisplaySet displays = o.displays.MakeDisplays(
+          prepared.settings.displays, scene.fixed_frame, request::MarkerResourcesFor(scene), warnings);
+      // a recording's displays show its messages up to the moment, placed through its TF
+      const std::int64_t time_ns = still ? still->StampNanoseconds() : 0;
+      if (still) display::ReadBagDisplayMessages(o.bag.bag, time_ns, displays, warnings);
+      frame = request::DrawWithDisplays(session, prepared, displays, time_ns,
+                                        still ? still->Frames() : display::FrameLookup{}, warnings, outputs);
+    }
     robot = prepared.robot;
     const render::RenderSettings& s = prepared.settings;
     extras = dataset::MakeFrameExtras(wanted, *prepared.renderer, prepared.positions,
@@ -147,6 +161,7 @@ void AddRenderCommand(CLI::App& app) {
                   "camera (OpenCV's projectPoints convention, distortion included), depth, whether "
                   "it is in the image and visible, and the camera (K, D, pose) (default: none)");
   o->render.AddOptions(*cmd);
+  o->displays.AddOptions(*cmd);
   o->bag.AddOptions(*cmd);
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });

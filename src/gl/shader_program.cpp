@@ -110,6 +110,8 @@ void ShaderProgram::Set(const char* name, const Eigen::Vector3f& value) const {
   glUniform3fv(Location(name), 1, value.data());
 }
 
+void ShaderProgram::Set(const char* name, float value) const { glUniform1f(Location(name), value); }
+
 void ShaderProgram::Set(const char* name, int value) const { glUniform1i(Location(name), value); }
 
 void ShaderProgram::Set(const char* name, unsigned value) const { glUniform1ui(Location(name), value); }

@@ -53,10 +53,11 @@ render::Fit FitOf(const RenderRequest& r) {
 render::RenderSettings ReadBaseSettings(const RenderRequest& r, Warnings& warnings) {
   render::RenderSettings settings;
   if (!r.rviz.empty()) {
-    const RvizConfig config = ReadRvizConfig(r.rviz, {settings.scene, settings.view, ""}, warnings);
+    const RvizConfig config = ReadRvizConfig(r.rviz, {settings.scene, settings.view, "", {}}, warnings);
     settings.scene = config.scene;
     settings.view = config.view;
     settings.target_frame = config.target_frame;
+    settings.displays = config.displays;
   }
   return settings;
 }

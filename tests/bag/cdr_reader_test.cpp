@@ -1,5 +1,6 @@
 // CDR decoding of JointState (through the definition urdfsnap ships) from bytes made by hand:
-// alignment counted from after the encapsulation header, both byte orders, and malformed data.
+// alignment counted from after the encapsulation header, both byte orders, byte arrays kept as
+// bytes, and malformed data.
 #include "bag/cdr_reader.h"
 
 #include <gmock/gmock.h>
@@ -9,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "bag/cdr_message.h"
 #include "bag/joint_state_message.h"
 #include "support/error_text.h"
 
@@ -88,6 +90,21 @@ TEST(CdrReaderTest, AlignsFromThePayloadNotTheBuffer) {
   CdrReader reader(bytes);
   EXPECT_EQ(reader.Uint32(), 7u);
   EXPECT_EQ(reader.Float64(), 2.0);
+}
+
+// uint8[] and fixed uint8 arrays come out as raw bytes (a PointCloud2's data), the fields around
+// them still aligned as CDR lays them out; a byte count beyond the message is an error
+TEST(CdrReaderTest, KeepsByteArraysAsBytes) {
+  const MessageSchema schema = MessageSchema::Parse("test/Blob", "uint8[] data\nbyte[3] tag\nuint32 after\n");
+  const std::vector<std::uint8_t> bytes = CdrBytes().U32(5).Raw({1, 2, 3, 4, 255}).Raw({7, 8, 9}).U32(42).bytes();
+  const MessageValue message = DecodeMessage(schema, bytes);
+  EXPECT_THAT(message["data"].bytes, ElementsAre(1, 2, 3, 4, 255));
+  EXPECT_TRUE(message["data"].items.empty());
+  EXPECT_THAT(message["tag"].bytes, ElementsAre(7, 8, 9));
+  EXPECT_EQ(message["after"].number, 42);
+  const std::vector<std::uint8_t> short_data = CdrBytes().U32(1000).Raw({1, 2, 3}).bytes();
+  EXPECT_THAT(test::ErrorText<CdrError>([&] { DecodeMessage(schema, short_data); }),
+              HasSubstr("a sequence of 1000 elements"));
 }
 
 struct BadCdr {

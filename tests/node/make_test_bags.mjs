@@ -14,12 +14,12 @@ import { execFileSync } from "node:child_process";
 import { mkdirSync, writeFileSync, readFileSync, rmSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { McapWriter } from "@mcap/core";
 import { CdrWriter, EncapsulationKind } from "@foxglove/cdr";
 import { ros2humble } from "@foxglove/rosmsg-msgs-common";
 import { MessageWriter } from "@foxglove/rosmsg2-serialization";
 import zstd from "@foxglove/wasm-zstd";
-import lz4 from "lz4js";
+import { nanos, writeBag } from "./bag_writing.mjs";
+import { kJointStateSchema, kStringSchema, kTfMessageSchema } from "./ros2_schemas.mjs";
 
 const out = process.argv[2];
 if (!out) throw new Error("usage: node make_test_bags.mjs OUT_DIR [--large]");
@@ -30,25 +30,6 @@ await zstd.isLoaded;
 
 const kStartSec = 1700000000;
 const kJoints = ["shoulder", "elbow", "wrist"];
-
-// the schema texts rosbag2 stores (ros2msg: the type's .msg, then each type it uses after a line
-// of '=' and "MSG: pkg/Name")
-const kSeparator = "=".repeat(80);
-const kHeaderSections = `${kSeparator}
-MSG: std_msgs/Header
-builtin_interfaces/Time stamp
-string frame_id
-${kSeparator}
-MSG: builtin_interfaces/Time
-int32 sec
-uint32 nanosec
-`;
-const kJointStateSchema = `std_msgs/Header header
-string[] name
-float64[] position
-float64[] velocity
-float64[] effort
-${kHeaderSections}`;
 
 const jointStateWriter = new MessageWriter([
   ros2humble["sensor_msgs/JointState"],
@@ -81,62 +62,6 @@ function bigEndianJointState(message) {
   writer.float64Array(message.position, true);
   writer.float64Array([], true).float64Array([], true);
   return writer.data;
-}
-
-function nanos({ sec, nanosec }) {
-  return BigInt(sec) * 1_000_000_000n + BigInt(nanosec);
-}
-
-class BufferWritable {
-  chunks = [];
-  size = 0n;
-  async write(buffer) {
-    this.chunks.push(Buffer.from(buffer));
-    this.size += BigInt(buffer.byteLength);
-  }
-  position() {
-    return this.size;
-  }
-  bytes() {
-    return Buffer.concat(this.chunks);
-  }
-}
-
-const compressors = {
-  none: undefined,
-  zstd: (data) => ({ compression: "zstd", compressedData: zstd.compress(data, 3) }),
-  lz4: (data) => ({ compression: "lz4", compressedData: lz4.compress(data) }),
-};
-
-// Writes a bag from `channels` ({topic, schema: {name, encoding, data}|null, encoding}) and
-// `messages` ([channelIndex, logTime (bigint), data]) and returns its bytes.
-async function writeBag({ channels, messages, compression = "zstd", chunkSize = 4096, useChunks = true }) {
-  const writable = new BufferWritable();
-  const writer = new McapWriter({
-    writable,
-    useChunks,
-    chunkSize,
-    compressChunk: compressors[compression],
-  });
-  await writer.start({ profile: "ros2", library: "urdfsnap test bags (@mcap/core)" });
-  const ids = [];
-  for (const channel of channels) {
-    const schemaId = channel.schema ? await writer.registerSchema(channel.schema) : 0;
-    ids.push(
-      await writer.registerChannel({
-        schemaId,
-        topic: channel.topic,
-        messageEncoding: channel.encoding ?? "cdr",
-        metadata: new Map([["offered_qos_profiles", ""]]),
-      }),
-    );
-  }
-  let sequence = 0;
-  for (const [channel, logTime, data] of messages) {
-    await writer.addMessage({ channelId: ids[channel], sequence: sequence++, logTime, publishTime: logTime, data });
-  }
-  await writer.end();
-  return writable.bytes();
 }
 
 const jointStateChannel = {
@@ -355,28 +280,6 @@ writeFileSync(join(out, "bad_not_sqlite.db3"), "SQLite format 3\0but nothing els
 // transforms: a base driving +x while turning on /tf (odom -> base_link every 100 ms, x = 0.1 i m,
 // yaw = 0.1 i rad, i = 0 .. 10) with its laser on /tf_static (base_link -> laser at 0.1, 0, 0.3),
 // as MCAP with definitions and as SQLite without; and broken trees
-const kTfMessageSchema = `geometry_msgs/TransformStamped[] transforms
-${kSeparator}
-MSG: geometry_msgs/TransformStamped
-std_msgs/Header header
-string child_frame_id
-Transform transform
-${kHeaderSections}${kSeparator}
-MSG: geometry_msgs/Transform
-Vector3 translation
-Quaternion rotation
-${kSeparator}
-MSG: geometry_msgs/Vector3
-float64 x
-float64 y
-float64 z
-${kSeparator}
-MSG: geometry_msgs/Quaternion
-float64 x 0
-float64 y 0
-float64 z 0
-float64 w 1
-`;
 const tfWriter = new MessageWriter([
   ros2humble["tf2_msgs/TFMessage"], ros2humble["geometry_msgs/TransformStamped"], ros2humble["std_msgs/Header"],
   ros2humble["builtin_interfaces/Time"], ros2humble["geometry_msgs/Transform"], ros2humble["geometry_msgs/Vector3"],
@@ -421,7 +324,6 @@ for (const [name, messages] of Object.entries(tfBags)) {
 // of the /robot_description message
 const roverUrdf = readFileSync(join(dirname(fileURLToPath(import.meta.url)), "../../models/rover_description/urdf/rover.urdf"), "utf8");
 const stringWriter = new MessageWriter([ros2humble["std_msgs/String"]]);
-const kStringSchema = "string data\n";
 function roverLoop(seconds, hz, { tf = (i, base) => [base], description = stringWriter.writeMessage({ data: roverUrdf }) } = {}) {
   const radius = 1, track = 0.46, wheel = 0.1;
   const channels = [
