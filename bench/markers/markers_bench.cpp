@@ -7,8 +7,6 @@
 // whole frame and of the scene building alone, and the CPU time of all threads.
 // usage: urdfsnap_markers_bench [MARKERS [FRAMES [SAMPLES]]]   (defaults 1000, 30 and 4)
 // Timings only: no test asserts on them.
-#include <time.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -47,12 +45,6 @@ Marker MixedMarker(int i) {
   return m;
 }
 
-double CpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -78,9 +70,9 @@ int main(int argc, char** argv) {
   gl::Renderer renderer(argc > 3 ? std::atoi(argv[3]) : 4);
   renderer.Render(frame_scene(), scene::OrbitView{}, 640, 480);   // warm-up: shaders, glyphs, framebuffer
   const double build = bench::MedianTime(frames, [&] { frame_scene(); });
-  const double cpu_before = CpuSeconds();
+  const double cpu_before = bench::CpuSeconds();
   const double whole = bench::MedianTime(frames, [&] { renderer.Render(frame_scene(), scene::OrbitView{}, 640, 480); });
-  const double cpu = (CpuSeconds() - cpu_before) / frames;
+  const double cpu = (bench::CpuSeconds() - cpu_before) / frames;
   const double robot_only = bench::MedianTime(frames, [&] { renderer.Render(posed, scene::OrbitView{}, 640, 480); });
   std::printf("mrm at 640x480, 4x MSAA, %s; median of %d frames\n", renderer.description().c_str(), frames);
   std::printf("| frame | wall ms per frame | CPU ms per frame |\n|---|---|---|\n");
