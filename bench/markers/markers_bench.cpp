@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
     markers.Draw(0, base, scene, warnings);
     return scene;
   };
-  gl::Renderer renderer(argc > 3 ? std::atoi(argv[3]) : 4);
+  gl::SceneRenderer renderer(argc > 3 ? std::atoi(argv[3]) : 4);
   renderer.Render(frame_scene(), scene::OrbitView{}, 640, 480);   // warm-up: shaders, glyphs, framebuffer
   const double build = bench::MedianTime(frames, [&] { frame_scene(); });
   const double cpu_before = bench::CpuSeconds();

@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   options.model_file = model;
   const render::RobotRenderer robot_renderer(robot, options, warnings);
   const scene::Scene posed = robot_renderer.Pose(model::ResolveJointPositions(*robot, {}, true, warnings));
-  gl::Renderer renderer(argc > 3 ? std::atoi(argv[3]) : 4);
+  gl::SceneRenderer renderer(argc > 3 ? std::atoi(argv[3]) : 4);
   // wall time (median) and the CPU time of all threads (mean), per frame in ms: on a shared
   // machine the wall time grows with the load, the CPU time much less
   const auto time = [&](const scene::Scene& scene) {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "display/arrow_shapes.h"
-#include "scene/glyph_atlas.h"
+#include "texture/glyph_atlas.h"
 #include "scene/primitive_meshes.h"
 #include "scene/text_layout.h"
 
@@ -110,7 +110,7 @@ void AddTriangleList(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scen
 // horizontally and vertically on the pose, in the marker's colour.
 void AddText(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
   if (m.text.empty()) return;
-  const auto atlas = scene::BuildGlyphAtlas(scene::FindLiberationSans(), scene::CodePointsOf({m.text}));
+  const auto atlas = texture::BuildGlyphAtlas(texture::FindLiberationSans(), scene::CodePointsOf({m.text}));
   const float height = static_cast<float>(m.scale.z());
   std::vector<scene::GlyphQuad> quads = scene::LayOutText(*atlas, m.text, height);
   for (scene::GlyphQuad& q : quads) {   // LayOutText hangs the line below the anchor: centre it
