@@ -1,12 +1,12 @@
 // Batches of points into GL vertices: position and 8-bit rgba, repeated per corner.
-#include "gl/point_set_drawing.h"
+#include "gl/internal/point_set_drawing.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <vector>
 
-#include "gl/gl_api.h"
+#include "gl/internal/gl_api.h"
 
 namespace urdfsnap::gl {
 

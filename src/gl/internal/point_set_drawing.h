@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "gl/shader_program.h"
+#include "gl/internal/shader_program.h"
 #include "scene/scene.h"
 
 namespace urdfsnap::gl {
