@@ -5,8 +5,6 @@
 // per-frame time of the draw alone and of the robot without points, through the typed core.
 // usage: urdfsnap_points_bench [POINTS [FRAMES [SAMPLES]]]   (defaults 100000, 30 and 4)
 // Timings only: no test asserts on them.
-#include <time.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -44,12 +42,6 @@ scene::PointSet Cloud(std::size_t count, Style style) {
   return points;
 }
 
-double CpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -67,9 +59,9 @@ int main(int argc, char** argv) {
   // machine the wall time grows with the load, the CPU time much less
   const auto time = [&](const scene::Scene& scene) {
     renderer.Render(scene, scene::OrbitView{}, 640, 480);   // warm-up: shaders, framebuffer
-    const double cpu_before = CpuSeconds();
+    const double cpu_before = bench::CpuSeconds();
     const double wall = bench::MedianTime(frames, [&] { renderer.Render(scene, scene::OrbitView{}, 640, 480); });
-    return std::pair{1000 * wall, 1000 * (CpuSeconds() - cpu_before) / frames};
+    return std::pair{1000 * wall, 1000 * (bench::CpuSeconds() - cpu_before) / frames};
   };
   std::printf("mrm at 640x480, 4x MSAA, %s; median of %d frames, draw + read back\n",
               renderer.description().c_str(), frames);

@@ -12,6 +12,7 @@
 
 #include "bag/cdr_message.h"
 #include "bag/joint_state_message.h"
+#include "support/cdr_bytes.h"
 #include "support/error_text.h"
 
 namespace urdfsnap::bag {
@@ -20,11 +21,7 @@ namespace {
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-// Builds CDR bytes field by field the way the specification lays them out.
-class CdrBytes {
- public:
-  explicit CdrBytes(bool big_endian = false) : big_endian_(big_endian) {
-    bytes_ = {0x00, std::uint8_t(big_endian ? 0x00 : 0x01), 0x00, 0x00};
+using test::CdrBytes;
   }
   CdrBytes& U32(std::uint32_t value) { return Put(value); }
   CdrBytes& F64(double value) { return Put(value); }

@@ -4,42 +4,24 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
+#include <map>
+
+#include "support/cdr_bytes.h"
 
 namespace urdfsnap::display {
 namespace {
 
-// CDR bytes laid out field by field (little-endian, alignment from after the 4-byte header).
-class Cdr {
+// A CDR message under construction, with the Header and Pose layouts added.
+class Cdr : public test::CdrBytes {
  public:
-  Cdr() : bytes_{0x00, 0x01, 0x00, 0x00} {}
-  Cdr& U8(std::uint8_t v) { return Put(v); }
-  Cdr& U32(std::uint32_t v) { return Put(v); }
-  Cdr& I32(std::int32_t v) { return Put(v); }
-  Cdr& F32(float v) { return Put(v); }
-  Cdr& F64(double v) { return Put(v); }
-  Cdr& Str(const std::string& text) {
-    U32(static_cast<std::uint32_t>(text.size() + 1));
-    bytes_.insert(bytes_.end(), text.begin(), text.end());
-    bytes_.push_back(0);
-    return *this;
-  }
   Cdr& Header(std::int32_t sec, std::uint32_t nanosec, const std::string& frame) {
-    return I32(sec).U32(nanosec).Str(frame);
-  }
-  Cdr& Pose(double x, double y, double z) { return F64(x).F64(y).F64(z).F64(0).F64(0).F64(0).F64(1); }
-  const std::vector<std::uint8_t>& bytes() const { return bytes_; }
-
- private:
-  template <typename T>
-  Cdr& Put(T value) {
-    while ((bytes_.size() - 4) % sizeof(T) != 0) bytes_.push_back(0);
-    std::uint8_t raw[sizeof(T)];
-    std::memcpy(raw, &value, sizeof(T));
-    bytes_.insert(bytes_.end(), raw, raw + sizeof(T));
+    I32(sec).U32(nanosec).Str(frame);
     return *this;
   }
-  std::vector<std::uint8_t> bytes_;
+  Cdr& Pose(double x, double y, double z) {
+    F64(x).F64(y).F64(z).F64(0).F64(0).F64(0).F64(1);
+    return *this;
+  }
 };
 
 void AppendMarker(Cdr& cdr) {
@@ -101,7 +83,8 @@ TEST(DisplayMessagesTest, PathAndPoseArrayDecodeTheirPoses) {
   EXPECT_EQ(p.poses[1].position.x(), 2);
 
   Cdr array;
-  array.Header(1, 0, "odom").U32(1).Pose(0, 3, 0);
+  array.Header(1, 0, "odom").U32(1);
+  array.Pose(0, 3, 0);
   const PoseList a = DecodePoseArray(Decode("geometry_msgs/msg/PoseArray", array));
   EXPECT_EQ(a.header.frame_id, "odom");
   ASSERT_EQ(a.poses.size(), 1u);
