@@ -1,7 +1,6 @@
 // RenderAnimation: RunPipeline with image::Frame items (colour, and depth and labels when asked).
 #include "animation/render_animation.h"
 
-#include <filesystem>
 #include <string>
 
 #include "image/depth_label_files.h"
@@ -20,13 +19,10 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, 
                             : robot.Render(gl, positions, frames.View(k), frames.size(), wanted,
                                            frames.Place(k, warnings));
   };
-  // the depth files' format, by the pattern's extension as `render --depth FILE` decides it
-  const std::string depth_extension =
-      outputs.depth ? std::filesystem::path(outputs.depth->pattern().pattern()).extension().string() : "";
   const auto write = [&](std::int64_t i, const image::Frame& frame) {
     outputs.colour->Write(frame.colour);
     if (outputs.depth) {
-      outputs.depth->Write(image::EncodeDepth(frame.depth, depth_extension));
+      outputs.depth->Write(image::EncodeDepthFile(frame.depth, outputs.depth->pattern().pattern()));
     }
     if (outputs.labels) outputs.labels->Write(image::EncodeLabels(frame.labels));
     if (progress) progress->Update(i + 1);
