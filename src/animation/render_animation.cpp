@@ -14,10 +14,9 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, 
   const image::FrameOutputs wanted{true, outputs.depth != nullptr, outputs.labels != nullptr};
   const auto render = [&](std::int64_t i, image::Frame& frame) {
     const std::int64_t k = range.first + i;
-    const std::vector<double> positions = frames.Positions(k, warnings);
-    frame = frames.camera() ? robot.Render(gl, positions, *frames.camera(), wanted)
-                            : robot.Render(gl, positions, frames.View(k), frames.size(), wanted,
-                                           frames.Place(k, warnings));
+    frame = frames.camera() ? robot.Render(gl, frames.Positions(k, warnings), *frames.camera(), wanted)
+                            : gl.Render(frames.Scene(robot, k, warnings), frames.View(k), frames.size().width,
+                                        frames.size().height, wanted);
   };
   const auto write = [&](std::int64_t i, const image::Frame& frame) {
     outputs.colour->Write(frame.colour);

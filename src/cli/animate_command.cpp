@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -17,7 +18,9 @@
 #include "animation/sequence_outputs.h"
 #include "bag/joint_state_bag.h"
 #include "bag/robot_description.h"
+#include "cli/bag_batch.h"
 #include "cli/bag_model.h"
+#include "cli/bag_scene.h"
 #include "cli/command.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
@@ -30,13 +33,11 @@
 #include "gl/rasteriser_threads.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
-#include "motion/root_poses.h"
 #include "motion/trajectory_file.h"
 #include "request/render_session.h"
 #include "request/request_inputs.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
-#include "tf/bag_transforms.h"
 #include "video/frame_encoder.h"
 #include "video/numbered_files.h"
 #include "video/open_frame_encoder.h"
@@ -146,11 +147,10 @@ void PrintNewWarnings(const Warnings& printed, const Warnings& later) {
 
 // An animation ready to render: the robot prepared once, its frames planned and its camera fitted.
 struct PreparedAnimation {
-  request::Prepared robot;   // settings.view before --fit (fitted over every frame by `frames`)
+  BagScene scene;   // robot.settings.view before --fit (fitted over every frame by `frames`); TF only for a bag
   motion::Trajectory trajectory;
   motion::FramePlan plan;
   std::optional<motion::FramePoses> poses;
-  std::optional<motion::RootPoses> root;   // where the bag's TF puts the robot, for a fixed frame outside it
   std::optional<animation::AnimationFrames> frames;
 };
 
@@ -162,39 +162,26 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
   // --fit frames every frame at once, below, not the first pose alone
   const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
-  // a fixed frame outside the robot (odom, map): the bag's TF places the robot in it, as RViz's
-  // Fixed Frame does; the scene is drawn from the root link, then placed
-  const bool bag_frame = !r.fixed_frame.empty() && !o.trajectory.empty() && motion::IsBag(o.trajectory);
-  if (bag_frame) {
-    resolved.settings.scene.fixed_frame.clear();
-    resolved.fixed_frame_given = false;
-  }
-  a.robot = session.Prepare(resolved, warnings);
-  std::string tf_fixed_frame;
-  if (bag_frame && a.robot.robot->FindLink(r.fixed_frame) >= 0) {
-    resolved.settings.scene.fixed_frame = r.fixed_frame;   // a link after all: drawn from it as usual
-    resolved.fixed_frame_given = true;
-    a.robot = session.Prepare(resolved, warnings);
-  } else if (bag_frame) {
-    tf_fixed_frame = r.fixed_frame;
-  }
+  const model::NamedValues joints = resolved.joints;
+  const bool clamp = resolved.clamp;
   if (!o.trajectory.empty()) a.trajectory = motion::ReadTrajectory(o.trajectory, {o.topic}, warnings);
+  // a bag: the fixed frame through its TF (odom, map place the robot as RViz's Fixed Frame does),
+  // and the TF display of its frames
+  const bool bag = !o.trajectory.empty() && motion::IsBag(o.trajectory);
+  PrepareBagScene(session, std::move(resolved), bag ? o.trajectory : "", a.trajectory.stamp_at_zero.value_or(0),
+                  warnings, a.scene);
   a.plan = Plan(o, a.trajectory);
   // joints the trajectory does not name: the joint file, then -j, as render takes them
-  a.poses.emplace(*a.robot.robot, a.trajectory, resolved.joints,
-                  motion::JointRules{resolved.clamp, o.clamp, o.strict_joints}, warnings);
-  if (!tf_fixed_frame.empty()) {
-    if (!o.print_frame.empty()) {
-      throw Error("--print-frame: the frames are placed by TF in '" + tf_fixed_frame +
-                  "', which `render` cannot do");
-    }
-    a.root.emplace(tf::ReadBagTransforms(o.trajectory), tf_fixed_frame, a.robot.robot->links().front().name,
-                   a.trajectory.stamp_at_zero.value_or(0), o.trajectory);
+  const request::Prepared& robot = a.scene.robot;
+  a.poses.emplace(*robot.robot, a.trajectory, joints, motion::JointRules{clamp, o.clamp, o.strict_joints}, warnings);
+  if (a.scene.root && !o.print_frame.empty()) {
+    throw Error("--print-frame: the frames are placed by TF in a fixed frame outside the robot, which `render` "
+                "draws with --bag " + o.trajectory + " --at SECONDS");
   }
-  const render::RenderSettings& settings = a.robot.settings;
-  a.frames.emplace(*a.robot.renderer, a.plan, *a.poses,
+  const render::RenderSettings& settings = robot.settings;
+  a.frames.emplace(*robot.renderer, a.plan, *a.poses,
                    animation::CameraRequest{settings.view, settings.size, fit, o.turntable, settings.camera}, warnings,
-                   a.root ? &*a.root : nullptr);
+                   a.scene.Additions());
 }
 
 // --print-frame K: the render options that draw frame K, to stdout.
@@ -203,14 +190,14 @@ void PrintFrame(const AnimateOptions& o, const PreparedAnimation& a, Warnings& w
   const std::vector<double> positions = a.frames->Positions(k, warnings);
   PrintWarnings(warnings);
   WriteToStdout(animation::JoinWords(
-      animation::RenderWords(*a.robot.robot, positions, a.frames->View(k), !o.render.request.no_clamp)) + "\n");
+      animation::RenderWords(*a.scene.robot.robot, positions, a.frames->View(k), !o.render.request.no_clamp)) + "\n");
 }
 
 // Renders this shard's frames into the outputs `outputs` planned (prepared: checked and their folders
 // made), every output opened before the first frame and appearing only when all are complete.
 void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, request::RenderSession& session,
                     const PreparedAnimation& a, OutputPlan& outputs, Warnings& warnings) {
-  const render::RenderSettings& settings = a.robot.settings;
+  const render::RenderSettings& settings = a.scene.robot.settings;
   const shard::FrameRange range = shard::FramesOfShard(a.plan.frame_count, choice.shard);
   PrintShardLine(choice, range.size(), a.plan.frame_count, "frames", RangeText(range));
 
@@ -221,7 +208,7 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
   if (!o.depth.empty()) depth.emplace(o.depth, range.first);
   if (!o.labels.empty()) {
     labels.emplace(o.labels, range.first);
-    outputs.Write(animation::LabelNamesPath(o.labels), image::LabelNamesJson(a.robot.robot->LinkNames()));
+    outputs.Write(animation::LabelNamesPath(o.labels), image::LabelNamesJson(a.scene.robot.robot->LinkNames()));
   }
   PrintWarnings(warnings);   // --strict ends here, before any frame
 
@@ -229,7 +216,7 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
                           o.quiet ? stream::ProgressBar::Display::kNever
                                   : stream::ProgressBar::Display::kIfTerminal);
   Warnings later;
-  animation::RenderAnimation(*a.robot.renderer, session.GlRenderer(settings.samples), *a.frames, range,
+  animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(settings.samples), *a.frames, range,
                              {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr},
                              &bar, later);
   outputs.Commit();
@@ -237,9 +224,9 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
   PrintNewWarnings(warnings, later);
 }
 
-void Run(AnimateOptions& o) {
-  const gl::BackendChoice backend = o.gl_options.Choice();
-  const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
+// One animation (of the one MODEL, or of one of many bags) drawn through `session`; `gl_loading`
+// is the GL library being loaded.
+void RunOne(AnimateOptions& o, request::RenderSession& session, const std::future<void>& gl_loading) {
   request::RenderRequest& r = o.render.request;
   // MODEL given as a bag: its motion and the robot description it recorded
   std::optional<BagModel> bag_model;
@@ -273,7 +260,6 @@ void Run(AnimateOptions& o) {
 
   Warnings warnings;
   try {
-    request::RenderSession session(backend);
     PreparedAnimation animation;
     PrepareAnimation(o, session, animation, warnings);
     if (!o.print_frame.empty()) return PrintFrame(o, animation, warnings);
@@ -281,7 +267,7 @@ void Run(AnimateOptions& o) {
     // (set while no other thread runs: before the encoder opens and the GL context reads it)
     gl_loading.wait();
     const std::string rasteriser =
-        gl::LeaveCoresToOtherThreads(1, animation.robot.renderer->scene().triangle_count());
+        gl::LeaveCoresToOtherThreads(1, animation.scene.robot.renderer->scene().triangle_count());
     if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
     WriteAnimation(o, choice, session, animation, outputs, warnings);
   } catch (const Error& e) {
@@ -292,6 +278,42 @@ void Run(AnimateOptions& o) {
     PrintWarningsBeforeError(warnings);
     throw;
   }
+}
+
+// MODEL and the words after it that are bags, when MODEL is one (`animate a.mcap b.mcap ...`).
+std::vector<std::string> BagsGiven(const ModelSource& model) {
+  if (!motion::IsBag(model.path)) return {};
+  std::vector<std::string> bags{model.path};
+  for (const std::string& word : model.xacro_words) {
+    if (word.find(":=") == std::string::npos && motion::IsBag(word)) bags.push_back(word);
+  }
+  return bags;
+}
+
+void Run(AnimateOptions& o) {
+  const gl::BackendChoice backend = o.gl_options.Choice();
+  const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
+  request::RenderSession session(backend);
+  const std::vector<std::string> bags = BagsGiven(o.model);
+  if (bags.size() < 2) return RunOne(o, session, gl_loading);
+  if (!o.trajectory.empty() || !o.print_frame.empty()) {
+    throw Error("animate: " + std::to_string(bags.size()) + " bags are animated each with its own motion and "
+                "description; --trajectory and --print-frame take one MODEL");
+  }
+  std::vector<std::string> words;   // the xacro arguments, the same for every bag
+  for (const std::string& word : o.model.xacro_words) {
+    if (std::find(bags.begin(), bags.end(), word) == bags.end()) words.push_back(word);
+  }
+  AnimateEachBag(bags, o.output, [&](const std::string& bag) {
+    AnimateOptions one = o;
+    one.model.path = bag;
+    one.model.xacro_words = words;
+    const std::string stem = BagStem(bag);
+    one.output = WithStem(o.output, stem);
+    one.depth = WithStem(o.depth, stem);
+    one.labels = WithStem(o.labels, stem);
+    RunOne(one, session, gl_loading);
+  });
 }
 
 }  // namespace
@@ -306,7 +328,10 @@ void AddAnimateCommand(CLI::App& app) {
                   "a PNG sequence such as frames/%05d.png (numbered from 0; each frame as `render` "
                   "writes it); missing folders are made. A frame sequence splits over workers "
                   "with --shard: each writes a contiguous range of the files, named as in the whole "
-                  "animation, from the same camera");
+                  "animation, from the same camera. Several bags as MODEL (animate a.mcap b.mcap ... "
+                  "-o out/{stem}.mp4) are each animated with the same view and options into the file "
+                  "{stem} (the bag's name) makes, one line per bag and a summary; a bag that fails gets "
+                  "its error line, the others are still animated, and the run then exits with status 2");
   cmd->add_option("--trajectory", o->trajectory,
                   "the motion: a CSV table (time,<joint>,...), a JointTrajectory, MoveIt "
                   "RobotTrajectory/DisplayTrajectory or JointState stream in YAML/JSON (as `ros2 "

@@ -2,7 +2,11 @@
 // options come from request::TextOptions/FlagOptions, the table snapshot suites read as well.
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <utility>
 
+#include "cli/bag_model.h"
+#include "cli/bag_still.h"
 #include "cli/command.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
@@ -14,6 +18,7 @@
 #include "dataset/rendered_keypoints.h"
 #include "image/depth_label_files.h"
 #include "image/png_writer.h"
+#include "motion/trajectory_file.h"
 #include "gl/gl_context.h"
 #include "request/render_session.h"
 #include "request/request_inputs.h"
@@ -29,6 +34,7 @@ struct RenderCommandOptions {
   std::string mask, keypoints;  // optional robot mask and keypoint files
   int mask_dilate = 0;
   RenderOptions render;
+  BagStillOptions bag;   // --bag, --at: a moment of a recording
   GlOptions gl_options;
 };
 
@@ -47,7 +53,14 @@ void CheckExtension(const std::string& path, const std::string& extension, const
 void Run(RenderCommandOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
+  // a recording: MODEL may be the bag itself, and without a MODEL the bag's robot description
+  if (o.bag.bag.empty() && !o.model.path.empty() && motion::IsBag(o.model.path)) o.bag.bag = std::exchange(o.model.path, "");
+  if (o.bag.bag.empty() && !o.bag.at.empty()) throw Error("--at: a moment of a recording; give the recording with --bag");
+  if (o.bag.bag.empty() && o.model.path.empty()) throw Error("render: give MODEL (a URDF or xacro file) or --bag");
+  std::optional<BagModel> bag_model;
+  if (o.model.path.empty()) bag_model.emplace(o.bag.bag, o.bag.description_topic);
   o.render.request.model = o.model.ToRequest();
+  if (bag_model) o.render.request.model.path = bag_model->path();
   o.render.ParseJointWords();
   if (!o.depth.empty()) image::CheckDepthPath(o.depth, "--depth");
   if (!o.labels.empty()) image::CheckLabelsPath(o.labels, "--labels");
@@ -57,9 +70,10 @@ void Run(RenderCommandOptions& o) {
   }
   if (!o.keypoints.empty()) CheckExtension(o.keypoints, ".json", "--keypoints");
   // every output checked, and its folder made, before drawing; all written, or none
-  const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
+  const std::string output = o.output.empty() ? DefaultOutput(bag_model ? o.bag.bag : o.model.path) : o.output;
   OutputPlan plan;
   request::AddRequestInputs(plan, o.render.request);
+  if (!o.bag.bag.empty()) plan.AddInput(o.bag.bag, "--bag");
   // (the default output/ folder is made; a folder given must exist)
   plan.AddFile(output, o.output.empty() ? "the output" : "-o", o.output.empty());
   if (!o.depth.empty()) plan.AddFile(o.depth, "--depth", false);
@@ -76,10 +90,14 @@ void Run(RenderCommandOptions& o) {
   std::shared_ptr<const model::Robot> robot;
   std::string keypoints;
   try {
-    const request::Prepared prepared = session.Prepare(o.render.request, request::CommandLineLabel, warnings);
+    std::optional<BagStill> still;
+    if (!o.bag.bag.empty()) still.emplace(o.bag, session, o.render.request, warnings);
+    const request::Prepared prepared =
+        still ? still->prepared() : session.Prepare(o.render.request, request::CommandLineLabel, warnings);
     const bool wants_keypoints = !o.keypoints.empty();
-    frame = session.Draw(prepared, {true, !o.depth.empty() || wants_keypoints,
-                                    !o.labels.empty() || !o.mask.empty() || wants_keypoints});
+    const image::FrameOutputs outputs{true, !o.depth.empty() || wants_keypoints,
+                                      !o.labels.empty() || !o.mask.empty() || wants_keypoints};
+    frame = still ? still->Draw(session, outputs, warnings) : session.Draw(prepared, outputs);
     robot = prepared.robot;
     if (wants_keypoints) {
       const render::RenderSettings& s = prepared.settings;
@@ -87,6 +105,10 @@ void Run(RenderCommandOptions& o) {
           *prepared.renderer, prepared.positions,
           s.camera ? *s.camera : render::OrbitCamera(s.view, s.size.width, s.size.height), frame);
     }
+  } catch (const Error& e) {
+    PrintWarningsBeforeError(warnings);
+    if (bag_model) throw Error(bag_model->Located(e.what()));
+    throw;
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -110,7 +132,7 @@ void Run(RenderCommandOptions& o) {
 void AddRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a robot pose to a PNG image, as RViz shows it");
-  o->model.AddOptions(*cmd);
+  o->model.AddOptions(*cmd, true);
   cmd->add_option("-o,--output", o->output, "PNG file to write (default output/<model>.png)");
   cmd->add_option("--depth", o->depth,
                   "also write the robot's depth image from the same view: FILE.png (16-bit, mm along "
@@ -131,6 +153,7 @@ void AddRenderCommand(CLI::App& app) {
                   "camera (OpenCV's projectPoints convention, distortion included), depth, whether "
                   "it is in the image and visible, and the camera (K, D, pose) (default: none)");
   o->render.AddOptions(*cmd);
+  o->bag.AddOptions(*cmd);
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
 }

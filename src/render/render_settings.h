@@ -26,6 +26,9 @@ enum class Fit {
 struct RenderSettings {
   scene::SceneOptions scene;   // displays, fixed frame, background, where files are found
   scene::OrbitView view;       // the camera
+  // the frame whose origin the view's focal point is relative to (RViz's Target Frame); "" for the
+  // fixed frame
+  std::string target_frame;
   ImageSize size;
   int samples = 4;             // multisampling per pixel, 4 as RViz requests; 0 = off
   Fit fit = Fit::kNone;

@@ -21,6 +21,7 @@ struct RenderRequest {
   std::string rviz;
   std::string yaw, pitch, distance, focal, fov;
   std::string fixed_frame, background, alpha, tf_scale;
+  std::string follow;   // the orbit view's Target Frame
   bool fit = false;
   bool collision = false, no_visual = false, no_grid = false;
   bool tf = false, no_tf_names = false, no_tf_axes = false, no_tf_arrows = false;

@@ -26,6 +26,7 @@ ResolvedRequest ResolveRequest(const RenderRequest& r, const RequestFiles& files
   resolved.clamp = !r.no_clamp;
   resolved.rviz = r.rviz;
   resolved.fixed_frame_given = !r.fixed_frame.empty();
+  resolved.target_frame_given = !r.follow.empty();
   return resolved;
 }
 

@@ -24,6 +24,7 @@ struct ResolvedRequest {
   bool clamp = true;                // joint values beyond a joint's limits are clamped (not --no-clamp)
   std::string rviz;                 // the .rviz file the settings came from, for its warnings
   bool fixed_frame_given = false;   // --fixed-frame was given (an .rviz frame is only a default)
+  bool target_frame_given = false;  // --follow was given (likewise)
 };
 
 // What a request's files say, read once.

@@ -253,7 +253,7 @@ void ReadTf(const Display& display, scene::TfOptions& tf, Warnings& warnings) {
 // Views/Current (src/rviz/view_manager.cpp) when it is an Orbit view: its properties in
 // src/rviz/default_plugin/view_controllers/orbit_view_controller.cpp L58-88 and the near clip of
 // src/rviz/view_controller.cpp L58-62, with their limits. Returns whether the file has such a view.
-bool ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings) {
+bool ReadView(const Section& manager, scene::OrbitView& view, std::string& target_frame, Warnings& warnings) {
   const std::optional<Section> views = manager.Child("Views", "Views");
   if (!views) return false;
   const std::optional<Section> current = views->Child("Current", "Views/Current");
@@ -273,13 +273,11 @@ bool ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings
   current->ReadNumber("Field of View", view.fov_y, 0.001, std::numbers::pi / 2);
   current->ReadNumber("Near Clip Distance", view.near_clip, 0.001, 10000);
 
-  // what urdfsnap's orbit camera cannot follow
   std::string target = kFixedFrameString;
   ReadFrame(*current, "Target Frame", target);
-  if (target != kFixedFrameString) {
-    current->Warn("Target Frame", "is not <Fixed Frame>; urdfsnap orbits in the fixed frame",
-                  warnings);
-  }
+  target_frame = target == kFixedFrameString ? "" : target;
+
+  // what urdfsnap's orbit camera cannot follow
   bool invert_z = false;
   current->ReadBool("Invert Z Axis", invert_z);
   if (invert_z) current->Warn("Invert Z Axis", "is true; urdfsnap keeps +Z up", warnings);
@@ -338,7 +336,7 @@ RvizConfig ParseRvizConfig(const std::string& text, const std::string& path,
   }
   if (const Display* tf = Chosen(displays.tfs, warnings)) ReadTf(*tf, config.scene.tf, warnings);
 
-  const bool has_view = ReadView(manager, config.view, warnings);
+  const bool has_view = ReadView(manager, config.view, config.target_frame, warnings);
   RequireSomethingUsable(path, displays, has_view);
   return config;
 }

@@ -14,6 +14,7 @@ namespace urdfsnap::request {
 struct RvizConfig {
   scene::SceneOptions scene;
   scene::OrbitView view;
+  std::string target_frame;   // the orbit view's Target Frame; "" for <Fixed Frame>
 };
 
 // Reads the file at `path` and applies to `defaults`:
@@ -23,7 +24,7 @@ struct RvizConfig {
 //  - the RobotModel display (Alpha, Visual Enabled, Collision Enabled; disabled hides the robot);
 //  - the TF display (enabled, Show Names, Show Axes, Show Arrows, Marker Scale);
 //  - Views/Current when it is an rviz/Orbit view (Distance, Yaw and Pitch in radians, Focal Point
-//    in metres, Field of View in radians, Near Clip Distance in metres).
+//    in metres, Field of View in radians, Near Clip Distance in metres, Target Frame).
 // Keys that are missing keep the defaults. Numbers are limited to the ranges RViz's properties
 // allow. Displays in rviz/Group displays count as well. Adds one warning per display class that
 // urdfsnap does not draw, and one for a current view that is not rviz/Orbit (the default view

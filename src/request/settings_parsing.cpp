@@ -53,9 +53,10 @@ render::Fit FitOf(const RenderRequest& r) {
 render::RenderSettings ReadBaseSettings(const RenderRequest& r, Warnings& warnings) {
   render::RenderSettings settings;
   if (!r.rviz.empty()) {
-    const RvizConfig config = ReadRvizConfig(r.rviz, {settings.scene, settings.view}, warnings);
+    const RvizConfig config = ReadRvizConfig(r.rviz, {settings.scene, settings.view, ""}, warnings);
     settings.scene = config.scene;
     settings.view = config.view;
+    settings.target_frame = config.target_frame;
   }
   return settings;
 }
@@ -65,6 +66,7 @@ void ApplyOptions(const RenderRequest& r, const CameraFiles& camera_files, const
   settings.size = ParseImageSize(r.size, label("size"));
   ApplyView(r, label, settings.view);
   ApplyScene(r, label, settings.scene);
+  if (!r.follow.empty()) settings.target_frame = r.follow;
   settings.samples = r.no_aa ? 0 : 4;
   settings.fit = FitOf(r);
   // the calibrated camera, if any

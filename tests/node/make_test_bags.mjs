@@ -416,11 +416,13 @@ for (const [name, messages] of Object.entries(tfBags)) {
 }
 // the rover sample (models/rover_description) driving a loop of 1 m radius anticlockwise in
 // `seconds` at `hz`: its wheels on /joint_states (each turning by the distance it rolls over its
-// 0.1 m radius), its head panning, odom -> base_link on /tf, its description on /robot_description
+// 0.1 m radius), its head panning, odom -> base_link on /tf, its description on /robot_description;
+// `tf(i, base)` gives the transforms of message i (a hostile bag's change), `description` the bytes
+// of the /robot_description message
 const roverUrdf = readFileSync(join(dirname(fileURLToPath(import.meta.url)), "../../models/rover_description/urdf/rover.urdf"), "utf8");
 const stringWriter = new MessageWriter([ros2humble["std_msgs/String"]]);
 const kStringSchema = "string data\n";
-function roverLoop(seconds, hz) {
+function roverLoop(seconds, hz, { tf = (i, base) => [base], description = stringWriter.writeMessage({ data: roverUrdf }) } = {}) {
   const radius = 1, track = 0.46, wheel = 0.1;
   const channels = [
     jointStateChannel,
@@ -428,7 +430,7 @@ function roverLoop(seconds, hz) {
     { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } },
   ];
   const start = { sec: kStartSec, nanosec: 0 };
-  const messages = [[2, nanos(start), stringWriter.writeMessage({ data: roverUrdf })]];
+  const messages = [[2, nanos(start), description]];
   const count = Math.round(seconds * hz);
   for (let i = 0; i <= count; ++i) {
     const t = i / hz;
@@ -441,11 +443,26 @@ function roverLoop(seconds, hz) {
     const state = { header: { stamp, frame_id: "" }, name: names, position: [left, left, right, right, Math.sin(heading * 2)], velocity: [], effort: [] };
     const base = transform("odom", "base_link", stamp, [radius * Math.sin(heading), radius * (1 - Math.cos(heading)), 0], heading);
     messages.push([0, nanos(stamp), jointStateWriter.writeMessage(state)]);
-    messages.push([1, nanos(stamp), tfWriter.writeMessage({ transforms: [base] })]);
+    messages.push([1, nanos(stamp), tfWriter.writeMessage({ transforms: tf(i, base) })]);
   }
   return writeBag({ channels, messages, chunkSize: 1 << 20 });
 }
 writeFileSync(join(out, "rover_loop.mcap"), await roverLoop(8, 20));
+// hostile rover bags: each is the loop with one thing wrong at message 3 (or in its description)
+const atThree = (change) => ({ tf: (i, base) => (i === 3 ? change(base) : [base]) });
+// a description whose CDR string claims 100 MB (the length after the 4-byte encapsulation header)
+const hugeDescription = stringWriter.writeMessage({ data: "<robot/>" });
+new DataView(hugeDescription.buffer, hugeDescription.byteOffset).setUint32(4, 100_000_000, true);
+const hostileRovers = {
+  "rover_tf_nan.mcap": atThree((t) => [{ ...t, transform: { ...t.transform, rotation: { x: NaN, y: 0, z: 0, w: 1 } } }]),
+  "rover_tf_loop.mcap": atThree((t) => [t, transform("base_link", "odom", t.header.stamp, [0, 0, 0], 0)]),
+  "rover_tf_two_parents.mcap": atThree((t) => [{ ...t, header: { ...t.header, frame_id: "map" } }]),
+  "rover_tf_backwards.mcap": atThree((t) => [{ ...t, header: { ...t.header, stamp: { sec: kStartSec, nanosec: 0 } } }]),
+  "rover_description_huge.mcap": { description: hugeDescription },
+};
+for (const [name, options] of Object.entries(hostileRovers)) {
+  writeFileSync(join(out, name), await roverLoop(1, 10, options));
+}
 // a description that is no URDF
 writeFileSync(join(out, "description_junk.mcap"), await writeBag({
   channels: [jointStateChannel, { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } }],

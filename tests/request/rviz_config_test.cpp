@@ -445,7 +445,7 @@ TEST_F(RvizConfigTest, OtherViewsKeepTheDefaultViewWithAWarning) {
 }
 
 TEST_F(RvizConfigTest, PropertiesUrdfsnapCannotFollowAreWarnings) {
-  Read(R"(Visualization Manager:
+  const RvizConfig config = Read(R"(Visualization Manager:
   Global Options:
     Fixed Frame: base_link
   Displays:
@@ -482,9 +482,9 @@ TEST_F(RvizConfigTest, PropertiesUrdfsnapCannotFollowAreWarnings) {
                          "draws 1-pixel lines",
                   path + ":19: rviz/TF display 'TF': 'Marker Alpha' is not 1; urdfsnap draws "
                          "opaque TF markers",
-                  path + ":24: Views/Current: 'Target Frame' is not <Fixed Frame>; urdfsnap "
-                         "orbits in the fixed frame",
                   path + ":23: Views/Current: 'Invert Z Axis' is true; urdfsnap keeps +Z up"));
+  // the view's Target Frame is followed (--follow)
+  EXPECT_EQ(config.target_frame, "link_01");
 }
 
 // Laid out as RViz 2 (Humble) saves a package's view_robot.rviz, as ur_description ships one, with
