@@ -2,7 +2,6 @@
 // and keypoints; masks are made on the writer's thread.
 #include "animation/render_animation.h"
 
-#include <filesystem>
 #include <string>
 
 #include "camera/robot_mask.h"
@@ -53,14 +52,11 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, 
           dataset::RenderedKeypointsJson(robot, positions, FrameCamera(frames, k, camera, X_SF), drawn.frame);
     }
   };
-  // the depth files' format, by the pattern's extension as `render --depth FILE` decides it
-  const std::string depth_extension =
-      outputs.depth ? std::filesystem::path(outputs.depth->pattern().pattern()).extension().string() : "";
   const auto write = [&](std::int64_t i, const DrawnFrame& drawn) {
     const image::Frame& frame = drawn.frame;
     outputs.colour->Write(frame.colour);
     if (outputs.depth) {
-      outputs.depth->Write(image::EncodeDepth(frame.depth, depth_extension));
+      outputs.depth->Write(image::EncodeDepthFile(frame.depth, outputs.depth->pattern().pattern()));
     }
     if (outputs.labels) outputs.labels->Write(image::EncodeLabels(frame.labels));
     if (outputs.mask) {

@@ -124,7 +124,7 @@ void Run(RenderCommandOptions& o) {
   PrintWarnings(warnings);
   plan.Write(output, image::EncodePng(frame.colour));
   if (!o.depth.empty()) {
-    plan.Write(o.depth, image::EncodeDepth(frame.depth, std::filesystem::path(o.depth).extension().string()));
+    plan.Write(o.depth, image::EncodeDepthFile(frame.depth, o.depth));
   }
   if (!o.labels.empty()) {
     plan.Write(o.labels, image::EncodeLabels(frame.labels));

@@ -19,6 +19,16 @@ namespace {
 
 std::string Extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
 
+enum class DepthFormat { kMillimetrePng, kMetreNpy };
+
+// The format of the depth file `path` by its extension; throws naming `what` and the path.
+DepthFormat DepthFormatOf(const std::string& path, const std::string& what) {
+  const std::string extension = Extension(path);
+  if (extension == ".png") return DepthFormat::kMillimetrePng;
+  if (extension == ".npy") return DepthFormat::kMetreNpy;
+  throw Error(what + " '" + path + "': expected a .png (16-bit millimetres) or .npy (float32 metres) file");
+}
+
 std::string Bytes(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
 
 }  // namespace
@@ -33,22 +43,21 @@ Gray16Image DepthMillimetres(const DepthImage& depth) {
   return mm;
 }
 
-std::string EncodeDepth(const DepthImage& depth, const std::string& extension) {
-  if (extension == ".npy") return EncodeNpyFloat32(depth.width, depth.height, depth.metres);
-  if (extension == ".png") return Bytes(EncodeGray16Png(DepthMillimetres(depth)));
-  throw Error("a depth file ends in .png (16-bit millimetres) or .npy (float32 metres), not '" + extension + "'");
+std::string EncodeDepthFile(const DepthImage& depth, const std::string& path) {
+  switch (DepthFormatOf(path, "depth file")) {
+    case DepthFormat::kMetreNpy:
+      return EncodeNpyFloat32(depth.width, depth.height, depth.metres);
+    case DepthFormat::kMillimetrePng:
+      break;
+  }
+  return Bytes(EncodeGray16Png(DepthMillimetres(depth)));
 }
 
 std::string EncodeLabels(const LabelImage& labels) {
   return Bytes(EncodeGray16Png({labels.width, labels.height, labels.labels}));
 }
 
-void CheckDepthPath(const std::string& path, const std::string& option) {
-  const std::string extension = Extension(path);
-  if (extension != ".png" && extension != ".npy") {
-    throw Error(option + " '" + path + "': expected a .png (16-bit millimetres) or .npy (float32 metres) file");
-  }
-}
+void CheckDepthPath(const std::string& path, const std::string& option) { DepthFormatOf(path, option); }
 
 void CheckLabelsPath(const std::string& path, const std::string& option) {
   if (Extension(path) != ".png") throw Error(option + " '" + path + "': expected a .png file (16-bit labels)");
@@ -59,8 +68,7 @@ std::string LabelNamesFile(const std::string& path) {
 }
 
 void WriteDepthFile(const DepthImage& depth, const std::string& path) {
-  CheckDepthPath(path, "depth file");
-  WriteFileAtomically(path, EncodeDepth(depth, Extension(path)));
+  WriteFileAtomically(path, EncodeDepthFile(depth, path));
 }
 
 std::string LabelNamesJson(const std::vector<std::string>& link_names) {

@@ -62,15 +62,16 @@ render::RenderSettings ReadBaseSettings(const RenderRequest& r, Warnings& warnin
   return settings;
 }
 
-void ApplyOptions(const RenderRequest& r, const OptionLabel& label, render::RenderSettings& settings) {
+void ApplyOptions(const RenderRequest& r, const CameraFiles& camera_files, const OptionLabel& label,
+                  render::RenderSettings& settings) {
   settings.size = ParseImageSize(r.size, label("size"));
   ApplyView(r, label, settings.view);
   ApplyScene(r, label, settings.scene);
   if (!r.follow.empty()) settings.target_frame = r.follow;
   settings.samples = r.no_aa ? 0 : 4;
   settings.fit = FitOf(r);
-  // the calibrated camera, if any (reads --camera-info's file)
-  settings.camera = ParseCameraSettings(r, label, settings);
+  // the calibrated camera, if any
+  settings.camera = ParseCameraSettings(r, camera_files, label, settings);
 }
 
 void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
@@ -83,7 +84,7 @@ void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label
 render::RenderSettings ParseRenderSettings(const RenderRequest& r, const OptionLabel& label,
                                            Warnings& warnings) {
   render::RenderSettings settings = ReadBaseSettings(r, warnings);
-  ApplyOptions(r, label, settings);
+  ApplyOptions(r, ReadCameraFiles(r), label, settings);
   WarnOfOptionsWithoutEffect(r, label, warnings);
   return settings;
 }

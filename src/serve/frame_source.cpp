@@ -27,7 +27,7 @@ WatchedModel FrameSource::Reload(const request::RenderRequest& base) {
   watched.robot = prepared.robot;
   watched.warnings = warnings.messages();
   watched.files = session_->Files(base.model);
-  for (const std::string* file : {&base.rviz, &base.joint_file}) {
+  for (const std::string* file : {&base.rviz, &base.joint_file, &base.camera_info, &base.underlay}) {
     if (!file->empty()) watched.files.push_back(*file);
   }
   return watched;
