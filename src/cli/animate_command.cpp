@@ -39,6 +39,7 @@
 #include "request/request_inputs.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
+#include "tf/bag_transforms.h"
 #include "video/frame_encoder.h"
 #include "video/numbered_files.h"
 #include "video/open_frame_encoder.h"

@@ -28,10 +28,10 @@ double ChangedShare(const image::Image& a, const image::Image& b) {
   EXPECT_EQ(a.width, b.width);
   EXPECT_EQ(a.height, b.height);
   size_t changed = 0;
-  const size_t channels = a.pixels.size() / (static_cast<size_t>(a.width) * a.height);
-  for (size_t i = 0; i + channels <= a.pixels.size(); i += channels) {
+  const size_t channels = a.rgb.size() / (static_cast<size_t>(a.width) * a.height);
+  for (size_t i = 0; i + channels <= a.rgb.size(); i += channels) {
     for (size_t c = 0; c < channels; ++c) {
-      if (std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])) > 24) {
+      if (std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])) > 24) {
         ++changed;
         break;
       }
