@@ -30,7 +30,12 @@ std::uint8_t Channel(float value) {
 }  // namespace
 
 PointSetDrawing::PointSetDrawing()
-    : point_("point.vert", "point.frag"), quad_("point_quad.vert", "point.frag"), box_("point_box.vert", "point.frag") {
+    : point_("point.vert", "point.frag"),
+      quad_("point_quad.vert", "point.frag"),
+      box_("point_box.vert", "point.frag"),
+      splat_program_("point_splat.vert", "point_splat.frag") {
+  glGenVertexArrays(1, &splat_array_);
+  glGenTextures(2, splat_textures_);
   glGenVertexArrays(1, &vertex_array_);
   glBindVertexArray(vertex_array_);
   glGenBuffers(2, buffers_);
@@ -53,6 +58,8 @@ PointSetDrawing::PointSetDrawing()
 }
 
 PointSetDrawing::~PointSetDrawing() {
+  glDeleteTextures(2, splat_textures_);
+  glDeleteVertexArrays(1, &splat_array_);
   glDeleteBuffers(2, buffers_);
   glDeleteVertexArrays(1, &vertex_array_);
 }
@@ -128,6 +135,69 @@ void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d&
   }
   glDisable(GL_PROGRAM_POINT_SIZE);
   glEnable(GL_CULL_FACE);
+}
+
+void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets, const Eigen::Matrix4d& V,
+                                 const Eigen::Matrix4d& P) {
+  // the bound framebuffer's size and sample positions
+  GLint viewport[4] = {0, 0, 0, 0}, samples = 0, max_texture = 0;
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetIntegerv(GL_SAMPLES, &samples);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  // the splat's texture is a sample wide per pixel: wider than GL allows, the sets are drawn by GL
+  const bool can_splat = static_cast<long>(viewport[2]) * std::max(samples, 1) <= max_texture;
+  bool splatting = false;
+  for (const scene::PointSet* points : sets) {
+    if (!can_splat || !PointSplat::Splattable(*points)) {
+      Draw(*points, V, P);
+      continue;
+    }
+    if (!splatting) {
+      std::vector<Eigen::Vector2f> positions(std::max(samples, 1), Eigen::Vector2f(0.5f, 0.5f));
+      for (GLint s = 0; s < samples; ++s) glGetMultisamplefv(GL_SAMPLE_POSITION, s, positions[s].data());
+      splat_.Clear(viewport[2], viewport[3], positions);
+      splatting = true;
+    }
+    splat_.Add(*points, V, P);
+  }
+  if (!splatting) return;
+  splat_.Cover();
+  if (!splat_.empty()) Composite();
+}
+
+// Uploads the splatted rows into the textures and draws a band over those rows, per sample.
+void PointSetDrawing::Composite() {
+  const int width = splat_.width() * splat_.samples(), height = splat_.height();   // texels: samples side by side
+  const auto [first, last] = splat_.rows();
+  const GLenum formats[2][3] = {{GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE}, {GL_R32F, GL_RED, GL_FLOAT}};
+  const void* data[2] = {splat_.colours().data() + static_cast<size_t>(first) * width,
+                         splat_.depths().data() + static_cast<size_t>(first) * width};
+  const bool resize = width != texture_size_[0] || height != texture_size_[1];
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  for (int t = 0; t < 2; ++t) {
+    glActiveTexture(GL_TEXTURE0 + t);
+    glBindTexture(GL_TEXTURE_2D, splat_textures_[t]);
+    if (resize) {
+      glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(formats[t][0]), width, height, 0, formats[t][1],
+                   formats[t][2], nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, first, width, last - first + 1, formats[t][1], formats[t][2], data[t]);
+  }
+  texture_size_[0] = width, texture_size_[1] = height;
+  splat_program_.Use();
+  splat_program_.Set("colours", 0);
+  splat_program_.Set("depths", 1);
+  splat_program_.Set("samples", splat_.samples());
+  const auto clip_y = [&](int row) { return 2.f * static_cast<float>(row) / static_cast<float>(height) - 1.f; };
+  splat_program_.Set("rows", Eigen::Vector2f(clip_y(first), clip_y(last + 1)));
+  glDisable(GL_CULL_FACE);
+  glBindVertexArray(splat_array_);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glBindVertexArray(0);
+  glEnable(GL_CULL_FACE);
+  glActiveTexture(GL_TEXTURE0);
 }
 
 }  // namespace urdfsnap::gl

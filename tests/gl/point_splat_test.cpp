@@ -1,0 +1,106 @@
+// The CPU splat of opaque camera-facing points (gl/internal/point_splat.h), without GL: which
+// samples a point's square covers, the nearest point winning, the rows it reports, the shapes of
+// shaders/point.frag, and points behind the camera or off screen left out.
+#include "gl/internal/point_splat.h"
+
+#include <gtest/gtest.h>
+
+namespace urdfsnap::gl {
+namespace {
+
+using scene::PointSet;
+using Style = PointSet::Style;
+
+constexpr int kWidth = 20, kHeight = 10;
+
+// An orthographic view of 20 x 10 m looking down -Z: world (x, y) lands on window (x + 10, y + 5),
+// the corner of pixels 9 and 10, 4 and 5,
+// window depth 0.5 - z / 20 (the near and far planes at z = 10 and -10).
+Eigen::Matrix4d Orthographic() {
+  Eigen::Matrix4d P = Eigen::Matrix4d::Identity();
+  P(0, 0) = 2.0 / kWidth;
+  P(1, 1) = 2.0 / kHeight;
+  P(2, 2) = -0.1;
+  return P;
+}
+
+PointSet Points(Style style, float size, std::vector<Eigen::Vector3f> positions,
+                const Eigen::Vector4f& rgba = {1, 0, 0, 1}) {
+  PointSet points;
+  points.style = style;
+  points.size = Eigen::Vector3f::Constant(size);
+  points.colours.assign(positions.size(), rgba);
+  points.positions = std::move(positions);
+  return points;
+}
+
+std::uint32_t Rgba(int r, int g, int b) { return r | g << 8 | b << 16 | 255u << 24; }
+
+class PointSplatTest : public ::testing::Test {
+ protected:
+  void Splat(const PointSet& points, std::vector<Eigen::Vector2f> samples = {{0.5f, 0.5f}}) {
+    splat.Clear(kWidth, kHeight, samples);
+    splat.Add(points, Eigen::Matrix4d::Identity(), Orthographic());
+    splat.Cover();
+  }
+  std::size_t At(int x, int y, int sample) const {
+    return (static_cast<std::size_t>(y) * kWidth + x) * splat.samples() + sample;
+  }
+  std::uint32_t Colour(int x, int y, int sample = 0) const { return splat.colours()[At(x, y, sample)]; }
+  float Depth(int x, int y, int sample = 0) const { return splat.depths()[At(x, y, sample)]; }
+  PointSplat splat;
+};
+
+TEST_F(PointSplatTest, APointOfThreePixelsCoversThreeByThreePixelCentres) {
+  Splat(Points(Style::kPoints, 3, {{0, 0, 0}}));
+  int covered = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) covered += Depth(x, y) != PointSplat::kEmpty;
+  }
+  EXPECT_EQ(covered, 9);   // the square [8.5, 11.5) x [3.5, 6.5): pixels 8..10 x 3..5
+  EXPECT_EQ(Colour(8, 3), Rgba(255, 0, 0));
+  EXPECT_EQ(Colour(10, 5), Rgba(255, 0, 0));
+  EXPECT_EQ(Depth(11, 5), PointSplat::kEmpty);   // its centre 11.5 is on the excluded edge
+  EXPECT_FLOAT_EQ(Depth(10, 5), 0.5f);
+  EXPECT_EQ(splat.rows(), std::make_pair(3, 5));
+}
+
+TEST_F(PointSplatTest, EachSampleIsCoveredByItsOwnPosition) {
+  // a 1 m flat square [9.5, 10.5) x [4.5, 5.5): pixel (9, 4) holds only the sample at (0.75, 0.75)
+  Splat(Points(Style::kFlatSquares, 1, {{0, 0, 0}}), {{0.25f, 0.25f}, {0.75f, 0.75f}});
+  EXPECT_EQ(Depth(9, 4, 0), PointSplat::kEmpty);
+  EXPECT_NE(Depth(9, 4, 1), PointSplat::kEmpty);
+  EXPECT_NE(Depth(10, 5, 0), PointSplat::kEmpty);
+  EXPECT_EQ(Depth(10, 5, 1), PointSplat::kEmpty);
+}
+
+TEST_F(PointSplatTest, TheNearestPointWinsWhateverTheOrder) {
+  for (const float first_z : {1.f, -1.f}) {
+    PointSet points = Points(Style::kPoints, 1, {{0, 0, first_z}, {0, 0, -first_z}});
+    points.colours = {{first_z > 0 ? 0.f : 1.f, 0, 1, 1}, {first_z > 0 ? 1.f : 0.f, 0, 1, 1}};
+    Splat(points);
+    EXPECT_EQ(Colour(9, 4), Rgba(0, 0, 255)) << "first z " << first_z;   // the point at z = +1
+    EXPECT_FLOAT_EQ(Depth(9, 4), 0.45f);
+  }
+}
+
+TEST_F(PointSplatTest, SquaresAreOutlinedAndSpheresShadedAsPointFragDoes) {
+  // a 16 m square from x = 2: its middle keeps the colour; pixel 2 (u = 0.03125) is in the outline,
+  // blend 0.316 between 0.6 and 0.6 - 0.2
+  Splat(Points(Style::kSquares, 16, {{0, 0, 0}}, {0.6f, 0.6f, 0.6f, 1}));
+  EXPECT_EQ(Colour(10, 5), Rgba(153, 153, 153));
+  EXPECT_EQ(Colour(2, 5), Rgba(118, 118, 118));
+  // a 4 m disc over pixels 8..11: pixel (9, 4) at u = v = 0.375 is 0.8 + 0.2 * 0.875 of white; the
+  // corner pixel (8, 3) is outside the disc and left empty
+  Splat(Points(Style::kSpheres, 4, {{0, 0, 0}}, {1, 1, 1, 1}));
+  EXPECT_EQ(Colour(9, 4), Rgba(249, 249, 249));
+  EXPECT_EQ(Depth(8, 3), PointSplat::kEmpty);
+}
+
+TEST_F(PointSplatTest, PointsOutsideTheViewAreLeftOut) {
+  Splat(Points(Style::kPoints, 3, {{0, 0, 20}, {30, 0, 0}}));
+  EXPECT_TRUE(splat.empty());
+}
+
+}  // namespace
+}  // namespace urdfsnap::gl
