@@ -35,7 +35,7 @@ PointSetDrawing::PointSetDrawing()
       box_("point_box.vert", "point.frag"),
       splat_program_("point_splat.vert", "point_splat.frag") {
   glGenVertexArrays(1, &splat_array_);
-  glGenTextures(2, splat_textures_);
+  glGenTextures(1, &splat_texture_);
   glGenVertexArrays(1, &vertex_array_);
   glBindVertexArray(vertex_array_);
   glGenBuffers(2, buffers_);
@@ -58,7 +58,7 @@ PointSetDrawing::PointSetDrawing()
 }
 
 PointSetDrawing::~PointSetDrawing() {
-  glDeleteTextures(2, splat_textures_);
+  glDeleteTextures(1, &splat_texture_);
   glDeleteVertexArrays(1, &splat_array_);
   glDeleteBuffers(2, buffers_);
   glDeleteVertexArrays(1, &vertex_array_);
@@ -165,30 +165,24 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
   if (!splat_.empty()) Composite();
 }
 
-// Uploads the splatted rows into the textures and draws a band over those rows, per sample.
+// Uploads the splatted rows into the texture and draws a band over those rows, per sample.
 void PointSetDrawing::Composite() {
   const int width = splat_.width() * splat_.samples(), height = splat_.height();   // texels: samples side by side
   const auto [first, last] = splat_.rows();
-  const GLenum formats[2][3] = {{GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE}, {GL_R32F, GL_RED, GL_FLOAT}};
-  const void* data[2] = {splat_.colours().data() + static_cast<size_t>(first) * width,
-                         splat_.depths().data() + static_cast<size_t>(first) * width};
-  const bool resize = width != texture_size_[0] || height != texture_size_[1];
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  for (int t = 0; t < 2; ++t) {
-    glActiveTexture(GL_TEXTURE0 + t);
-    glBindTexture(GL_TEXTURE_2D, splat_textures_[t]);
-    if (resize) {
-      glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(formats[t][0]), width, height, 0, formats[t][1],
-                   formats[t][2], nullptr);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, first, width, last - first + 1, formats[t][1], formats[t][2], data[t]);
+  static_assert(sizeof(PointSplat::Texel) == 8);   // one GL_RG32UI texel: depth bits, colour
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, splat_texture_);
+  if (width != texture_size_[0] || height != texture_size_[1]) {
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32UI, width, height, 0, GL_RG_INTEGER, GL_UNSIGNED_INT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    texture_size_[0] = width, texture_size_[1] = height;
   }
-  texture_size_[0] = width, texture_size_[1] = height;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, first, width, last - first + 1, GL_RG_INTEGER, GL_UNSIGNED_INT,
+                  splat_.texels().data() + static_cast<size_t>(first) * width);
   splat_program_.Use();
-  splat_program_.Set("colours", 0);
-  splat_program_.Set("depths", 1);
+  splat_program_.Set("texels", 0);
   splat_program_.Set("samples", splat_.samples());
   const auto clip_y = [&](int row) { return 2.f * static_cast<float>(row) / static_cast<float>(height) - 1.f; };
   splat_program_.Set("rows", Eigen::Vector2f(clip_y(first), clip_y(last + 1)));
@@ -197,7 +191,6 @@ void PointSetDrawing::Composite() {
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   glBindVertexArray(0);
   glEnable(GL_CULL_FACE);
-  glActiveTexture(GL_TEXTURE0);
 }
 
 }  // namespace urdfsnap::gl

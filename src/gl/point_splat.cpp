@@ -54,8 +54,7 @@ void PointSplat::Clear(int width, int height, const std::vector<Eigen::Vector2f>
   sample_min_ = sample_max_ = samples.front();
   for (const Eigen::Vector2f& s : samples) sample_min_ = sample_min_.cwiseMin(s), sample_max_ = sample_max_.cwiseMax(s);
   const std::size_t size = static_cast<std::size_t>(width) * height * samples.size();
-  colours_.assign(size, 0);
-  depths_.assign(size, kEmpty);
+  texels_.assign(size, Texel{kEmpty, 0});
   rows_ = {height, -1};
   squares_.clear();
 }
@@ -76,13 +75,11 @@ void PointSplat::CoverSquare(const Square& square) {
   const std::uint32_t flat_packed = Pack(flat, square.rgba[3]);
   const std::size_t count = samples_.size();
   bool drawn = false;
-  float* const depths = depths_.data();
-  std::uint32_t* const colours = colours_.data();
+  Texel* const texels = texels_.data();
   const float depth = square.depth;
   const auto cover = [&](std::size_t at, std::uint32_t packed) {
-    if (depth > depths[at]) return;
-    depths[at] = depth;
-    colours[at] = packed;
+    if (depth > texels[at].depth) return;
+    texels[at] = {depth, packed};
     drawn = true;
   };
   if (square.shape == 0) {

@@ -46,8 +46,8 @@ class PointSplatTest : public ::testing::Test {
   std::size_t At(int x, int y, int sample) const {
     return (static_cast<std::size_t>(y) * kWidth + x) * splat.samples() + sample;
   }
-  std::uint32_t Colour(int x, int y, int sample = 0) const { return splat.colours()[At(x, y, sample)]; }
-  float Depth(int x, int y, int sample = 0) const { return splat.depths()[At(x, y, sample)]; }
+  std::uint32_t Colour(int x, int y, int sample = 0) const { return splat.texels()[At(x, y, sample)].colour; }
+  float Depth(int x, int y, int sample = 0) const { return splat.texels()[At(x, y, sample)].depth; }
   PointSplat splat;
 };
 

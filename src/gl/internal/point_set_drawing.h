@@ -44,7 +44,7 @@ class PointSetDrawing {
   ShaderProgram splat_program_;
   PointSplat splat_;
   unsigned splat_array_ = 0;                    // empty: the full-screen triangle has no attributes
-  unsigned splat_textures_[2] = {0, 0};         // colours, depths: PointSplat's images
+  unsigned splat_texture_ = 0;                  // PointSplat's texels
   int texture_size_[2] = {0, 0};                // their width and height in texels
 };
 

@@ -37,11 +37,15 @@ class PointSplat {
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return static_cast<int>(samples_.size()); }
-  // Both images: rows bottom first (GL's order), each pixel's samples side by side (sample s of
-  // pixel (x, y) at (y * width + x) * samples + s, so a point's samples share cache lines); colour
-  // rgba8 in memory order, depth in [0, 1] as GL's depth range maps it, kEmpty where nothing is.
-  const std::vector<std::uint32_t>& colours() const { return colours_; }
-  const std::vector<float>& depths() const { return depths_; }
+  // One sample: its depth in [0, 1] as GL's depth range maps it (kEmpty where nothing is) and its
+  // colour, rgba8 in memory order, side by side so that a depth test and its write share a line.
+  struct Texel {
+    float depth;
+    std::uint32_t colour;
+  };
+  // The image: rows bottom first (GL's order), each pixel's samples side by side (sample s of pixel
+  // (x, y) at (y * width + x) * samples + s).
+  const std::vector<Texel>& texels() const { return texels_; }
   static constexpr float kEmpty = 2.f;
   // The rows [first, second] that hold anything (first > second when empty).
   std::pair<int, int> rows() const { return rows_; }
@@ -63,8 +67,7 @@ class PointSplat {
   std::vector<Square> squares_, sorted_;
   std::vector<Eigen::Vector2f> samples_;
   Eigen::Vector2f sample_min_, sample_max_;   // their extent within a pixel
-  std::vector<std::uint32_t> colours_;
-  std::vector<float> depths_;
+  std::vector<Texel> texels_;
   std::pair<int, int> rows_{0, -1};
 };
 
