@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <system_error>
+#include <thread>
 
 namespace urdfsnap::gl {
 
@@ -70,7 +73,7 @@ void PointSplat::Keep(float x0, float x1, float y0, float y1, float depth, const
   if (square.px0 <= square.px1 && square.py0 <= square.py1) squares_.push_back(square);
 }
 
-void PointSplat::CoverSquare(const Square& square) {
+bool PointSplat::CoverSquare(const Square& square, int first, int last) {
   const Eigen::Vector3f flat = square.rgba.head<3>();
   const std::uint32_t flat_packed = Pack(flat, square.rgba[3]);
   const std::size_t count = samples_.size();
@@ -89,17 +92,16 @@ void PointSplat::CoverSquare(const Square& square) {
       const Eigen::Vector2f& sample = samples_[s];
       const int px0 = std::max(0, Ceil(square.x0 - sample.x()));
       const int px1 = std::min(width_, Ceil(square.x1 - sample.x()));
-      const int py0 = std::max(0, Ceil(square.y0 - sample.y()));
-      const int py1 = std::min(height_, Ceil(square.y1 - sample.y()));
+      const int py0 = std::max(first, Ceil(square.y0 - sample.y()));
+      const int py1 = std::min(last + 1, Ceil(square.y1 - sample.y()));
       for (int py = py0; py < py1; ++py) {
         for (int px = px0; px < px1; ++px) cover((static_cast<std::size_t>(py) * width_ + px) * count + s, flat_packed);
       }
     }
-    if (drawn) rows_ = {std::min(rows_.first, square.py0), std::max(rows_.second, square.py1)};
-    return;
+    return drawn;
   }
   // shaded: the colour at each pixel's centre, for the samples of the pixel inside the square
-  for (int py = square.py0; py <= square.py1; ++py) {
+  for (int py = std::max(square.py0, first); py <= std::min(square.py1, last); ++py) {
     for (int px = square.px0; px <= square.px1; ++px) {
       Eigen::Vector3f c = flat;
       const float u = (static_cast<float>(px) + 0.5f - square.x0) / (square.x1 - square.x0);
@@ -115,7 +117,15 @@ void PointSplat::CoverSquare(const Square& square) {
       }
     }
   }
-  if (drawn) rows_ = {std::min(rows_.first, square.py0), std::max(rows_.second, square.py1)};
+  return drawn;
+}
+
+void PointSplat::CoverBand(int first, int last, std::pair<int, int>& rows) {
+  for (const Square& square : sorted_) {
+    if (square.py0 > last) break;   // the rest start above the band
+    if (square.py1 < first || !CoverSquare(square, first, last)) continue;
+    rows = {std::min(rows.first, std::max(square.py0, first)), std::max(rows.second, std::min(square.py1, last))};
+  }
 }
 
 void PointSplat::Cover() {
@@ -125,8 +135,23 @@ void PointSplat::Cover() {
   for (std::size_t row = 1; row < starts.size(); ++row) starts[row] += starts[row - 1];
   sorted_.resize(squares_.size());
   for (const Square& square : squares_) sorted_[starts[static_cast<std::size_t>(square.py0)]++] = square;
-  for (const Square& square : sorted_) CoverSquare(square);
   squares_.clear();
+  // two bands of rows, split where half the squares start: a texel is written by one thread only,
+  // in the squares' order, so the image is the same as from one thread. Few squares are not worth
+  // a thread.
+  const int middle = sorted_.size() >= kSquaresPerThread ? sorted_[sorted_.size() / 2].py0 : height_;
+  std::pair<int, int> upper{height_, -1};
+  std::optional<std::thread> helper;
+  if (middle < height_ && std::thread::hardware_concurrency() > 1) {
+    try {
+      helper.emplace([&] { CoverBand(middle, height_ - 1, upper); });
+    } catch (const std::system_error&) {
+      // no thread to be had: this one covers both bands
+    }
+  }
+  CoverBand(0, helper ? middle - 1 : height_ - 1, rows_);
+  if (helper) helper->join();
+  rows_ = {std::min(rows_.first, upper.first), std::max(rows_.second, upper.second)};
 }
 
 void PointSplat::Add(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {

@@ -97,6 +97,29 @@ TEST_F(PointSplatTest, SquaresAreOutlinedAndSpheresShadedAsPointFragDoes) {
   EXPECT_EQ(Depth(8, 3), PointSplat::kEmpty);
 }
 
+TEST_F(PointSplatTest, ManyPointsAreCoveredInTwoBandsWithTheSameResult) {
+  // 2 x 5,000 one-pixel points over a 100 x 50 image, the far red ones after the near blue ones in
+  // one half and before them in the other: enough for a second thread; every pixel is blue
+  constexpr int kW = 100, kH = 50;
+  Eigen::Matrix4d P = Orthographic();
+  P(0, 0) = 2.0 / kW, P(1, 1) = 2.0 / kH;
+  PointSet points = Points(Style::kPoints, 1, {});
+  for (int i = 0; i < 2 * kW * kH; ++i) {
+    const int pixel = i / 2, x = pixel % kW, y = pixel / kW;
+    const bool near = (i % 2 == 0) == (y < kH / 2);
+    points.positions.emplace_back(x + 0.5f - kW / 2.f, y + 0.5f - kH / 2.f, near ? 1.f : -1.f);
+    points.colours.emplace_back(near ? 0.f : 1.f, 0, near ? 1.f : 0.f, 1);
+  }
+  ASSERT_GE(points.positions.size(), 2 * PointSplat::kSquaresPerThread);
+  splat.Clear(kW, kH, {{0.5f, 0.5f}});
+  splat.Add(points, Eigen::Matrix4d::Identity(), P);
+  splat.Cover();
+  int blue = 0;
+  for (const PointSplat::Texel& texel : splat.texels()) blue += texel.colour == Rgba(0, 0, 255);
+  EXPECT_EQ(blue, kW * kH);
+  EXPECT_EQ(splat.rows(), std::make_pair(0, kH - 1));
+}
+
 TEST_F(PointSplatTest, PointsOutsideTheViewAreLeftOut) {
   Splat(Points(Style::kPoints, 3, {{0, 0, 20}, {30, 0, 0}}));
   EXPECT_TRUE(splat.empty());

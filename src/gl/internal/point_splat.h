@@ -10,7 +10,9 @@
 // (the random walk missed the cache on half the depth tests). No GL here.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -30,8 +32,9 @@ class PointSplat {
   // Adds the squares of `points` seen through view `V` and projection `P`.
   void Add(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P);
   // Covers the samples of every square added since Clear: the nearest wins, on a tie the later
-  // (GL_LEQUAL).
+  // (GL_LEQUAL). With many squares the rows are split in two bands, one covered by another thread.
   void Cover();
+  static constexpr std::size_t kSquaresPerThread = 4096;   // fewer squares: one thread
 
   bool empty() const { return rows_.first > rows_.second; }
   int width() const { return width_; }
@@ -62,7 +65,11 @@ class PointSplat {
   };
   // Keeps the square, snapped as llvmpipe snaps, unless it covers no pixel.
   void Keep(float x0, float x1, float y0, float y1, float depth, const Eigen::Vector4f& rgba, int shape);
-  void CoverSquare(const Square& square);
+  // Covers the samples of `square` in rows [first, last]; whether it covered any.
+  bool CoverSquare(const Square& square, int first, int last);
+  // Covers the rows [first, last] with every sorted square that reaches them, widening `rows` to
+  // the rows drawn.
+  void CoverBand(int first, int last, std::pair<int, int>& rows);
   int width_ = 0, height_ = 0;
   std::vector<Square> squares_, sorted_;
   std::vector<Eigen::Vector2f> samples_;
