@@ -21,8 +21,10 @@ std::uint32_t Pack(const Eigen::Vector3f& rgb, float alpha) {
   return Byte(rgb[0]) | Byte(rgb[1]) << 8 | Byte(rgb[2]) << 16 | Byte(alpha) << 24;
 }
 
-// ceil for window coordinates (well within int), without a libm call
+// ceil for window coordinates, without a libm call; a square reaching far off the screen (a big
+// one near the camera) is held at a million pixels, well within int
 int Ceil(float v) {
+  v = std::clamp(v, -1e6f, 1e6f);
   const int i = static_cast<int>(v);
   return i + (static_cast<float>(i) < v);
 }
@@ -65,6 +67,9 @@ void PointSplat::Clear(int width, int height, const std::vector<Eigen::Vector2f>
 void PointSplat::Keep(float x0, float x1, float y0, float y1, float depth, const Eigen::Vector4f& rgba, int shape) {
   // llvmpipe snaps vertices to 1/256 pixel (lp_setup's FIXED_ORDER 8) before it tests samples
   const auto snap = [](float v) { return std::round(v * 256.f) / 256.f; };
+  if (!std::isfinite(x0) || !std::isfinite(x1) || !std::isfinite(y0) || !std::isfinite(y1) || !std::isfinite(depth)) {
+    return;   // a point at infinity: GL would draw nothing either
+  }
   Square square{snap(x0), snap(x1), snap(y0), snap(y1), depth, rgba, shape, 0, 0, 0, 0};
   square.px0 = std::max(0, Ceil(square.x0 - sample_max_.x()));
   square.px1 = std::min(width_ - 1, Ceil(square.x1 - sample_min_.x()) - 1);

@@ -1,7 +1,10 @@
 // The CPU splat of opaque camera-facing points (gl/internal/point_splat.h), without GL: which
 // samples a point's square covers, the nearest point winning, the rows it reports, the shapes of
-// shaders/point.frag, and points behind the camera or off screen left out.
+// shaders/point.frag, two bands of rows on two threads, and points behind the camera, off screen
+// or not finite left out.
 #include "gl/internal/point_splat.h"
+
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -120,9 +123,14 @@ TEST_F(PointSplatTest, ManyPointsAreCoveredInTwoBandsWithTheSameResult) {
   EXPECT_EQ(splat.rows(), std::make_pair(0, kH - 1));
 }
 
-TEST_F(PointSplatTest, PointsOutsideTheViewAreLeftOut) {
-  Splat(Points(Style::kPoints, 3, {{0, 0, 20}, {30, 0, 0}}));
+TEST_F(PointSplatTest, PointsOutsideTheViewOrNotFiniteAreLeftOutAndHugeOnesHeldToTheView) {
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  Splat(Points(Style::kPoints, 3, {{0, 0, 20}, {30, 0, 0}, {inf, 0, 0}, {nan, 0, 0}}));
   EXPECT_TRUE(splat.empty());
+  // a square far bigger than the view covers all of it
+  Splat(Points(Style::kFlatSquares, 1e12f, {{0, 0, 0}, {nan, 0, 0}}));
+  EXPECT_EQ(splat.rows(), std::make_pair(0, kHeight - 1));
+  EXPECT_EQ(Colour(0, 0), Rgba(255, 0, 0));
 }
 
 }  // namespace
