@@ -1,13 +1,13 @@
 // The opaque camera-facing point styles (Points, Squares, Flat Squares, Spheres) drawn on the CPU
 // into a per-sample colour and depth image, which PointSetDrawing composites into the frame with
-// one full-screen draw writing gl_FragDepth (so the robot still hides points behind it and points
-// hide the robot). llvmpipe spends ~0.6 us of rasteriser time per point primitive, while a square
-// of a few pixels is a few dozen depth tests here: 100k points cost ~80 ms of CPU through GL and a
-// few ms this way (docs/benchmarks.md). Each sample is covered exactly as GL's rasteriser covers
-// it (sample inside the square; the square's colour and shape evaluated at the pixel centre, as a
-// multisampled fragment shader runs once per pixel), so the picture is the GL one. The squares are
-// sorted by row before they are covered, so the image is walked row by row rather than at random
-// (the random walk missed the cache on half the depth tests). No GL here.
+// one draw per sample writing gl_FragDepth (so the robot still hides points behind it and points
+// hide the robot). llvmpipe spends ~0.6 us of rasteriser time per point primitive: 100k points
+// cost 75-95 ms of CPU a frame through GL and ~25 this way (docs/point-clouds.md). Each sample is
+// covered exactly as llvmpipe covers it (sample inside the square; the square's colour and shape
+// evaluated at the pixel centre, as a multisampled fragment shader runs once per pixel), so the
+// picture is the GL one. The squares are sorted by row before they are covered, so the image is
+// walked row by row rather than at random (a Points frame went from ~35 to ~29 ms of CPU). No GL
+// here.
 #pragma once
 
 #include <cstddef>
