@@ -167,9 +167,11 @@ struct SceneRenderer::Impl {
   void DrawMesh(const scene::DrawItem& item, const Eigen::Matrix4d& V, const Eigen::Matrix4d& PV) {
     const int units = item.texture ? std::clamp(item.texture_units, 0, kMaxTextureUnits) : 0;
     if (units > 0 && !lit_textured) lit_textured.emplace("lit.vert", "lit.frag", "TEXTURED");
+    const Eigen::Matrix4d M = item.X_FG.matrix();
+    const GpuMesh& mesh = meshes.Get(item.mesh);
+    if (mesh.OutsideClipVolume(PV * M)) return;
     const ShaderProgram& program = units > 0 ? *lit_textured : lit;
     program.Use();
-    const Eigen::Matrix4d M = item.X_FG.matrix();
     program.Set("model_view_projection", Eigen::Matrix4f((PV * M).cast<float>()));
     const Eigen::Matrix3d MV = (V * M).topLeftCorner<3, 3>();
     program.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
@@ -182,7 +184,7 @@ struct SceneRenderer::Impl {
     }
     // a mirroring scale turns the winding around; Ogre flips culling for such nodes, and so do we
     glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
-    meshes.Get(item.mesh).Draw();
+    mesh.Draw();
   }
 
   // 1-pixel lines, or with a width the camera-facing ribbons of RibbonVertices
@@ -339,10 +341,12 @@ struct SceneRenderer::Impl {
         throw Error("the label image holds 65534 links; link index " + std::to_string(item.link) + " does not fit");
       }
       const Eigen::Matrix4d M = item.X_FG.matrix();
+      const GpuMesh& mesh = meshes.Get(item.mesh);
+      if (mesh.OutsideClipVolume(P * V * M)) continue;
       label.Set("model_view", Eigen::Matrix4f((V * M).cast<float>()));
       label.Set("label", static_cast<unsigned>(item.link + 1));
       glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
-      meshes.Get(item.mesh).Draw();
+      mesh.Draw();
     }
     return label_framebuffer->ReadLabels();
   }
