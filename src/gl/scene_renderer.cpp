@@ -357,8 +357,12 @@ struct SceneRenderer::Impl {
   ShaderProgram line;
   LazyShaderProgram text{"text.vert", "text.frag"};
   LazyShaderProgram label{"label.vert", "label.frag"};
+  // the point programs, made for the first point set drawn
   std::optional<PointSetDrawing> point_sets_made;
-  PointSetDrawing& point_sets() { if (!point_sets_made) point_sets_made.emplace(); return *point_sets_made; }
+  PointSetDrawing& point_sets() {
+    if (!point_sets_made) point_sets_made.emplace();
+    return *point_sets_made;
+  }
   unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
   std::unique_ptr<Framebuffer> framebuffer;
   std::unique_ptr<LabelFramebuffer> label_framebuffer;
