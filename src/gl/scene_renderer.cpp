@@ -271,13 +271,15 @@ struct SceneRenderer::Impl {
         transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
       }
     }
+    std::vector<const scene::PointSet*> opaque_points;
     for (const auto& points : scene.points) {
       if (Opaque(points)) {
-        point_sets().Draw(points, V, P);
+        opaque_points.push_back(&points);
       } else {
         transparent.push_back({(Centre(points.positions) - eye).squaredNorm(), &points});
       }
     }
+    point_sets().DrawOpaque(opaque_points, V, P);
     for (const auto& triangles : scene.triangles) {
       if (Opaque(triangles)) {
         DrawTriangles(triangles, PV);

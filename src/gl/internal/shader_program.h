@@ -28,6 +28,7 @@ class ShaderProgram {
   void Set(const char* name, const Eigen::Matrix3f& value) const;
   void Set(const char* name, const Eigen::Vector4f& value) const;
   void Set(const char* name, const Eigen::Vector3f& value) const;
+  void Set(const char* name, const Eigen::Vector2f& value) const;
   void Set(const char* name, float value) const;
   void Set(const char* name, int value) const;        // also a sampler's texture unit
   void Set(const char* name, unsigned value) const;
