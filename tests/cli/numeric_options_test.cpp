@@ -151,6 +151,8 @@ const std::vector<CommandOption>& Options() {
         {"animate", "--quiet", Kind::kFlag},
         {"animate", "--shard", Kind::kText},
         {"animate", "--no-shard", Kind::kFlag},
+        {"animate", "--display", Kind::kText},
+        {"animate", "--message", Kind::kText},
         {"render", "--mask", Kind::kText},
         {"render", "--display", Kind::kText},
         {"render", "--message", Kind::kText},
