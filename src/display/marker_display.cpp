@@ -25,15 +25,18 @@ bool Expired(const Marker& m, std::int64_t received_ns, std::int64_t time_ns) {
 
 void MarkerDisplay::Receive(const bag::MessageValue& message, std::int64_t time_ns,
                             const std::string& where, Warnings& warnings) {
-  // what no later draw shows goes, so that a long recording keeps only the live markers
-  std::erase_if(markers_, [&](const auto& entry) {
-    return Expired(entry.second.marker, entry.second.received_ns, time_ns);
-  });
+  Expire(time_ns);
   if (!settings_.array) {
     Apply(DecodeMarker(message), time_ns, where, warnings);
     return;
   }
   for (Marker& marker : DecodeMarkerArray(message)) Apply(std::move(marker), time_ns, where, warnings);
+}
+
+void MarkerDisplay::Expire(std::int64_t time_ns) {
+  std::erase_if(markers_, [&](const auto& entry) {
+    return Expired(entry.second.marker, entry.second.received_ns, time_ns);
+  });
 }
 
 void MarkerDisplay::Apply(Marker marker, std::int64_t time_ns, const std::string& where,
