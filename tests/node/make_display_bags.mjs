@@ -1,10 +1,11 @@
 // Writes displays_moving.mcap, the bag of urdfsnap's animated-display tests, with the MCAP project's
-// own writer and Foxglove's ROS 2 CDR serialiser: 3 s of the mrm arm turning its first joint
+// own writer and Foxglove's ROS 2 CDR serialiser: 3 s (or SECONDS) of the mrm arm turning its first joint
 // (/joint_states at 30 Hz) while /tf drives odom -> base_link forward, a 10 Hz PointCloud2 ring in
 // the lidar frame (/cloud, POINTS points), a 2 Hz nav_msgs/Path, and a MarkerArray (/markers): a
 // sphere every 0.5 s living 0.6 s, a cube frame_locked to link_05, a DELETEALL at 2.5 s, and at
 // 1.5 s a line strip that claims 10^8 points over the bytes of two (a hostile message).
-// usage: node make_display_bags.mjs OUT_DIR [POINTS]   (POINTS defaults to 2000)
+// usage: node make_display_bags.mjs OUT_DIR [POINTS [SECONDS]]   (2000 points, 3 s: the tests';
+// bench/animate/display_bag_bench.sh asks for a lidar's size and a longer recording)
 import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -16,6 +17,7 @@ import { kSeparator } from "./ros2_schemas.mjs";
 const out = process.argv[2];
 if (!out) throw new Error("usage: node make_display_bags.mjs OUT_DIR [POINTS]");
 const cloudPoints = Number(process.argv[3] ?? 2000);
+const seconds = Number(process.argv[4] ?? 3);
 mkdirSync(out, { recursive: true });
 
 // ROS 1 style time primitives of the definitions package, as ROS 2 names them
@@ -103,7 +105,7 @@ function hostileMarkers(t) {
   throw new Error("the line strip's first point was not found");
 }
 
-for (let k = 0; k <= 90; ++k) {   // 30 Hz joints, 10 Hz base, 3 s
+for (let k = 0; k <= 30 * seconds; ++k) {   // 30 Hz joints, 10 Hz base
   const t = k / 30;
   add("/joint_states", t, types[1], { header: header("", t), name: kJoints, position: kJoints.map((_, j) => (j === 0 ? t : 0.3 * Math.sin(t))), velocity: [], effort: [] });
   if (k % 3 === 0) add("/tf", t, types[2], { transforms: [transform("odom", "base_link", t, 0.4 * t, 0, 0, 0.2 * t)] });
