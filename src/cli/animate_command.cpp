@@ -17,7 +17,7 @@
 #include "animation/render_animation.h"
 #include "animation/sequence_outputs.h"
 #include "bag/joint_state_bag.h"
-#include "bag/robot_description.h"
+#include "bag/recorded_description.h"
 #include "cli/bag_batch.h"
 #include "cli/bag_model.h"
 #include "cli/bag_scene.h"

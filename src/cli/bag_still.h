@@ -12,7 +12,7 @@
 
 #include "animation/animation_frames.h"
 #include "bag/joint_state_bag.h"
-#include "bag/robot_description.h"
+#include "bag/recorded_description.h"
 #include "cli/bag_scene.h"
 #include "cli/display_options.h"
 #include "common/warnings.h"

@@ -21,7 +21,7 @@
 #include "serve/render_thread.h"
 #include "serve/initial_view.h"
 #include "serve/query_request.h"
-#include "serve/robot_json.h"
+#include "serve/page_robot_json.h"
 #include "request/resolved_request.h"
 #include "request/value_parsing.h"
 
@@ -245,7 +245,7 @@ struct Server::Impl {
     if (!state->robot) {
       return SetJson(res, 422, {{"error", kErrorPrefix + state->error}, {"model", state->generation}});
     }
-    res.set_content(RobotJson(*state->robot, state->warnings), "application/json");
+    res.set_content(PageRobotJson(*state->robot, state->warnings), "application/json");
   }
 
   void Status(httplib::Response& res) {
