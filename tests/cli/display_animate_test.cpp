@@ -120,6 +120,39 @@ TEST_F(DisplayAnimateTest, AnMp4DecodesToTheFramesWithDisplays) {
   }
 }
 
+TEST_F(DisplayAnimateTest, AnRvizConfigsDisplaysAndFixedFrameAreEveryFrames) {
+  const std::string config = Write("view.rviz", R"(Visualization Manager:
+  Class: ""
+  Displays:
+    - Class: rviz/PointCloud2
+      Name: lidar
+      Enabled: true
+      Topic: /cloud
+      Style: Boxes
+      Size (m): 0.08
+      Color Transformer: FlatColor
+      Color: 0; 255; 0
+    - Class: rviz_default_plugins/MarkerArray
+      Name: markers
+      Enabled: true
+      Topic: /markers
+  Global Options:
+    Fixed Frame: odom
+)");
+  const std::string view = " --rviz " + config + " --size 320x240 --yaw 0.6 --pitch 0.5 --distance 8 --focal 0.6,0,0.8";
+  Ok("animate " + bag_ + view + " --fps 10 -q -o " + Path("frames/%03d.png"));
+  Ok("render --bag " + bag_ + " --at 1" + view + " -o " + Path("still.png"));
+  EXPECT_EQ(ReadBytes(Frame(10)), ReadBytes(Path("still.png")));
+  // the cloud as green boxes
+  EXPECT_GT(Count(image::ReadPng(Frame(10)), 0, 200, 0), 300);
+}
+
+TEST_F(DisplayAnimateTest, PrintFrameOfABagsDisplaysIsAnError) {
+  const Result result = RunUrdfsnap("animate " + bag_ + " --display MarkerArray:/markers --print-frame 3");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("--print-frame: the frames show the bag's messages"), std::string::npos) << result.output;
+}
+
 TEST_F(DisplayAnimateTest, ACalibratedCameraWithDisplaysIsAnError) {
   const Result result = RunUrdfsnap("animate " + bag_ + kDisplays + " --camera-pose 0,0,2,1,0,0,0 -o " + Path("c.mp4"));
   EXPECT_EQ(result.status, 2);
