@@ -221,6 +221,10 @@ const std::vector<SuiteKey>& SuiteKeys() {
       {"args", Kind::kText},
       {"packages", Kind::kText},
       {"xacro-ns", Kind::kFlag},
+      {"bag", Kind::kText},
+      // a number or a stamp, read once the bag is, as render's --at
+      {"at", Kind::kText},
+      {"displays", Kind::kText},
       {"joints", Kind::kNumber, "{base_link__link_01: {v}}"},
       {"max-delta", Kind::kNumber, "{v}"},
       {"max-fraction", Kind::kNumber, "{v}"},
