@@ -53,13 +53,16 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   prepared.settings.view = frames_->View(0);
 }
 
+scene::Scene BagStill::Scene(Warnings& warnings) const {
+  return frames_->Scene(*scene_.robot.renderer, 0, warnings);
+}
+
 image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameOutputs& outputs,
                             Warnings& warnings) const {
   const request::Prepared& p = scene_.robot;
   if (p.settings.camera) return session.Draw(p, outputs);
   return session.GlRenderer(p.settings.samples)
-      .Render(frames_->Scene(*p.renderer, 0, warnings), p.settings.view, p.settings.size.width,
-              p.settings.size.height, outputs);
+      .Render(Scene(warnings), p.settings.view, p.settings.size.width, p.settings.size.height, outputs);
 }
 
 }  // namespace urdfsnap::cli

@@ -52,6 +52,10 @@ class BagStill {
   // The robot as drawn: the moment's joint positions and the view (--fit applied to this moment).
   const request::Prepared& prepared() const { return scene_.robot; }
 
+  // The still's scene in the orbit view (with its displays), for a renderer of the caller's. Call
+  // it, or Draw, once: the displays have been fed up to the moment.
+  scene::Scene Scene(Warnings& warnings) const;
+
   // Draws the still (with its displays) through `session`'s GL renderer into the images `outputs`
   // asks for. Call it once: the displays have been fed up to the moment.
   image::Frame Draw(request::RenderSession& session, const image::FrameOutputs& outputs, Warnings& warnings) const;
