@@ -244,15 +244,21 @@ struct SceneRenderer::Impl {
   // back to front, as Ogre orders RViz's scene.
   image::Image DrawColour(const scene::Scene& scene, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P,
                           int width, int height) {
+    ClearColourFramebuffer(scene.background, width, height);
+    const Eigen::Vector3d eye = V.inverse().topRightCorner<3, 1>();
+    DrawBlended(DrawOpaque(scene, V, P, eye), V, P, eye);
+    return framebuffer->ReadPixels();
+  }
+
+  // Binds the colour framebuffer (made anew for another size) cleared to `background`, depth-tested
+  // and back faces culled.
+  void ClearColourFramebuffer(const Eigen::Vector3f& background, int width, int height) {
     if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height) {
       framebuffer.reset();
       framebuffer = std::make_unique<Framebuffer>(width, height, samples);
     }
     framebuffer->Bind();
-    const Eigen::Matrix4d PV = P * V;
-    const Eigen::Vector3d eye = V.inverse().topRightCorner<3, 1>();
-
-    glClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
+    glClearColor(background.x(), background.y(), background.z(), 1.0f);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -260,8 +266,13 @@ struct SceneRenderer::Impl {
     glDepthFunc(GL_LEQUAL);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
+  }
 
-    // opaque geometry first, writing depth
+  // Draws the opaque meshes, point sets and triangles, writing depth; returns the rest (transparent
+  // ones, every line set and label) with their squared distances from `eye`, back to front.
+  std::vector<Transparent> DrawOpaque(const scene::Scene& scene, const Eigen::Matrix4d& V,
+                                      const Eigen::Matrix4d& P, const Eigen::Vector3d& eye) {
+    const Eigen::Matrix4d PV = P * V;
     glDisable(GL_BLEND);
     std::vector<Transparent> transparent;
     for (const auto& item : scene.items) {
@@ -294,10 +305,15 @@ struct SceneRenderer::Impl {
     for (const auto& text_label : scene.labels) {
       transparent.push_back({(text_label.anchor - eye).squaredNorm(), &text_label});
     }
-
-    // then blended geometry back to front, depth-tested but not writing depth
     std::stable_sort(transparent.begin(), transparent.end(),
                      [](const Transparent& a, const Transparent& b) { return a.depth > b.depth; });
+    return transparent;
+  }
+
+  // Draws `transparent` in its order, blended, depth-tested but not writing depth.
+  void DrawBlended(const std::vector<Transparent>& transparent, const Eigen::Matrix4d& V,
+                   const Eigen::Matrix4d& P, const Eigen::Vector3d& eye) {
+    const Eigen::Matrix4d PV = P * V;
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
@@ -315,7 +331,6 @@ struct SceneRenderer::Impl {
       }
     }
     glDepthMask(GL_TRUE);
-    return framebuffer->ReadPixels();
   }
 
   // The label image (the depths stay in the label framebuffer for ReadDepths): every draw item
