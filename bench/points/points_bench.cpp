@@ -14,9 +14,7 @@
 
 #include "../pipeline/frame_loop.h"
 #include "../pipeline/timing.h"
-#include "common/warnings.h"
-#include "model/joint_values.h"
-#include "render/robot_renderer.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -49,12 +47,7 @@ int main(int argc, char** argv) {
   const std::size_t count = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 100000;
   const int frames = argc > 2 ? std::atoi(argv[2]) : 30;
   const std::string model = std::string(URDFSNAP_SOURCE_DIR) + "/models/mrm_description/urdf/mrm.urdf";
-  Warnings warnings;
-  const auto robot = bench::LoadRobotFile(model);
-  scene::SceneOptions options;
-  options.model_file = model;
-  const render::RobotRenderer robot_renderer(robot, options, warnings);
-  const scene::Scene posed = robot_renderer.Pose(model::ResolveJointPositions(*robot, {}, true, warnings));
+  const scene::Scene posed = bench::ZeroPoseScene(model);
   gl::SceneRenderer renderer(argc > 3 ? std::atoi(argv[3]) : 4);
   // wall time (median) and the CPU time of all threads (mean), per frame in ms: on a shared
   // machine the wall time grows with the load, the CPU time much less
