@@ -3,7 +3,8 @@
 // RViz's default view with a cloud of N points (a lidar-like ring of walls and floor around the
 // robot, coloured by height), drawn in each style with 4x multisampling and read back; the median
 // per-frame time of the draw alone and of the robot without points, through the typed core.
-// usage: urdfsnap_points_bench [POINTS [FRAMES [SAMPLES]]]   (defaults 100000, 30 and 4)
+// usage: urdfsnap_points_bench [POINTS [FRAMES [SAMPLES [STYLE]]]]   (defaults 100000, 30, 4 and
+// every style; STYLE as the table names it, "Points" or "Flat Squares", to profile one)
 // Timings only: no test asserts on them.
 #include <cmath>
 #include <cstdio>
@@ -66,7 +67,9 @@ int main(int argc, char** argv) {
                                                   {Style::kSquares, "Squares (0.01 m)"},
                                                   {Style::kSpheres, "Spheres (0.01 m)"},
                                                   {Style::kBoxes, "Boxes (0.01 m)"}};
+  const std::string only = argc > 4 ? argv[4] : "";
   for (const auto& [style, name] : styles) {
+    if (!only.empty() && std::string(name).rfind(only + " (", 0) != 0) continue;
     scene::Scene scene = posed;
     scene.points.push_back(Cloud(count, style));
     const auto [style_wall, style_cpu] = time(scene);

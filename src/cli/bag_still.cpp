@@ -1,5 +1,5 @@
 // BagStill: the bag's trajectory read, a one-frame plan at --at, the robot prepared through
-// PrepareBagScene and fitted by AnimationFrames, drawn with its TF display.
+// PrepareBagScene and fitted by AnimationFrames, drawn with its TF display and message displays.
 #include "cli/bag_still.h"
 
 #include <cmath>
@@ -9,7 +9,6 @@
 #include "common/number_text.h"
 #include "motion/trajectory_file.h"
 #include "request/value_parsing.h"
-#include "tf/bag_transforms.h"
 
 namespace urdfsnap::cli {
 
@@ -30,8 +29,7 @@ void BagStillOptions::AddOptions(CLI::App& command) {
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
-                   bool model_from_bag, Warnings& warnings)
-    : bag_(o.bag) {
+                   bool model_from_bag, const DisplayOptions& displays, Warnings& warnings) {
   request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
   const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
   const model::NamedValues joints = resolved.joints;   // -j and --joints: for joints the bag does not name
@@ -45,6 +43,7 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   }
   PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), model_from_bag,
                   warnings, scene_);
+  AddSceneDisplays(displays, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_, warnings);
   request::Prepared& prepared = scene_.robot;
   poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);
   const render::RenderSettings& s = prepared.settings;
@@ -54,23 +53,8 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   prepared.settings.view = frames_->View(0);
 }
 
-std::int64_t BagStill::StampNanoseconds() const {
-  return static_cast<std::int64_t>(std::llround((trajectory_.stamp_at_zero.value_or(0) + plan_.trajectory_start) * 1e9));
-}
-
-display::FrameLookup BagStill::Frames() const {
-  // the scene reads the bag's TF only when it shows it; the displays' frames need it anyway
-  const std::shared_ptr<const tf::TfBuffer> transforms =
-      scene_.transforms && !scene_.transforms->frames().empty()
-          ? scene_.transforms
-          : std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(bag_));
-  const request::Prepared& p = scene_.robot;
-  const std::string fixed = p.settings.scene.fixed_frame.empty() ? p.robot->links().front().name : p.settings.scene.fixed_frame;
-  return [transforms, fixed](const std::string& frame, std::int64_t time_ns) -> std::optional<Eigen::Isometry3d> {
-    const std::optional<tf::Lookup> found = transforms->Find(fixed, frame, time_ns);
-    if (!found) return std::nullopt;
-    return found->X_TS;
-  };
+scene::Scene BagStill::Scene(Warnings& warnings) const {
+  return frames_->Scene(*scene_.robot.renderer, 0, warnings);
 }
 
 image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameOutputs& outputs,
@@ -78,8 +62,7 @@ image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameO
   const request::Prepared& p = scene_.robot;
   if (p.settings.camera) return session.Draw(p, outputs);
   return session.GlRenderer(p.settings.samples)
-      .Render(frames_->Scene(*p.renderer, 0, warnings), p.settings.view, p.settings.size.width,
-              p.settings.size.height, outputs);
+      .Render(Scene(warnings), p.settings.view, p.settings.size.width, p.settings.size.height, outputs);
 }
 
 }  // namespace urdfsnap::cli
