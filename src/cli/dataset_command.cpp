@@ -47,10 +47,10 @@ void AddSceneOptions(CLI::App& command, request::RenderRequest& request) {
     return std::find(std::begin(kDrawnPerSample), std::end(kDrawnPerSample), name) != std::end(kDrawnPerSample);
   };
   for (const request::TextOption& option : request::TextOptions()) {
-    if (!drawn(option.name)) command.add_option("--" + std::string(option.name), request.*option.field, option.help);
+    if (!drawn(option.name)) command.add_option(request::CommandLineLabel(option.name), request.*option.field, option.help);
   }
   for (const request::FlagOption& option : request::FlagOptions()) {
-    if (!drawn(option.name)) command.add_flag("--" + std::string(option.name), request.*option.field, option.help);
+    if (!drawn(option.name)) command.add_flag(request::CommandLineLabel(option.name), request.*option.field, option.help);
   }
 }
 

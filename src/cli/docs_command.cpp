@@ -190,7 +190,7 @@ void AddDocsCommand(CLI::App& app) {
   o->sharding.AddOptions(*cmd, "pictures and animations of the page");
   o->render.AddOptions(*cmd, kNotOnDocs);
   for (const std::string_view name : kNotOnDocs) {
-    const std::string option = "--" + std::string(name);
+    const std::string option = request::CommandLineLabel(name);
     const auto given = [o, name] { o->refused.emplace_back(name); };
     if (name == "fit" || name == "distort") {
       cmd->add_flag_callback(option, given)->group("");

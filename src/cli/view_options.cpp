@@ -3,16 +3,18 @@
 
 #include <algorithm>
 
+#include "request/settings_parsing.h"
+
 namespace urdfsnap::cli {
 
 void AddViewOptions(CLI::App& command, request::RenderRequest& request,
                     std::span<const std::string_view> left_out) {
   const auto kept = [&](const char* name) { return std::find(left_out.begin(), left_out.end(), name) == left_out.end(); };
   for (const request::TextOption& option : request::TextOptions()) {
-    if (kept(option.name)) command.add_option("--" + std::string(option.name), request.*option.field, option.help);
+    if (kept(option.name)) command.add_option(request::CommandLineLabel(option.name), request.*option.field, option.help);
   }
   for (const request::FlagOption& option : request::FlagOptions()) {
-    if (kept(option.name)) command.add_flag("--" + std::string(option.name), request.*option.field, option.help);
+    if (kept(option.name)) command.add_flag(request::CommandLineLabel(option.name), request.*option.field, option.help);
   }
 }
 

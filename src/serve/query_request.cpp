@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "common/error.h"
+#include "request/settings_parsing.h"
 
 namespace urdfsnap::serve {
 
@@ -37,7 +38,7 @@ std::string KnownKeys() {
 bool FlagValue(const std::string& key, const std::string& value) {
   if (value.empty() || value == "true" || value == "1") return true;
   if (value == "false" || value == "0") return false;
-  throw Error("--" + key + " '" + value + "': expected true, false, 1, 0 or no value");
+  throw Error(request::CommandLineLabel(key) + " '" + value + "': expected true, false, 1, 0 or no value");
 }
 
 }  // namespace
@@ -55,11 +56,11 @@ request::RenderRequest RequestFromQuery(const Query& query, const request::Rende
     } else if (const request::FlagOption* flag = FindFlag(key)) {
       r.*flag->field = FlagValue(key, value);
     } else if (const request::TextOption* text = FindText(key); text && !text->is_path) {
-      if (value.empty()) throw Error("--" + key + " needs a value (" + key + "=...)");
+      if (value.empty()) throw Error(request::CommandLineLabel(key) + " needs a value (" + key + "=...)");
       r.*text->field = value;
     } else if (text) {
-      throw Error("--" + key + " names a file, which a URL cannot: start urdfsnap serve with --" +
-                  key + " FILE instead");
+      throw Error(request::CommandLineLabel(key) + " names a file, which a URL cannot: start urdfsnap serve with " +
+                  request::CommandLineLabel(key) + " FILE instead");
     } else {
       throw Error("unknown option '" + key + "'; the keys are render's options: " + KnownKeys());
     }

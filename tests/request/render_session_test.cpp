@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "support/gl_required.h"
 #include "support/temp_folder.h"
@@ -80,19 +81,23 @@ TEST(RenderSession, PreparesOnceThenDrawsPerFrameChangesWithoutReadingFiles) {
   EXPECT_NE(before.labels.labels, after.labels.labels);
 }
 
+// `request` prepared by two sessions (as two commands of one process, or a session and a docs
+// page) and posed: the scenes hold the meshes and textures each session's robot draws.
+std::pair<scene::Scene, scene::Scene> PosedInTwoSessions(const RenderRequest& request) {
+  Warnings warnings;
+  RenderSession one, two;
+  const Prepared a = one.Prepare(request, CommandLineLabel, warnings);
+  const Prepared b = two.Prepare(request, CommandLineLabel, warnings);
+  EXPECT_NE(a.renderer, b.renderer);
+  return {a.renderer->Pose(a.positions), b.renderer->Pose(b.positions)};
+}
+
 TEST(RenderSession, DecodesEachMeshOncePerProcess) {
   URDFSNAP_REQUIRE_GL();
   const test::TempFolder folder("render_session_meshes");
   WriteRobot(folder);
   const RenderRequest request = TopView(folder.Path("urdf/robot.urdf.xacro"));
-  Warnings warnings;
-  // two sessions (as two commands of one process, or a session and a docs page) share the mesh
-  RenderSession one, two;
-  const Prepared a = one.Prepare(request, CommandLineLabel, warnings);
-  const Prepared b = two.Prepare(request, CommandLineLabel, warnings);
-  ASSERT_NE(a.renderer, b.renderer);
-  const scene::Scene scene_a = a.renderer->Pose(a.positions);
-  const scene::Scene scene_b = b.renderer->Pose(b.positions);
+  const auto [scene_a, scene_b] = PosedInTwoSessions(request);
   ASSERT_EQ(scene_a.items.size(), 1u);
   ASSERT_EQ(scene_b.items.size(), 1u);
   EXPECT_EQ(scene_a.items[0].mesh.get(), scene_b.items[0].mesh.get());
@@ -104,13 +109,7 @@ TEST(RenderSession, DecodesEachTextureOncePerProcess) {
   const fs::path texbot = fs::path(URDFSNAP_SOURCE_DIR) / "tests/data/texbot_description";
   RenderRequest request = TopView((texbot / "urdf/texbot.urdf").string());
   request.model.packages["texbot_description"] = texbot.string();
-  Warnings warnings;
-  RenderSession one, two;
-  const Prepared a = one.Prepare(request, CommandLineLabel, warnings);
-  const Prepared b = two.Prepare(request, CommandLineLabel, warnings);
-  ASSERT_NE(a.renderer, b.renderer);
-  const scene::Scene scene_a = a.renderer->Pose(a.positions);
-  const scene::Scene scene_b = b.renderer->Pose(b.positions);
+  const auto [scene_a, scene_b] = PosedInTwoSessions(request);
   ASSERT_EQ(scene_a.items.size(), scene_b.items.size());
   int textured = 0;
   for (size_t i = 0; i < scene_a.items.size(); ++i) {
