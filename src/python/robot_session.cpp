@@ -1,5 +1,5 @@
-// RobotSession: keyword values parsed into typed settings by the request stage, the model loaded
-// once, the robot prepared once per display setting, one GL renderer per multisampling mode and backend.
+// RobotSession: keyword values parsed into typed settings by the request stage; the model loaded,
+// the robot prepared and the GL renderers made by its request::RenderSession.
 #include "python/robot_session.h"
 
 #include <algorithm>
@@ -35,28 +35,11 @@ render::RenderSettings RobotSession::Settings(const RenderCall& call, Warnings& 
 }
 
 RobotSession::RobotSession(request::ModelRequest model)
-    : model_(std::move(model)), robot_(request::LoadModel(model_, load_warnings_).robot),
+    : model_(std::move(model)), robot_(session_.LoadRobot(model_, load_warnings_)),
       movable_joints_(robot_->MovableJointNames()) {}
 
 std::vector<double> RobotSession::Positions(const model::NamedValues& given, bool clamp, Warnings& warnings) const {
   return model::ResolveJointPositions(*robot_, given, clamp, warnings);
-}
-
-const render::RobotRenderer& RobotSession::RendererFor(const scene::SceneOptions& options, Warnings& warnings) {
-  if (!prepared_ || *prepared_options_ != options) {
-    prepared_.reset();   // the old robot's meshes go before the new one's are loaded
-    prepared_warnings_.Clear();
-    prepared_ = std::make_unique<render::RobotRenderer>(robot_, options, prepared_warnings_);
-    prepared_options_ = options;
-  }
-  for (const std::string& message : prepared_warnings_.messages()) warnings.Add(message);
-  return *prepared_;
-}
-
-gl::SceneRenderer& RobotSession::GlFor(int samples, std::optional<gl::Backend> backend) {
-  std::unique_ptr<gl::SceneRenderer>& gl = gl_[{samples, backend}];
-  if (!gl) gl = std::make_unique<gl::SceneRenderer>(samples, gl::BackendChoice(backend));
-  return *gl;
 }
 
 }  // namespace urdfsnap::python

@@ -1,14 +1,14 @@
-// What one Python `urdfsnap.Robot` holds, in C++ and without Python: the loaded robot, the
-// settings that Robot.render's keyword arguments make (parsed by the request stage, as the
-// command line's options are), the robot prepared for the displays asked for and the GL renderers
-// that draw it, all kept for the next call. The pybind11 glue (module.cpp) only converts to and from Python.
+// What one Python `urdfsnap.Robot` holds, in C++ and without Python: a request::RenderSession (the
+// one way into the core every command takes) with the robot loaded, and the settings that
+// Robot.render's keyword arguments make (parsed by the request stage, as the command line's
+// options are). The session keeps the robot prepared for the displays asked for and the GL
+// renderers that draw it for the next call. The pybind11 glue (module.cpp) only converts to and from Python.
 // The pixels are those of `urdfsnap render` with the same options: the same typed core
 // (model::ResolveJointPositions, render::RobotRenderer, gl::SceneRenderer) does the work.
 //
 // Not thread-safe by itself: the glue holds the session's mutex while it draws.
 #pragma once
 
-#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -27,6 +27,7 @@
 #include "render/robot_renderer.h"
 #include "request/model_request.h"
 #include "request/render_request.h"
+#include "request/render_session.h"
 
 namespace urdfsnap::python {
 
@@ -81,19 +82,11 @@ class RobotSession {
   std::mutex& mutex() { return mutex_; }
 
  private:
-  const render::RobotRenderer& RendererFor(const scene::SceneOptions& options, Warnings& warnings);
-  gl::SceneRenderer& GlFor(int samples, std::optional<gl::Backend> backend);
-
   request::ModelRequest model_;
   Warnings load_warnings_;
+  request::RenderSession session_;   // the model, the prepared robots, the GL renderers
   std::shared_ptr<const model::Robot> robot_;
   std::vector<std::string> movable_joints_;
-  // the robot prepared for the last display options asked for (meshes uploaded once)
-  std::optional<scene::SceneOptions> prepared_options_;
-  std::unique_ptr<render::RobotRenderer> prepared_;
-  Warnings prepared_warnings_;
-  // one GL context per multisampling mode and backend asked for
-  std::map<std::pair<int, std::optional<gl::Backend>>, std::unique_ptr<gl::SceneRenderer>> gl_;
   std::mutex mutex_;
 };
 
@@ -101,7 +94,7 @@ template <typename Deliver>
 void RobotSession::Render(const render::RenderSettings& settings, std::optional<gl::Backend> backend,
                           const std::vector<std::vector<double>>& poses, const image::FrameOutputs& outputs,
                           const dataset::ExtrasWanted& extras, Deliver&& deliver, Warnings& warnings) {
-  const render::RobotRenderer& renderer = RendererFor(settings.scene, warnings);
+  const render::RobotRenderer& renderer = session_.PreparedRobot(model_, settings.scene, warnings);
   render::RenderSettings drawn = settings;
   drawn.view = renderer.FitView(settings.fit, settings.view, settings.size, static_cast<int>(poses.size()),
                                 [&](int k) { return poses[k]; });
@@ -109,7 +102,7 @@ void RobotSession::Render(const render::RenderSettings& settings, std::optional<
   const render::CameraSettings camera =
       drawn.camera ? *drawn.camera : render::OrbitCamera(drawn.view, drawn.size.width, drawn.size.height);
   const image::FrameOutputs needed = dataset::OutputsFor(outputs, extras);
-  gl::SceneRenderer& gl = GlFor(settings.samples, backend);
+  gl::SceneRenderer& gl = session_.GlRenderer(settings.samples, backend);
   // the next call, or the destructor, may come from another thread
   struct Release {
     gl::SceneRenderer& gl;

@@ -60,10 +60,29 @@ const RenderSession::Robot& RenderSession::RobotFor(const ModelRequest& request,
   return PushFront(robots_, std::move(robot), kCachedRobots);
 }
 
-gl::SceneRenderer& RenderSession::GlRenderer(int samples) {
-  std::unique_ptr<gl::SceneRenderer>& renderer = renderers_[samples];
-  if (!renderer) renderer = std::make_unique<gl::SceneRenderer>(samples, backend_);
+gl::SceneRenderer& RenderSession::GlRenderer(int samples) { return GlRenderer(samples, backend_.backend); }
+
+gl::SceneRenderer& RenderSession::GlRenderer(int samples, std::optional<gl::Backend> backend) {
+  std::unique_ptr<gl::SceneRenderer>& renderer = renderers_[{samples, backend}];
+  if (!renderer) {
+    gl::BackendChoice choice = backend_;   // who asked, and whom to tell of a new context
+    choice.backend = backend;
+    renderer = std::make_unique<gl::SceneRenderer>(samples, std::move(choice));
+  }
   return *renderer;
+}
+
+std::shared_ptr<const model::Robot> RenderSession::LoadRobot(const ModelRequest& request, Warnings& warnings) {
+  const Model& model = LoadedModelFor(request);
+  AddAll(model.warnings, warnings);
+  return model.loaded.robot;
+}
+
+const render::RobotRenderer& RenderSession::PreparedRobot(const ModelRequest& request,
+                                                          const scene::SceneOptions& options, Warnings& warnings) {
+  const Robot& prepared = RobotFor(request, LoadedModelFor(request), options);
+  AddAll(prepared.warnings, warnings);
+  return *prepared.renderer;
 }
 
 namespace {
@@ -88,9 +107,8 @@ void FollowTargetFrame(const ResolvedRequest& r, const render::RobotRenderer& re
 }  // namespace
 
 Prepared RenderSession::Prepare(const ResolvedRequest& r, Warnings& warnings) {
-  const Model& model = LoadedModelFor(r.model);
-  const model::Robot& robot = *model.loaded.robot;
-  AddAll(model.warnings, warnings);
+  const std::shared_ptr<const model::Robot> loaded = LoadRobot(r.model, warnings);
+  const model::Robot& robot = *loaded;
   render::RenderSettings settings = r.settings;
   // .rviz files often name a frame outside the robot (map, odom); RViz would show nothing useful
   if (!r.fixed_frame_given && !settings.scene.fixed_frame.empty() &&
@@ -100,13 +118,11 @@ Prepared RenderSession::Prepare(const ResolvedRequest& r, Warnings& warnings) {
     settings.scene.fixed_frame.clear();
   }
   std::vector<double> positions = model::ResolveJointPositions(robot, r.joints, r.clamp, warnings);
-  const Robot& prepared = RobotFor(r.model, model, settings.scene);
-  AddAll(prepared.warnings, warnings);
-  FollowTargetFrame(r, *prepared.renderer, positions, settings, warnings);
-  settings.view = prepared.renderer->FitView(settings.fit, settings.view, settings.size, 1,
-                                             [&](int) { return positions; });
+  const render::RobotRenderer& renderer = PreparedRobot(r.model, settings.scene, warnings);
+  FollowTargetFrame(r, renderer, positions, settings, warnings);
+  settings.view = renderer.FitView(settings.fit, settings.view, settings.size, 1, [&](int) { return positions; });
   settings.fit = render::Fit::kNone;
-  return {model.loaded.robot, std::move(settings), std::move(positions), prepared.renderer.get()};
+  return {loaded, std::move(settings), std::move(positions), &renderer};
 }
 
 Prepared RenderSession::Prepare(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {

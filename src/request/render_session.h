@@ -18,10 +18,13 @@
 #include <list>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/warnings.h"
+#include "gl/backend.h"
 #include "gl/scene_renderer.h"
 #include "image/image.h"
 #include "render/robot_renderer.h"
@@ -79,6 +82,19 @@ class RenderSession {
   // The session's GL renderer for `samples` multisampling (made on first use, then kept), for
   // callers that draw a prepared robot themselves (animations).
   gl::SceneRenderer& GlRenderer(int samples);
+  // The same, with a context of `backend` instead of the session's (nullopt: URDFSNAP_GL_BACKEND,
+  // else auto), for callers that choose the backend per render (the Python gl_backend keyword).
+  gl::SceneRenderer& GlRenderer(int samples, std::optional<gl::Backend> backend);
+
+  // The robot of `model`, loaded once (the model cache Prepare uses); its load's warnings go to
+  // `warnings`. Throws urdfsnap::Error as Prepare does for an unreadable or invalid model.
+  std::shared_ptr<const model::Robot> LoadRobot(const ModelRequest& model, Warnings& warnings);
+
+  // The robot of `model` prepared for the displays `options` (loaded and prepared once, the cache
+  // Prepare uses), for callers that resolve positions and views themselves (the Python binding).
+  // Valid as long as a Prepared's renderer; the preparing's warnings go to `warnings`.
+  const render::RobotRenderer& PreparedRobot(const ModelRequest& model, const scene::SceneOptions& options,
+                                             Warnings& warnings);
 
   // Every file the session has read for `model`: the model file, xacro includes, YAML files,
   // meshes and textures (those of the displays rendered so far), without repeats.
@@ -110,7 +126,8 @@ class RenderSession {
   std::list<Model> models_;   // most recently used first
   std::list<Robot> robots_;   // most recently used first
   const gl::BackendChoice backend_;
-  std::map<int, std::unique_ptr<gl::SceneRenderer>> renderers_;
+  // one GL renderer per multisampling mode and backend asked for
+  std::map<std::pair<int, std::optional<gl::Backend>>, std::unique_ptr<gl::SceneRenderer>> renderers_;
 };
 
 }  // namespace urdfsnap::request

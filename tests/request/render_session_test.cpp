@@ -1,7 +1,7 @@
 // The render session: a request prepared once and drawn with per-frame changes as values (no file
 // read again), each mesh and texture decoded once per process, the files a model read (for a live view's
-// reload), forgetting models after an edit, caches that stay bounded over many models, and the
-// outputs asked for (gl).
+// reload), forgetting models after an edit, caches that stay bounded over many models and are
+// shared with callers that draw themselves (the Python binding), and the outputs asked for (gl).
 #include "request/render_session.h"
 
 #include <gtest/gtest.h>
@@ -118,6 +118,40 @@ TEST(RenderSession, DecodesEachTextureOncePerProcess) {
     EXPECT_EQ(scene_a.items[i].texture.get(), scene_b.items[i].texture.get()) << "item " << i;
   }
   EXPECT_GE(textured, 4);
+}
+
+TEST(RenderSession, SharesPreparesCachesWithCallersThatDrawThemselves) {
+  URDFSNAP_REQUIRE_GL();
+  const test::TempFolder folder("render_session_parts");
+  WriteRobot(folder);
+  RenderSession session;
+  Warnings warnings;
+  const RenderRequest request = TopView(folder.Path("urdf/robot.urdf.xacro"));
+  const Prepared p = session.Prepare(request, CommandLineLabel, warnings);
+  // the model and the robot prepared for these displays are Prepare's, not loaded again
+  EXPECT_EQ(session.LoadRobot(request.model, warnings), p.robot);
+  EXPECT_EQ(&session.PreparedRobot(request.model, p.settings.scene, warnings), p.renderer);
+  scene::SceneOptions collision = p.settings.scene;
+  collision.show_collision = true;
+  EXPECT_NE(&session.PreparedRobot(request.model, collision, warnings), p.renderer);
+  // a missing mesh allowed: the preparing's warning is given to every caller of the robot
+  folder.Write("missing.urdf", "<robot name=\"m\"><link name=\"a\"><visual><geometry><mesh filename=\"gone.stl\"/>"
+                               "</geometry></visual></link></robot>");
+  ModelRequest missing;
+  missing.path = folder.Path("missing.urdf");
+  scene::SceneOptions allowed;
+  allowed.allow_missing_meshes = true;
+  Warnings first_call, second_call;
+  const render::RobotRenderer& once = session.PreparedRobot(missing, allowed, first_call);
+  EXPECT_EQ(&session.PreparedRobot(missing, allowed, second_call), &once);
+  EXPECT_FALSE(first_call.messages().empty());
+  EXPECT_EQ(second_call.messages(), first_call.messages());
+  // GL renderers: one per multisampling mode and backend; the session's backend by default
+  EXPECT_EQ(&session.GlRenderer(4), &session.GlRenderer(4, std::nullopt));
+  EXPECT_NE(&session.GlRenderer(4), &session.GlRenderer(0));
+  const gl::Backend first = gl::CompiledInBackends().front();
+  EXPECT_EQ(&session.GlRenderer(4, first), &session.GlRenderer(4, first));
+  EXPECT_NE(&session.GlRenderer(4, first), &session.GlRenderer(4));
 }
 
 TEST(RenderSession, RenderReturnsTheRobotWithTheFrame) {
