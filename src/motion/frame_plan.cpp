@@ -26,8 +26,8 @@ FramePlan Plan(double seconds, double fps, double trajectory_step) {
   plan.trajectory_step = trajectory_step;
   const double last_frame = std::floor(seconds * fps + 1e-9);
   if (!(last_frame < kMaxFrames)) {
-    throw Error("the animation would have " + FormatNumber(last_frame + 1) + " frames (" +
-                FormatNumber(seconds) + " s at " + FormatNumber(fps) +
+    throw Error("the animation would have " + FormatForPeople(last_frame + 1) + " frames (" +
+                FormatForPeople(seconds, "s") + " at " + FormatForPeople(fps) +
                 " frames/s), more than urdfsnap's limit of " + std::to_string(kMaxFrames));
   }
   plan.frame_count = static_cast<std::int64_t>(last_frame) + 1;
@@ -53,11 +53,12 @@ FramePlan PlanFrames(const Trajectory& trajectory, double fps, double speed,
   const double end = window.end.value_or(trajectory.EndTime());
   const double start = window.start.value_or(0);
   if (start < 0 || start > trajectory.EndTime()) {
-    throw Error("--start " + FormatNumber(start) + " s is outside " + trajectory.source + ", which lasts " +
-                FormatNumber(trajectory.EndTime()) + " s");
+    throw Error("--start " + FormatForPeople(start, "s") + " is outside " + trajectory.source + ", which lasts " +
+                FormatForPeople(trajectory.EndTime(), "s") + " (--start from 0 to " +
+                FormatForPeople(trajectory.EndTime()) + ")");
   }
   if (window.end && end <= start) {
-    throw Error("--end " + FormatNumber(end) + " s is not after the start at " + FormatNumber(start) + " s");
+    throw Error("--end " + FormatForPeople(end, "s") + " is not after the start at " + FormatForPeople(start, "s"));
   }
   // a table without times shows row k at frame k (at speed 1)
   const double end_seconds = rows ? trajectory.EndTime() / fps : end - start;
@@ -70,7 +71,7 @@ double TrajectorySeconds(const Trajectory& trajectory, double value, const char*
   constexpr double kFirstStamp = 1e9;
   if (value < kFirstStamp) return value;
   if (!trajectory.stamp_at_zero) {
-    throw Error(std::string(option) + " " + FormatNumber(value) + " is a stamp (seconds since 1970), and " +
+    throw Error(std::string(option) + " " + FormatForPeople(value) + " is a stamp (seconds since 1970), and " +
                 trajectory.source + " has no stamps; give seconds from its start");
   }
   return value - *trajectory.stamp_at_zero;
