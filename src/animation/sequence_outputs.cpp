@@ -5,7 +5,7 @@
 #include <regex>
 
 #include "common/error.h"
-#include "image/depth_label_files.h"
+#include "image/image_file_names.h"
 #include "video/frame_pattern.h"
 
 namespace urdfsnap::animation {
@@ -28,12 +28,12 @@ void CheckPattern(const std::string& pattern, const std::string& option) {
 
 void CheckDepthPattern(const std::string& pattern, const std::string& option) {
   CheckPattern(pattern, option);
-  image::CheckDepthPath(pattern, option);
+  image::CheckImageFileName(pattern, image::ImageKind::kDepth, option);
 }
 
 void CheckLabelsPattern(const std::string& pattern, const std::string& option) {
   CheckPattern(pattern, option);
-  image::CheckLabelsPath(pattern, option);
+  image::CheckImageFileName(pattern, image::ImageKind::kLabels, option);
 }
 
 void PlanOutput(OutputPlan& plan, const std::string& path, const std::string& role) {

@@ -13,6 +13,7 @@
 #include "common/output_plan.h"
 #include "dataset/rendered_keypoints.h"
 #include "image/depth_label_files.h"
+#include "image/image_file_names.h"
 #include "image/png_writer.h"
 #include "gl/gl_context.h"
 #include "request/render_session.h"
@@ -38,10 +39,8 @@ std::string DefaultOutput(const std::string& model_path) {
   return (std::filesystem::path("output") / stem).string() + ".png";
 }
 
-void CheckExtension(const std::string& path, const std::string& extension, const std::string& option) {
-  if (LowerCaseExtension(path) != extension) {
-    throw Error(option + " '" + path + "': expected a " + extension + " file");
-  }
+void CheckJsonExtension(const std::string& path, const std::string& option) {
+  if (LowerCaseExtension(path) != ".json") throw Error(option + " '" + path + "': expected a .json file");
 }
 
 void Run(RenderCommandOptions& o) {
@@ -49,15 +48,16 @@ void Run(RenderCommandOptions& o) {
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
   o.render.request.model = o.model.ToRequest();
   o.render.ParseJointWords();
-  if (!o.depth.empty()) image::CheckDepthPath(o.depth, "--depth");
-  if (!o.labels.empty()) image::CheckLabelsPath(o.labels, "--labels");
-  if (!o.mask.empty()) CheckExtension(o.mask, ".png", "--mask");
+  const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
+  image::CheckImageFileName(output, image::ImageKind::kColour, "-o");
+  if (!o.depth.empty()) image::CheckImageFileName(o.depth, image::ImageKind::kDepth, "--depth");
+  if (!o.labels.empty()) image::CheckImageFileName(o.labels, image::ImageKind::kLabels, "--labels");
+  if (!o.mask.empty()) image::CheckImageFileName(o.mask, image::ImageKind::kMask, "--mask");
   if (o.mask_dilate < 0 || o.mask_dilate > 1000) {
     throw Error("--mask-dilate " + std::to_string(o.mask_dilate) + ": expected a number of pixels from 0 to 1000");
   }
-  if (!o.keypoints.empty()) CheckExtension(o.keypoints, ".json", "--keypoints");
+  if (!o.keypoints.empty()) CheckJsonExtension(o.keypoints, "--keypoints");
   // every output checked, and its folder made, before drawing; all written, or none
-  const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
   OutputPlan plan;
   request::AddRequestInputs(plan, o.render.request);
   // (the default output/ folder is made; a folder given must exist)

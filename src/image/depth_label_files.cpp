@@ -10,14 +10,14 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/file_extension.h"
 #include "image/gray16_png.h"
+#include "image/image_file_names.h"
 #include "image/npy_writer.h"
 
 namespace urdfsnap::image {
 
 namespace {
-
-std::string Extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
 
 std::string Bytes(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
 
@@ -43,24 +43,13 @@ std::string EncodeLabels(const LabelImage& labels) {
   return Bytes(EncodeGray16Png({labels.width, labels.height, labels.labels}));
 }
 
-void CheckDepthPath(const std::string& path, const std::string& option) {
-  const std::string extension = Extension(path);
-  if (extension != ".png" && extension != ".npy") {
-    throw Error(option + " '" + path + "': expected a .png (16-bit millimetres) or .npy (float32 metres) file");
-  }
-}
-
-void CheckLabelsPath(const std::string& path, const std::string& option) {
-  if (Extension(path) != ".png") throw Error(option + " '" + path + "': expected a .png file (16-bit labels)");
-}
-
 std::string LabelNamesFile(const std::string& path) {
   return std::filesystem::path(path).replace_extension(".json").string();
 }
 
 void WriteDepthFile(const DepthImage& depth, const std::string& path) {
-  CheckDepthPath(path, "depth file");
-  WriteFileAtomically(path, EncodeDepth(depth, Extension(path)));
+  CheckImageFileName(path, ImageKind::kDepth, "depth file");
+  WriteFileAtomically(path, EncodeDepth(depth, LowerCaseExtension(path)));
 }
 
 std::string LabelNamesJson(const std::vector<std::string>& link_names) {
@@ -70,7 +59,7 @@ std::string LabelNamesJson(const std::vector<std::string>& link_names) {
 }
 
 void WriteLabelFiles(const LabelImage& labels, const std::vector<std::string>& link_names, const std::string& path) {
-  CheckLabelsPath(path, "labels file");
+  CheckImageFileName(path, ImageKind::kLabels, "labels file");
   WriteFileAtomically(path, EncodeLabels(labels));
   WriteFileAtomically(LabelNamesFile(path), LabelNamesJson(link_names));
 }
