@@ -53,7 +53,7 @@ struct AnimateOptions {
   std::string trajectory;
   std::string topic = bag::kDefaultJointStateTopic;
   std::string description_topic = bag::kDefaultDescriptionTopic;  // MODEL given as a bag
-  std::string fps = "30", speed, duration;  // checked as render checks its numbers
+  std::string fps, speed, duration;  // checked as render checks its numbers; fps: the format's default
   std::string start, end;                   // the part of the trajectory played
   bool turntable = false;
   bool clamp = false, strict_joints = false;  // how the trajectory's joints meet the model's
@@ -192,7 +192,7 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   }
   const render::RenderSettings& settings = a.robot.settings;
   a.frames.emplace(*a.robot.renderer, a.plan, *a.poses,
-                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable, settings.camera}, warnings,
+                   animation::CameraRequest{settings.view, settings.size, fit, settings.fit_margin, o.turntable, settings.camera}, warnings,
                    a.root ? &*a.root : nullptr);
 }
 
@@ -253,6 +253,11 @@ void Run(AnimateOptions& o) {
     throw Error("animate: give the output with -o FILE: .mp4, .webm, .gif, .webp or a pattern such as "
                 "frames/%05d.png");
   }
+  // frame rate and size not given: the output format's (smaller for GIF)
+  const video::FormatDefaults defaults =
+      video::DefaultsFor(o.output.empty() ? video::OutputFormat::kMp4 : video::OutputFormatOf(o.output));
+  if (o.fps.empty()) o.fps = FormatNumber(defaults.fps);
+  if (r.size.empty()) r.size = defaults.size;
   const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
@@ -324,7 +329,7 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_flag("--strict-joints", o->strict_joints,
                 "stop at a joint of the trajectory that the model does not have (default: such "
                 "joints are ignored with one warning, as robot_state_publisher ignores them)");
-  cmd->add_option("--fps", o->fps, "frames per second (default 30); frame k shows time k/fps");
+  cmd->add_option("--fps", o->fps, "frames per second (default 30; 15 for .gif); frame k shows time k/fps");
   cmd->add_option("--speed", o->speed,
                   "playback speed of the trajectory: 2 plays it twice as fast (default 1)");
   cmd->add_flag("--turntable", o->turntable,
@@ -352,6 +357,7 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
   o->sharding.AddOptions(*cmd, "frames of a frame sequence (a video is never split)");
   o->render.AddOptions(*cmd);
+  o->render.request.size.clear();   // not given: the output format's size (video::DefaultsFor)
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the encoder");
   cmd->callback([o] { Run(*o); });
 }

@@ -96,7 +96,7 @@ void RobotSession::Render(const render::RenderSettings& settings, std::optional<
                           const std::vector<std::vector<double>>& poses, const image::FrameOutputs& outputs,
                           Deliver&& deliver, Warnings& warnings) {
   const render::RobotRenderer& renderer = RendererFor(settings.scene, warnings);
-  const scene::OrbitView view = renderer.FitView(settings.fit, settings.view, settings.size,
+  const scene::OrbitView view = renderer.FitView(settings.fit, settings.fit_margin, settings.view, settings.size,
                                                  static_cast<int>(poses.size()), [&](int k) { return poses[k]; });
   gl::Renderer& gl = GlFor(settings.samples, backend);
   // the next call, or the destructor, may come from another thread

@@ -80,7 +80,7 @@ Prepared RenderSession::Prepare(const ResolvedRequest& r, Warnings& warnings) {
   std::vector<double> positions = model::ResolveJointPositions(robot, r.joints, r.clamp, warnings);
   const Robot& prepared = RobotFor(r.model, model, settings.scene);
   AddAll(prepared.warnings, warnings);
-  settings.view = prepared.renderer->FitView(settings.fit, settings.view, settings.size, 1,
+  settings.view = prepared.renderer->FitView(settings.fit, settings.fit_margin, settings.view, settings.size, 1,
                                              [&](int) { return positions; });
   settings.fit = render::Fit::kNone;
   return {model.loaded.robot, std::move(settings), std::move(positions), prepared.renderer.get()};

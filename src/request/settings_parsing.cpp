@@ -66,11 +66,16 @@ void ApplyOptions(const RenderRequest& r, const OptionLabel& label, render::Rend
   ApplyScene(r, label, settings.scene);
   settings.samples = r.no_aa ? 0 : 4;
   settings.fit = FitOf(r);
+  if (!r.fit_margin.empty()) settings.fit_margin = ParseFitMargin(r.fit_margin, label("fit-margin"), settings.size);
   // the calibrated camera, if any (reads --camera-info's file)
   settings.camera = ParseCameraSettings(r, label, settings);
 }
 
 void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
+  if (!r.fit && !r.fit_margin.empty()) {
+    warnings.Add(label("fit-margin") + " " + r.fit_margin + " is ignored: it is the border " + label("fit") +
+                 " leaves, and " + label("fit") + " is not given");
+  }
   if (r.fit && !r.distance.empty()) {
     warnings.Add(label("distance") + " " + r.distance + " is ignored: " + label("fit") +
                  " chooses the distance that frames the robot");

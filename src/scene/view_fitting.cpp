@@ -1,12 +1,21 @@
-// Closed-form fitting: for a point p at offset q = p − focal, with b the unit vector from the focal
-// point to the eye and r, u the camera's right and up vectors, p is in view when
-// |q·r| ≤ tan(fov_x/2)·(d − q·b) and |q·u| ≤ tan(fov_y/2)·(d − q·b); the smallest d is the maximum
-// of q·b + |q·r|/tan(fov_x/2) and q·b + |q·u|/tan(fov_y/2) over all points.
+// Exact fitting from the convex hulls of the vertices seen along each image axis. With r, u and b
+// the camera's right, up and back (towards the eye) unit vectors and t = tan of half the field of
+// view on an axis a (r or u), a point p is inside the frame on that axis when
+// p·(±a + t·b) ≤ E·(±a + t·b) for the eye E. Writing h±(t) = max over p of p·(±a + t·b), the eye
+// whose frame touches the silhouette on both sides of the axis has E·a = (h+ − h−)/2 and
+// E·b = (h+ + h−)/(2t): centred on that axis, as near as that half-angle allows. The eye's depth
+// E·b is the larger of the two axes' (the axis that binds); on the other axis the half-angle t' < t
+// that touches both sides from that depth is found by bisection (the touching depth falls as t'
+// grows) and centres it. Only hull corners can reach a maximum, so the vertices are reduced to
+// two small 2D hulls, (p·r, p·b) and (p·u, p·b), as the scenes arrive.
 #include "scene/view_fitting.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
+
+#include "scene/convex_hull_2d.h"
 
 namespace urdfsnap::scene {
 
@@ -49,44 +58,106 @@ class DistinctScenes {
   std::vector<Placement> last_;
 };
 
+// One image axis: the hull of (p·a, p·b) over every vertex, and the half-angle's tangent there.
+struct AxisHull {
+  std::vector<Eigen::Vector2d> corners;
+  double tan_half = 0;
+
+  // max over the corners of side·(p·a) + t·(p·b)
+  double Support(double side, double t) const {
+    double best = -std::numeric_limits<double>::infinity();
+    for (const auto& c : corners) best = std::max(best, side * c.x() + t * c.y());
+    return best;
+  }
+  // the eye's depth E·b whose frame of half-angle tangent t touches both sides
+  double TouchingDepth(double t) const { return (Support(1, t) + Support(-1, t)) / (2 * t); }
+  // the eye's E·a that centres the silhouette with half-angle tangent t
+  double CentredOffset(double t) const { return (Support(1, t) - Support(-1, t)) / 2; }
+
+  // E·a of the eye at depth `depth` (≥ TouchingDepth(tan_half)) that centres this axis.
+  double OffsetFrom(double depth) const {
+    double low = tan_half * 1e-9, high = tan_half;
+    if (TouchingDepth(high) >= depth || TouchingDepth(low) <= depth) {
+      return CentredOffset(TouchingDepth(high) >= depth ? high : low);
+    }
+    for (int i = 0; i < 60; ++i) {
+      const double mid = (low + high) / 2;
+      (TouchingDepth(mid) > depth ? low : high) = mid;
+    }
+    return CentredOffset((low + high) / 2);
+  }
+
+  // the least distance from `focal` along b at which every corner is inside ±tan_half about it
+  double DistanceAround(double focal_a, double focal_b) const {
+    double distance = 0;
+    for (const auto& c : corners) {
+      distance = std::max(distance, c.y() - focal_b + std::abs(c.x() - focal_a) / tan_half);
+    }
+    return distance;
+  }
+};
+
+// Adds the vertices of every distinct scene to the two axis hulls, re-hulling after each scene.
+bool Collect(int count, const std::function<Scene(int)>& scene_of, const Eigen::Vector3d& right,
+             const Eigen::Vector3d& up, const Eigen::Vector3d& back, AxisHull& across, AxisHull& upward) {
+  DistinctScenes scenes;
+  for (int k = 0; k < count; ++k) {
+    std::vector<Eigen::Vector2d> x = across.corners, y = upward.corners;
+    scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) {
+      const double depth = p.dot(back);
+      x.emplace_back(p.dot(right), depth);
+      y.emplace_back(p.dot(up), depth);
+    });
+    if (x.size() == across.corners.size()) continue;
+    across.corners = ConvexHull2d(std::move(x));
+    upward.corners = ConvexHull2d(std::move(y));
+  }
+  return !across.corners.empty();
+}
+
 }  // namespace
 
 OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitView view, double aspect,
-                  bool keep_focal, double margin) {
-  // the box gives the focal point; with the focal point kept it is not needed
-  if (!keep_focal) {
-    Eigen::AlignedBox3d box;
-    DistinctScenes scenes;
-    for (int k = 0; k < count; ++k) scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) { box.extend(p); });
-    if (box.isEmpty()) return view;
-    view.focal = box.center();
-  }
+                  bool keep_focal, FitMargin margin) {
   const Eigen::Matrix4d V = ViewMatrix(view);
   const Eigen::Vector3d right = V.block<1, 3>(0, 0).transpose();
   const Eigen::Vector3d up = V.block<1, 3>(1, 0).transpose();
   const Eigen::Vector3d back = V.block<1, 3>(2, 0).transpose();
-  const double tan_y = std::tan(view.fov_y / 2) * (1 - 2 * margin);
-  const double tan_x = std::tan(view.fov_y / 2) * aspect * (1 - 2 * margin);
-  double distance = 0;
-  bool any = false;
-  DistinctScenes scenes;
-  for (int k = 0; k < count; ++k) {
-    scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) {
-      const Eigen::Vector3d q = p - view.focal;
-      const double depth_offset = q.dot(back);
-      // in the image, and in front of the near clip plane
-      distance = std::max({distance, depth_offset + std::abs(q.dot(right)) / tan_x,
-                           depth_offset + std::abs(q.dot(up)) / tan_y, depth_offset + view.near_clip});
-      any = true;
-    });
+  AxisHull across, upward;
+  across.tan_half = std::tan(view.fov_y / 2) * aspect * (1 - 2 * margin.x);
+  upward.tan_half = std::tan(view.fov_y / 2) * (1 - 2 * margin.y);
+  if (!Collect(count, scene_of, right, up, back, across, upward)) return view;
+  double nearest = -std::numeric_limits<double>::infinity(), farthest = -nearest;
+  for (const auto& c : across.corners) {
+    nearest = std::max(nearest, c.y());
+    farthest = std::min(farthest, c.y());
   }
-  if (!any) return view;
-  view.distance = std::max(distance, view.near_clip * 2);
+  if (keep_focal) {
+    const double distance = std::max({across.DistanceAround(view.focal.dot(right), view.focal.dot(back)),
+                                      upward.DistanceAround(view.focal.dot(up), view.focal.dot(back)),
+                                      nearest - view.focal.dot(back) + view.near_clip});
+    view.distance = std::max(distance, view.near_clip * 2);
+    return view;
+  }
+  // the eye in the camera's axes: as far back as the binding axis needs, in front of the near plane
+  const double depth = std::max({across.TouchingDepth(across.tan_half), upward.TouchingDepth(upward.tan_half),
+                                 nearest + view.near_clip});
+  const Eigen::Vector3d eye = across.OffsetFrom(depth) * right + upward.OffsetFrom(depth) * up + depth * back;
+  view.distance = std::max(depth - (nearest + farthest) / 2, view.near_clip * 2);
+  view.focal = eye - view.distance * back;
   return view;
 }
 
-OrbitView FitView(const Scene& scene, OrbitView view, double aspect, bool keep_focal, double margin) {
+OrbitView FitView(const Scene& scene, OrbitView view, double aspect, bool keep_focal, FitMargin margin) {
   return FitView(1, [&](int) { return scene; }, view, aspect, keep_focal, margin);
+}
+
+std::optional<Eigen::Vector3d> BoundsCentre(int count, const std::function<Scene(int)>& scene_of) {
+  Eigen::AlignedBox3d box;
+  DistinctScenes scenes;
+  for (int k = 0; k < count; ++k) scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) { box.extend(p); });
+  if (box.isEmpty()) return std::nullopt;
+  return box.center();
 }
 
 }  // namespace urdfsnap::scene
