@@ -141,10 +141,10 @@ void Update(const SnapshotOptions& o) {
   std::vector<snapshot::CaseRecord> records;
   int written = 0;
   for (const snapshot::SnapshotCase* c : s.cases) {
-    snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, warnings);
+    snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, warnings, snapshot::CameraChoice::kCurrent);
     snapshot::CaseRecord& record = r.record;
     if (record.status == snapshot::CaseStatus::kError ||
-        (record.status == snapshot::CaseStatus::kPassed && !o.force)) {
+        (record.status == snapshot::CaseStatus::kPassed && r.camera_file_current && !o.force)) {
       PrintCaseLine(record.status == snapshot::CaseStatus::kError ? "ERROR" : "same", c->name,
                     record.message);
     } else {
@@ -160,7 +160,7 @@ void Update(const SnapshotOptions& o) {
   }
   PrintWarnings(warnings);
   outputs.Commit();
-  std::printf("%d goldens of %zu cases written; look at each before committing it\n", written, s.cases.size());
+  std::printf("%d golden files of %zu cases written; look at each before committing it\n", written, s.cases.size());
   std::fflush(stdout);
   if (const int status = snapshot::ExitStatus(records); status != 0) throw CommandExit{status};
 }

@@ -87,7 +87,7 @@ TEST_F(SnapshotDepthTest, UpdateWritesWhatRenderWritesAndCheckPasses) {
   EXPECT_TRUE(Contains(r.output, "depth: no depth golden")) << r.output;
   r = RunUrdfsnap("snapshot update " + suite);
   EXPECT_TRUE(Contains(r.output, "wrote    home: " + Path("goldens/home.depth.png") + " (was MISSING)")) << r.output;
-  EXPECT_TRUE(Contains(r.output, "1 goldens of 1 cases written")) << r.output;
+  EXPECT_TRUE(Contains(r.output, "1 golden files of 1 cases written")) << r.output;
   EXPECT_TRUE(Contains(RunUrdfsnap("snapshot update " + suite).output, "same     home")) << r.output;
 }
 
