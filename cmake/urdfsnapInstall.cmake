@@ -7,7 +7,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(urdfsnap_libraries urdfsnap_common urdfsnap_shard urdfsnap_xacro urdfsnap_model
-  urdfsnap_geometry urdfsnap_image urdfsnap_camera urdfsnap_scene urdfsnap_gl urdfsnap_render urdfsnap_request
+  urdfsnap_geometry urdfsnap_image urdfsnap_texture urdfsnap_camera urdfsnap_scene urdfsnap_gl urdfsnap_render urdfsnap_request
   urdfsnap_snapshot urdfsnap_stream urdfsnap_bag urdfsnap_tf urdfsnap_motion urdfsnap_video)
 set(urdfsnap_include_dir ${CMAKE_INSTALL_INCLUDEDIR}/urdfsnap)
 set(urdfsnap_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/urdfsnap)
@@ -17,26 +17,15 @@ install(TARGETS urdfsnap ${urdfsnap_libraries} EXPORT urdfsnapTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${urdfsnap_include_dir})
-# Only the public API's headers: never a stage's internal/ folder (private headers by place: new
-# private headers go there); listed until they move there: the GL plumbing (no GL headers in the
-# installed API, the backend table and dlopen helper), the xacro processor's internals (xacro.h is its interface), the encoders behind video/frame_encoder.h
-# (FFmpeg and libwebp stay inside the video module), the MCAP reader's byte handling, other stage-internal helpers,
-# or the commands' own libraries (cli, animation, docs, serve: not installed).
+# Only the public API's headers: never a stage's internal/ folder (private headers by place), nor
+# the commands' own libraries (cli, animation, docs, serve: not installed).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${urdfsnap_include_dir}
   FILES_MATCHING PATTERN "*.h"
   PATTERN "cli" EXCLUDE
   PATTERN "animation" EXCLUDE
   PATTERN "docs" EXCLUDE
   PATTERN "serve" EXCLUDE
-  PATTERN "internal" EXCLUDE
-  REGEX "video/(animation_reader|codec_module|ffmpeg_output|filter_graph|frame_store|frame_size|gif_encoder|png_sequence_encoder|video_encoder|webp_encoder)\\.h$" EXCLUDE
-  REGEX "bag/(byte_reader|file_cursor|chunk_decompressor)\\.h$" EXCLUDE
-  REGEX "gl/(gl_api|gl_backends|framebuffer|gpu_mesh|gpu_texture|shader_program|shared_library|embedded_shaders)\\.h$" EXCLUDE
-  REGEX "xacro/[a-z_]+\\.h$" EXCLUDE
-  REGEX "scene/mesh_loading\\.h$" EXCLUDE
-  REGEX "model/urdf_validation\\.h$" EXCLUDE
-  REGEX "geometry/(circle_parts|texture_coordinates|mesh_module)\\.h$" EXCLUDE)
-install(FILES ${PROJECT_SOURCE_DIR}/src/xacro/xacro.h DESTINATION ${urdfsnap_include_dir}/xacro)
+  PATTERN "internal" EXCLUDE)
 install(EXPORT urdfsnapTargets NAMESPACE urdfsnap:: DESTINATION ${urdfsnap_package_dir})
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/urdfsnapConfig.cmake.in

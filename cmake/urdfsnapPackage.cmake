@@ -16,7 +16,7 @@ if(NOT urdfsnap_deb_arch)
 endif()
 
 # libOSMesa is dlopen'ed (src/gl/gl_context.cpp); the TF name font is read from
-# fonts-liberation's folder (src/scene/glyph_atlas.cpp). A backend or data file loaded at run
+# fonts-liberation's folder (src/texture/glyph_atlas.cpp). A backend or data file loaded at run
 # time belongs here.
 set(URDFSNAP_PACKAGE_RUNTIME_DEPENDS "libosmesa6, fonts-liberation | fonts-liberation2"
   CACHE STRING "Depends of the Debian package that dpkg-shlibdeps cannot see")

@@ -6,7 +6,7 @@
 // (tests/xacro/).
 #pragma once
 
-#include "xacro/evaluation_budget.h"
+#include "xacro/internal/evaluation_budget.h"
 
 namespace urdfsnap::fuzz {
 

@@ -6,9 +6,9 @@
 #include <unordered_map>
 
 #include "fuzz_evaluation_budget.h"
-#include "xacro/builtins.h"
-#include "xacro/expression_evaluator.h"
-#include "xacro/expression_parser.h"
+#include "xacro/internal/builtins.h"
+#include "xacro/internal/expression_evaluator.h"
+#include "xacro/internal/expression_parser.h"
 
 namespace {
 

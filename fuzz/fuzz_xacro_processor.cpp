@@ -17,7 +17,7 @@
 #include "common/error.h"
 #include "fuzz_evaluation_budget.h"
 #include "fuzz_work_dir.h"
-#include "xacro/processor.h"
+#include "xacro/internal/processor.h"
 
 namespace {
 

@@ -39,7 +39,7 @@ int MeasureBackend(const std::string& backend_name, const std::string& model_pat
     options.model_file = model_path;
     Warnings warnings;
     const render::RobotRenderer robot_renderer(robot, options, warnings);
-    gl::Renderer renderer(4, {backend});
+    gl::SceneRenderer renderer(4, {backend});
     const FrameTimes frames = RenderPoses(robot_renderer, RandomPoses(*robot, 200), renderer, false);
     std::ofstream(figures_path) << first << " " << next << " " << frames.draw << " " << description << "\n";
     return 0;

@@ -37,7 +37,7 @@ std::vector<model::NamedValues> RandomPoses(const model::Robot& robot, int count
 }
 
 FrameTimes RenderPoses(const render::RobotRenderer& robot, const std::vector<model::NamedValues>& poses,
-                       gl::Renderer& renderer, bool with_outputs) {
+                       gl::SceneRenderer& renderer, bool with_outputs) {
   FrameTimes times;
   Warnings warnings;
   const image::FrameOutputs all{true, true, true};

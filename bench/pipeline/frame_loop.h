@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "image/image.h"
 #include "model/joint_values.h"
 #include "model/robot.h"
@@ -33,6 +33,6 @@ struct FrameTimes {
 // Renders each pose at 640x480 from RViz's default view with `renderer`; with `with_outputs`,
 // each pose a second time with the depth and label images as well.
 FrameTimes RenderPoses(const render::RobotRenderer& robot, const std::vector<model::NamedValues>& poses,
-                       gl::Renderer& renderer, bool with_outputs);
+                       gl::SceneRenderer& renderer, bool with_outputs);
 
 }  // namespace urdfsnap::bench

@@ -62,7 +62,7 @@ Figures Measure(const std::string& binary, const std::string& model_path, int pr
   options.model_file = model_path;
   options.tf = tf;
   const render::RobotRenderer robot_renderer(robot_pointer, options, warnings);
-  gl::Renderer renderer(4);
+  gl::SceneRenderer renderer(4);
   const std::vector<model::NamedValues> poses = RandomPoses(robot, 200);
   const FrameTimes frames = RenderPoses(robot_renderer, poses, renderer, true);
   figures.scene = frames.scene;

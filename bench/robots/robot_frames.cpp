@@ -1,7 +1,7 @@
 // Per-frame cost of drawing a published robot through the typed core, for robots_bench.sh: the
 // robot (a URDF, xacro already expanded) prepared once, the view fitted to it, then a turntable of
 // FRAMES yaw steps at 640x480 with 4x MSAA, each frame drawn and read back (render::RobotRenderer
-// and gl::Renderer, no encoding). Prints one line: "triangles T draw_ms D cpu_ms C" with the median
+// and gl::SceneRenderer, no encoding). Prints one line: "triangles T draw_ms D cpu_ms C" with the median
 // wall time per frame and the process CPU time (all threads) per frame, so a loaded machine shows
 // in the gap between them. llvmpipe's thread count is its own default (one per core) unless
 // LP_NUM_THREADS says otherwise.
@@ -18,7 +18,7 @@
 #include "../pipeline/timing.h"
 #include "common/error.h"
 #include "common/warnings.h"
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "model/joint_values.h"
 #include "render/robot_renderer.h"
 
@@ -59,7 +59,7 @@ int Run(int argc, char** argv) {
   const render::ImageSize size{640, 480};
   const auto pose = [&](int) { return positions; };
   const scene::OrbitView fitted = renderer.FitView(render::Fit::kFit, {}, scene::OrbitView{}, size, 1, pose);
-  gl::Renderer gl(4);
+  gl::SceneRenderer gl(4);
   renderer.Render(gl, positions, fitted, size);   // uploads the meshes and compiles the shaders
   std::vector<double> times;
   const double cpu0 = CpuSeconds();

@@ -17,7 +17,7 @@
 #include "common/error.h"
 #include "synthetic_frames.h"
 #include "video/encode_frames.h"
-#include "video/frame_encoder.h"
+#include "video/open_frame_encoder.h"
 
 namespace {
 

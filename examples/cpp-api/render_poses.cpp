@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "image/png_writer.h"
 #include "model/joint_values.h"
 #include "image/depth_label_files.h"
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     settings.scene.model_file = model_path;  // meshes are found relative to it
     settings.size = {480, 360};
     const us::render::RobotRenderer arm(robot, settings.scene, warnings);
-    us::gl::Renderer gl(settings.samples);
+    us::gl::SceneRenderer gl(settings.samples);
 
     // every movable joint swings through half its range (or ±1 rad) over the 100 poses
     const auto pose = [&](int k) {

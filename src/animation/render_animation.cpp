@@ -9,7 +9,7 @@
 
 namespace urdfsnap::animation {
 
-void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const AnimationFrames& frames,
+void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const AnimationFrames& frames,
                      shard::FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
                      Warnings& warnings, std::size_t depth) {
   const image::FrameOutputs wanted{true, outputs.depth != nullptr, outputs.labels != nullptr};

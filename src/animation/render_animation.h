@@ -9,20 +9,20 @@
 
 #include "animation/animation_frames.h"
 #include "common/warnings.h"
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "render/robot_renderer.h"
 #include "shard/shard_assignment.h"
 #include "stream/progress_bar.h"
 #include "video/frame_encoder.h"
-#include "video/frame_files.h"
+#include "video/numbered_files.h"
 
 namespace urdfsnap::animation {
 
 // Where the frames go; depth and labels are optional.
 struct AnimationOutputs {
   video::FrameEncoder* colour = nullptr;  // required
-  video::FrameFiles* depth = nullptr;     // numbered depth files (.png millimetres or .npy metres)
-  video::FrameFiles* labels = nullptr;    // numbered link-label files (.png)
+  video::NumberedFiles* depth = nullptr;     // numbered depth files (.png millimetres or .npy metres)
+  video::NumberedFiles* labels = nullptr;    // numbered link-label files (.png)
 };
 
 // Renders the frames of `range` (the whole animation, or a shard's frames) of `frames` with `robot` through `gl` and writes them, in order, to
@@ -31,7 +31,7 @@ struct AnimationOutputs {
 // writer. Warnings of the poses go to `warnings` (touched on the calling thread only). The first
 // error on either thread stops both and is rethrown; the outputs are then left unfinished, so that
 // their destruction removes what they wrote.
-void RenderAnimation(const render::RobotRenderer& robot, gl::Renderer& gl, const AnimationFrames& frames,
+void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const AnimationFrames& frames,
                      shard::FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
                      Warnings& warnings, std::size_t depth = 4);
 

@@ -1,5 +1,5 @@
 // The depth and link-label sequences beside an animation (`--depth`, `--labels`): numbered files
-// (video::FrameFiles) in the formats `render --depth/--labels` writes (image/depth_label_files.h), one
+// (video::NumberedFiles) in the formats `render --depth/--labels` writes (image/depth_label_files.h), one
 // per frame, from the same renders as the colour frames.
 #pragma once
 

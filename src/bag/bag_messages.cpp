@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "bag/chunk_decompressor.h"
+#include "bag/internal/chunk_decompressor.h"
 #include "bag/mcap_reader.h"
 #include "bag/rosbag2_folder.h"
 #include "bag/sqlite_storage.h"

@@ -1,6 +1,6 @@
 // ChunkDecompressor: one-shot zstd into the caller's buffer (no window allocation beyond it) and a
 // streaming LZ4F loop that must fill the buffer exactly; contexts are reused from chunk to chunk.
-#include "bag/chunk_decompressor.h"
+#include "bag/internal/chunk_decompressor.h"
 
 #include <lz4frame.h>
 #include <zstd.h>

@@ -1,5 +1,5 @@
 // FileCursor on POSIX pread: one descriptor, a 256 KiB buffer refilled at the cursor.
-#include "bag/file_cursor.h"
+#include "bag/internal/file_cursor.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "bag/byte_reader.h"
-#include "bag/chunk_decompressor.h"
-#include "bag/file_cursor.h"
+#include "bag/internal/byte_reader.h"
+#include "bag/internal/chunk_decompressor.h"
+#include "bag/internal/file_cursor.h"
 #include "common/error.h"
 
 namespace urdfsnap::bag {

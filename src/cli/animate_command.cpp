@@ -38,7 +38,8 @@
 #include "shard/shard_assignment.h"
 #include "tf/bag_transforms.h"
 #include "video/frame_encoder.h"
-#include "video/frame_files.h"
+#include "video/numbered_files.h"
+#include "video/open_frame_encoder.h"
 
 namespace urdfsnap::cli {
 
@@ -216,7 +217,7 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
   a.frames->Positions(0, warnings);  // a pose's warnings are every frame's: print them first
   const auto encoder = video::OpenFrameEncoder(
       o.output, {settings.size.width, settings.size.height, a.plan.fps, range.first}, warnings);
-  std::optional<video::FrameFiles> depth, labels;
+  std::optional<video::NumberedFiles> depth, labels;
   if (!o.depth.empty()) depth.emplace(o.depth, range.first);
   if (!o.labels.empty()) {
     labels.emplace(o.labels, range.first);

@@ -114,7 +114,7 @@ void Run(DatasetOptions& o) {
     spec.distance = o.distance.empty() ? dataset::DefaultDistance(renderer, *settings.camera->model)
                                        : ParseInterval(o.distance, "--distance", 1e-3, 1e6);
     PrintWarnings(warnings);
-    gl::Renderer gl(settings.samples, backend);
+    gl::SceneRenderer gl(settings.samples, backend);
     stream::ProgressBar bar(spec.range.size(), "samples",
                             o.quiet ? stream::ProgressBar::Display::kNever : stream::ProgressBar::Display::kIfTerminal);
     Warnings later;

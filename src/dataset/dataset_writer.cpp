@@ -85,7 +85,7 @@ Interval DefaultDistance(const render::RobotRenderer& robot, const camera::Camer
   return {1.0 * fills, 2.0 * fills};
 }
 
-void WriteDataset(const render::RobotRenderer& robot, gl::Renderer& gl, const render::CameraSettings& camera,
+void WriteDataset(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const render::CameraSettings& camera,
                   const DatasetSpec& spec, stream::ProgressBar* progress, Warnings& warnings) {
   const model::Robot& model = robot.robot();
   const RobotBounds bounds(robot.scene());

@@ -13,7 +13,7 @@
 
 #include "common/warnings.h"
 #include "dataset/sampling.h"
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "render/robot_renderer.h"
 #include "shard/shard_assignment.h"
 #include "stream/progress_bar.h"
@@ -34,7 +34,7 @@ struct DatasetSpec {
 // its pose is drawn per sample, in the fixed frame, which should be the robot's root). Rendering
 // on this thread overlaps with encoding and writing on a second one. Throws urdfsnap::Error for a
 // file that cannot be written (no annotation file is then written).
-void WriteDataset(const render::RobotRenderer& robot, gl::Renderer& gl, const render::CameraSettings& camera,
+void WriteDataset(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const render::CameraSettings& camera,
                   const DatasetSpec& spec, stream::ProgressBar* progress, Warnings& warnings);
 
 // The default --distance: 1 to 2 times the distance at which the robot's bounding sphere in

@@ -5,7 +5,7 @@
 #include "common/error.h"
 #include "common/warnings.h"
 #include "video/encode_frames.h"
-#include "video/frame_encoder.h"
+#include "video/open_frame_encoder.h"
 
 namespace urdfsnap::docs {
 

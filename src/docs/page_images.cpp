@@ -1,5 +1,5 @@
 // RenderPageImages: RobotRenderers for the views (visual, collision, TF) and one faded variant per
-// joint section, all drawn by one gl::Renderer; stills as PNG, animations through
+// joint section, all drawn by one gl::SceneRenderer; stills as PNG, animations through
 // animation_output.
 #include "docs/page_images.h"
 
@@ -8,7 +8,7 @@
 #include <set>
 
 #include "docs/animation_output.h"
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "image/png_writer.h"
 #include "model/joint_values.h"
 #include "render/robot_renderer.h"
@@ -159,7 +159,7 @@ class PageRenderer {
   const Progress& progress_;
   const std::int64_t total_;
   std::int64_t done_ = 0;
-  gl::Renderer gl_;
+  gl::SceneRenderer gl_;
   // the robot as shown, kept for the whole page: while it holds the mesh files and textures, every
   // faded variant gets the same ones from their caches and gl_ keeps them uploaded (dropped with
   // each variant, the PR2's were decoded and uploaded again for each of its 39 joint sections)

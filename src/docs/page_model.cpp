@@ -11,7 +11,7 @@
 #include "common/error.h"
 #include "docs/fact_text.h"
 #include "docs/file_names.h"
-#include "docs/joint_motion.h"
+#include "docs/joint_sweeps.h"
 #include "model/joint_values.h"
 
 namespace urdfsnap::docs {

@@ -1,5 +1,5 @@
 // The unit box: six flat faces of four vertices each, as rviz_cube.mesh.
-#include "geometry/texture_coordinates.h"
+#include "geometry/internal/texture_coordinates.h"
 #include "geometry/triangle_mesh.h"
 
 namespace urdfsnap::geometry {

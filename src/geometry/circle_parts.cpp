@@ -1,5 +1,5 @@
 // Circle points and flat disc fans for the cylinder and the cone.
-#include "geometry/circle_parts.h"
+#include "geometry/internal/circle_parts.h"
 
 #include <cmath>
 #include <numbers>

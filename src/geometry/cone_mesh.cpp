@@ -1,5 +1,5 @@
 // The unit cone of RViz's arrow heads (rviz_cone.mesh): smooth side, flat base.
-#include "geometry/circle_parts.h"
+#include "geometry/internal/circle_parts.h"
 #include "geometry/triangle_mesh.h"
 
 namespace urdfsnap::geometry {

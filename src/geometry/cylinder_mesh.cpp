@@ -1,6 +1,6 @@
 // The unit cylinder: rviz_cylinder.mesh's 40-segment side with smooth normals and two flat caps.
-#include "geometry/circle_parts.h"
-#include "geometry/texture_coordinates.h"
+#include "geometry/internal/circle_parts.h"
+#include "geometry/internal/texture_coordinates.h"
 #include "geometry/triangle_mesh.h"
 
 namespace urdfsnap::geometry {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "geometry/texture_coordinates.h"
+#include "geometry/internal/texture_coordinates.h"
 #include "geometry/triangle_mesh.h"
 
 namespace urdfsnap::geometry {

@@ -1,6 +1,6 @@
 // ReadMeshFile (in urdfsnap-meshes.so): mesh file loading through assimp, following RViz 1.14's
 // src/rviz/mesh_loader.cpp step by step.
-#include "geometry/mesh_module.h"
+#include "geometry/internal/mesh_module.h"
 
 #include <assimp/material.h>
 #include <assimp/postprocess.h>

@@ -8,7 +8,7 @@
 #include "common/error.h"
 #include "common/module_loader.h"
 #include "common/shared_cache.h"
-#include "geometry/mesh_module.h"
+#include "geometry/internal/mesh_module.h"
 
 namespace urdfsnap::geometry {
 

@@ -1,5 +1,5 @@
 // Texture coordinates of RViz's primitive meshes, with seam and pole vertices split.
-#include "geometry/texture_coordinates.h"
+#include "geometry/internal/texture_coordinates.h"
 
 #include <algorithm>
 #include <cmath>

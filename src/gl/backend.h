@@ -18,10 +18,10 @@ enum class Backend {
 };
 
 // What a caller of the typed core asks of the backend factory for the GL contexts it makes (one per
-// gl::Renderer; RenderSession, animate's and docs' renderers and the live view's pass it on).
+// gl::SceneRenderer; RenderSession, animate's and docs' renderers and the live view's pass it on).
 struct BackendChoice {
   BackendChoice() = default;
-  // Renderer(4, {Backend::kEgl}): that backend, nobody to tell
+  // SceneRenderer(4, {Backend::kEgl}): that backend, nobody to tell
   BackendChoice(std::optional<Backend> backend) : backend(backend) {}  // NOLINT(google-explicit-constructor)
 
   // the backend asked for; nullopt: URDFSNAP_GL_BACKEND when set, else auto

@@ -13,7 +13,7 @@
 //   "software": Mesa's software device (EGL_MESA_device_software, llvmpipe) even where a GPU is.
 //   a number N: the N-th device of libEGL's list (from 0).
 //   a path such as /dev/dri/renderD129: the device with that DRM render node or device file.
-#include "gl/gl_api.h"
+#include "gl/internal/gl_api.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "gl/gl_backends.h"
+#include "gl/internal/gl_backends.h"
 #include "common/shared_library.h"
 
 namespace urdfsnap::gl {

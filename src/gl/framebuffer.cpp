@@ -1,5 +1,5 @@
 // Framebuffer objects for multisampled off-screen rendering, the label/depth target, and read-back.
-#include "gl/framebuffer.h"
+#include "gl/internal/framebuffer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "gl/gl_api.h"
+#include "gl/internal/gl_api.h"
 
 namespace urdfsnap::gl {
 

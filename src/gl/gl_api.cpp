@@ -1,5 +1,5 @@
 // Resolves the GL function pointers declared in gl_api.h.
-#include "gl/gl_api.h"
+#include "gl/internal/gl_api.h"
 
 #include <atomic>
 #include <mutex>

@@ -2,7 +2,7 @@
 // none makes a context; the background pre-load and the --version report.
 #include "gl/gl_context.h"
 
-#include "gl/gl_api.h"
+#include "gl/internal/gl_api.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "gl/gl_backends.h"
+#include "gl/internal/gl_backends.h"
 
 namespace urdfsnap::gl {
 

@@ -1,9 +1,9 @@
 // Upload and drawing of triangle meshes.
-#include "gl/gpu_mesh.h"
+#include "gl/internal/gpu_mesh.h"
 
 #include <vector>
 
-#include "gl/gl_api.h"
+#include "gl/internal/gl_api.h"
 
 namespace urdfsnap::gl {
 

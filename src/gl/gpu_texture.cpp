@@ -1,12 +1,12 @@
 // Upload of textures.
-#include "gl/gpu_texture.h"
+#include "gl/internal/gpu_texture.h"
 
 #include "common/error.h"
-#include "gl/gl_api.h"
+#include "gl/internal/gl_api.h"
 
 namespace urdfsnap::gl {
 
-GpuTexture::GpuTexture(const scene::TextureImage& image) {
+GpuTexture::GpuTexture(const texture::TextureImage& image) {
   if (image.channels != 2 && image.channels != 4) {
     throw Error("texture with " + std::to_string(image.channels) + " channels; expected 2 or 4");
   }

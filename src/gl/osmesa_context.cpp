@@ -1,7 +1,7 @@
 // The OSMesa backend: Mesa's off-screen library, llvmpipe on the CPU. libOSMesa is opened with
 // dlopen on the first context, not linked, so that only commands which render pay for loading it
 // (and LLVM behind it). Mesa 25.1 removed OSMesa; the EGL backend is its successor.
-#include "gl/gl_api.h"  // before GL/osmesa.h, whose GL/gl.h would hide GL 1.1's typedefs
+#include "gl/internal/gl_api.h"  // before GL/osmesa.h, whose GL/gl.h would hide GL 1.1's typedefs
 
 #include <GL/osmesa.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "common/error.h"
-#include "gl/gl_backends.h"
+#include "gl/internal/gl_backends.h"
 #include "common/shared_library.h"
 
 namespace urdfsnap::gl {

@@ -1,11 +1,11 @@
 // GLSL compilation and linking with readable errors (after Drake's internal_shader_program.cc).
-#include "gl/shader_program.h"
+#include "gl/internal/shader_program.h"
 
 #include <vector>
 
 #include "common/error.h"
-#include "gl/embedded_shaders.h"
-#include "gl/gl_api.h"
+#include "gl/internal/embedded_shaders.h"
+#include "gl/internal/gl_api.h"
 
 namespace urdfsnap::gl {
 

@@ -14,7 +14,7 @@
 
 #include "common/error.h"
 #include "model/robot.h"
-#include "model/urdf_validation.h"
+#include "model/internal/urdf_validation.h"
 
 namespace urdfsnap::model {
 

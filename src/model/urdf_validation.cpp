@@ -1,6 +1,6 @@
 // Located checks of a URDF document before urdfdom sees it: urdfdom only logs "Failed to build
 // tree" through console_bridge, so every mistake it rejects is found here first with its line.
-#include "model/urdf_validation.h"
+#include "model/internal/urdf_validation.h"
 
 #include <algorithm>
 #include <cstring>

@@ -38,9 +38,9 @@ const render::RobotRenderer& RobotSession::RendererFor(const scene::SceneOptions
   return *prepared_;
 }
 
-gl::Renderer& RobotSession::GlFor(int samples, std::optional<gl::Backend> backend) {
-  std::unique_ptr<gl::Renderer>& gl = gl_[{samples, backend}];
-  if (!gl) gl = std::make_unique<gl::Renderer>(samples, gl::BackendChoice(backend));
+gl::SceneRenderer& RobotSession::GlFor(int samples, std::optional<gl::Backend> backend) {
+  std::unique_ptr<gl::SceneRenderer>& gl = gl_[{samples, backend}];
+  if (!gl) gl = std::make_unique<gl::SceneRenderer>(samples, gl::BackendChoice(backend));
   return *gl;
 }
 

@@ -3,7 +3,7 @@
 // command line's options are), the robot prepared for the displays asked for and the GL renderers
 // that draw it, all kept for the next call. The pybind11 glue (module.cpp) only converts to and from Python.
 // The pixels are those of `urdfsnap render` with the same options: the same typed core
-// (model::ResolveJointPositions, render::RobotRenderer, gl::Renderer) does the work.
+// (model::ResolveJointPositions, render::RobotRenderer, gl::SceneRenderer) does the work.
 //
 // Not thread-safe by itself: the glue holds the session's mutex while it draws.
 #pragma once
@@ -18,7 +18,7 @@
 
 #include "common/warnings.h"
 #include "gl/backend.h"
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "image/image.h"
 #include "model/joint_values.h"
 #include "model/robot.h"
@@ -76,7 +76,7 @@ class RobotSession {
 
  private:
   const render::RobotRenderer& RendererFor(const scene::SceneOptions& options, Warnings& warnings);
-  gl::Renderer& GlFor(int samples, std::optional<gl::Backend> backend);
+  gl::SceneRenderer& GlFor(int samples, std::optional<gl::Backend> backend);
 
   request::ModelRequest model_;
   Warnings load_warnings_;
@@ -87,7 +87,7 @@ class RobotSession {
   std::unique_ptr<render::RobotRenderer> prepared_;
   Warnings prepared_warnings_;
   // one GL context per multisampling mode and backend asked for
-  std::map<std::pair<int, std::optional<gl::Backend>>, std::unique_ptr<gl::Renderer>> gl_;
+  std::map<std::pair<int, std::optional<gl::Backend>>, std::unique_ptr<gl::SceneRenderer>> gl_;
   std::mutex mutex_;
 };
 
@@ -98,10 +98,10 @@ void RobotSession::Render(const render::RenderSettings& settings, std::optional<
   const render::RobotRenderer& renderer = RendererFor(settings.scene, warnings);
   const scene::OrbitView view = renderer.FitView(settings.fit, settings.fit_margin, settings.view, settings.size,
                                                  static_cast<int>(poses.size()), [&](int k) { return poses[k]; });
-  gl::Renderer& gl = GlFor(settings.samples, backend);
+  gl::SceneRenderer& gl = GlFor(settings.samples, backend);
   // the next call, or the destructor, may come from another thread
   struct Release {
-    gl::Renderer& gl;
+    gl::SceneRenderer& gl;
     ~Release() { gl.ReleaseContext(); }
   } release{gl};
   for (size_t k = 0; k < poses.size(); ++k) deliver(k, renderer.Render(gl, poses[k], view, settings.size, outputs));

@@ -1,4 +1,4 @@
-// RobotRenderer: forward kinematics and the prepared scene per frame, drawn by a gl::Renderer.
+// RobotRenderer: forward kinematics and the prepared scene per frame, drawn by a gl::SceneRenderer.
 #include "render/robot_renderer.h"
 
 #include "camera/underlay.h"
@@ -16,7 +16,7 @@ scene::Scene RobotRenderer::Pose(const std::vector<double>& positions, const Eig
   return scene_.Pose(model::ComputeLinkPoses(*robot_, positions), X_SF);
 }
 
-image::Frame RobotRenderer::Render(gl::Renderer& gl, const std::vector<double>& positions,
+image::Frame RobotRenderer::Render(gl::SceneRenderer& gl, const std::vector<double>& positions,
                                    const scene::OrbitView& view, ImageSize size,
                                    const image::FrameOutputs& outputs, const Eigen::Isometry3d& X_SF) const {
   return gl.Render(Pose(positions, X_SF), view, size.width, size.height, outputs);
@@ -35,7 +35,7 @@ Eigen::Isometry3d RobotRenderer::CameraPose(const std::vector<Eigen::Isometry3d>
   return camera.model->Pose(X_FL * camera.pose);
 }
 
-image::Frame RobotRenderer::Render(gl::Renderer& gl, const std::vector<double>& positions,
+image::Frame RobotRenderer::Render(gl::SceneRenderer& gl, const std::vector<double>& positions,
                                    const CameraSettings& camera, const image::FrameOutputs& outputs) const {
   const std::vector<Eigen::Isometry3d> X_RL = model::ComputeLinkPoses(*robot_, positions);
   const camera::CameraModel& model = *camera.model;
@@ -52,7 +52,7 @@ image::Frame RobotRenderer::Render(gl::Renderer& gl, const std::vector<double>& 
   return frame;
 }
 
-image::Frame RobotRenderer::Render(gl::Renderer& gl, const std::vector<double>& positions,
+image::Frame RobotRenderer::Render(gl::SceneRenderer& gl, const std::vector<double>& positions,
                                    const RenderSettings& settings, const image::FrameOutputs& outputs) const {
   if (settings.camera) return Render(gl, positions, *settings.camera, outputs);
   return Render(gl, positions, settings.view, settings.size, outputs);

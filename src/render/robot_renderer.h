@@ -1,11 +1,11 @@
 // The typed render core that C++ users link and every command uses: a robot prepared once
 // (meshes, textures, colours, TF names: scene::RobotScene), then one call per frame with joint
 // positions, view, image size and the outputs wanted, doing no file I/O. The GL side (a context
-// and its uploaded meshes) is a gl::Renderer the caller owns and may share between robots.
+// and its uploaded meshes) is a gl::SceneRenderer the caller owns and may share between robots.
 //
 //   auto robot = std::make_shared<const model::Robot>(model::LoadRobot(urdf, "arm.urdf", warnings));
 //   render::RobotRenderer arm(robot, settings.scene, warnings);
-//   gl::Renderer gl(settings.samples);
+//   gl::SceneRenderer gl(settings.samples);
 //   for (const auto& positions : poses)
 //     image::Frame frame = arm.Render(gl, positions, settings.view, settings.size, {});
 #pragma once
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "common/warnings.h"
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "image/image.h"
 #include "model/robot.h"
 #include "render/render_settings.h"
@@ -38,20 +38,20 @@ class RobotRenderer {
                     const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
 
   // Renders one frame of the robot at `positions` (placed at X_SF) through `gl`.
-  image::Frame Render(gl::Renderer& gl, const std::vector<double>& positions, const scene::OrbitView& view,
+  image::Frame Render(gl::SceneRenderer& gl, const std::vector<double>& positions, const scene::OrbitView& view,
                       ImageSize size, const image::FrameOutputs& outputs = {},
                       const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
 
   // Renders one frame of the robot at `positions` through a calibrated camera, at the camera's
   // image size: depth along its optical axis, labels from the same pixels, the lens applied when
   // the camera distorts, the camera's underlay (if any) behind the robot. Throws urdfsnap::Error
-  // for an unknown camera frame, or as gl::Renderer::Render does.
-  image::Frame Render(gl::Renderer& gl, const std::vector<double>& positions, const CameraSettings& camera,
+  // for an unknown camera frame, or as gl::SceneRenderer::Render does.
+  image::Frame Render(gl::SceneRenderer& gl, const std::vector<double>& positions, const CameraSettings& camera,
                       const image::FrameOutputs& outputs = {}) const;
 
   // Renders one frame as `settings` ask: through settings.camera when set, else through
   // settings.view at settings.size.
-  image::Frame Render(gl::Renderer& gl, const std::vector<double>& positions, const RenderSettings& settings,
+  image::Frame Render(gl::SceneRenderer& gl, const std::vector<double>& positions, const RenderSettings& settings,
                       const image::FrameOutputs& outputs = {}) const;
 
   // The camera's optical frame in the fixed frame for link poses X_RL (model::ComputeLinkPoses).

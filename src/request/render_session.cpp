@@ -59,9 +59,9 @@ const RenderSession::Robot& RenderSession::RobotFor(const ModelRequest& request,
   return PushFront(robots_, std::move(robot), kCachedRobots);
 }
 
-gl::Renderer& RenderSession::GlRenderer(int samples) {
-  std::unique_ptr<gl::Renderer>& renderer = renderers_[samples];
-  if (!renderer) renderer = std::make_unique<gl::Renderer>(samples, backend_);
+gl::SceneRenderer& RenderSession::GlRenderer(int samples) {
+  std::unique_ptr<gl::SceneRenderer>& renderer = renderers_[samples];
+  if (!renderer) renderer = std::make_unique<gl::SceneRenderer>(samples, backend_);
   return *renderer;
 }
 

@@ -3,7 +3,7 @@
 // prepared once into {robot, settings, joint positions, a prepared render::RobotRenderer}; frames
 // are then drawn from it, changing only what changes per frame (positions, view) as values, never
 // by parsing text or reading files again. Each model is loaded once and each (model, displays)
-// pair prepared once; all frames are drawn by the same gl::Renderer per multisampling mode.
+// pair prepared once; all frames are drawn by the same gl::SceneRenderer per multisampling mode.
 // Caches are owned by the session and bounded (the most recently used models and prepared robots
 // are kept), so a long-running process that renders many robots does not grow.
 //
@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "common/warnings.h"
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "image/image.h"
 #include "render/robot_renderer.h"
 #include "request/model_request.h"
@@ -78,7 +78,7 @@ class RenderSession {
 
   // The session's GL renderer for `samples` multisampling (made on first use, then kept), for
   // callers that draw a prepared robot themselves (animations).
-  gl::Renderer& GlRenderer(int samples);
+  gl::SceneRenderer& GlRenderer(int samples);
 
   // Every file the session has read for `model`: the model file, xacro includes, YAML files,
   // meshes and textures (those of the displays rendered so far), without repeats.
@@ -110,7 +110,7 @@ class RenderSession {
   std::list<Model> models_;   // most recently used first
   std::list<Robot> robots_;   // most recently used first
   const gl::BackendChoice backend_;
-  std::map<int, std::unique_ptr<gl::Renderer>> renderers_;
+  std::map<int, std::unique_ptr<gl::SceneRenderer>> renderers_;
 };
 
 }  // namespace urdfsnap::request

@@ -11,9 +11,9 @@
 #include "common/number_text.h"
 #include "geometry/mesh_uri.h"
 #include "scene/link_colours.h"
-#include "scene/mesh_loading.h"
+#include "geometry/mesh_loading.h"
 #include "scene/primitive_meshes.h"
-#include "scene/texture_file.h"
+#include "texture/texture_file.h"
 
 namespace urdfsnap::scene {
 
@@ -67,7 +67,7 @@ class FileLoader {
         // reported when the shape is built
       }
     }
-    meshes_ = LoadMeshFiles(paths);
+    meshes_ = geometry::LoadMeshFiles(paths);
   }
 
   // The mesh file of `uri` for `link`; null when it is missing and missing files are allowed.
@@ -81,7 +81,7 @@ class FileLoader {
                           "but not by RViz and other ROS tools")
                         .what());
     }
-    const MeshLoad& load = meshes_.at(path);
+    const geometry::MeshLoad& load = meshes_.at(path);
     if (load.error) {
       try {
         std::rethrow_exception(load.error);
@@ -99,22 +99,22 @@ class FileLoader {
   // material's, already a path). When it is missing and missing files are allowed: Ogre's warning
   // texture, which RViz shows for a texture it cannot load (robot_link.cpp and mesh_loader.cpp
   // name the image to Ogre even when loading it failed).
-  std::shared_ptr<const TextureImage> Texture(const model::Link& link, const std::string& uri, bool is_uri) {
+  std::shared_ptr<const texture::TextureImage> Texture(const model::Link& link, const std::string& uri, bool is_uri) {
     return ForLink(
         link, "drawn with Ogre's warning texture, as RViz draws it",
         [&] {
           const std::string path = is_uri ? geometry::ResolveMeshUri(uri, options_.model_file, options_.packages) : uri;
-          std::shared_ptr<const TextureImage> texture = LoadTextureFile(path);
+          std::shared_ptr<const texture::TextureImage> texture = texture::LoadTextureFile(path);
           Use(path);
           return texture;
         },
-        WarningTexture());
+        texture::WarningTexture());
   }
 
   // The image the texture units of a mesh part's own material show (geometry::MeshPart): the
   // diffuse map's file, or, for a material whose maps include no diffuse map in a file, Ogre's
   // warning texture with a warning (RViz names an image that cannot exist to its units).
-  std::shared_ptr<const TextureImage> UnitTexture(const model::Link& link, const std::string& mesh_uri,
+  std::shared_ptr<const texture::TextureImage> UnitTexture(const model::Link& link, const std::string& mesh_uri,
                                                   const geometry::MeshPart& part) {
     if (!part.texture.empty()) return Texture(link, part.texture, false);
     warnings_.Add(Error(SourceLocation{options_.model_file, link.line},
@@ -122,7 +122,7 @@ class FileLoader {
                             "': a material has texture maps but no diffuse map in a file; RViz draws "
                             "it with Ogre's yellow and black warning texture, and so does urdfsnap")
                       .what());
-    return WarningTexture();
+    return texture::WarningTexture();
   }
 
   std::vector<std::string> TakeFiles() { return std::move(files_); }
@@ -164,7 +164,7 @@ class FileLoader {
   const SceneOptions& options_;
   Warnings& warnings_;
   std::map<std::string, std::variant<std::string, std::exception_ptr>> resolved_;   // by URI
-  std::map<std::string, MeshLoad> meshes_;                                         // by path
+  std::map<std::string, geometry::MeshLoad> meshes_;                                         // by path
   std::set<std::string> used_;
   std::vector<std::string> files_;
 };

@@ -23,7 +23,7 @@ struct LinkPart {
   std::shared_ptr<const geometry::TriangleMesh> mesh;
   Eigen::Affine3d X_LG = Eigen::Affine3d::Identity();   // in the link frame, scale included
   Eigen::Vector4f rgba{1, 0, 0, 1};       // RobotModel alpha and the link's alpha applied
-  std::shared_ptr<const TextureImage> texture;
+  std::shared_ptr<const texture::TextureImage> texture;
   int texture_units = 1;                  // how often `texture` modulates (scene::DrawItem)
   Eigen::Vector3f emissive{0, 0, 0};
 };

@@ -10,7 +10,7 @@
 
 #include "geometry/triangle_mesh.h"
 #include "scene/text_layout.h"
-#include "scene/texture_image.h"
+#include "texture/texture_image.h"
 
 namespace urdfsnap::scene {
 
@@ -21,7 +21,7 @@ struct DrawItem {
   Eigen::Vector4f rgba{1, 0, 0, 1};     // diffuse colour and alpha
   int link = -1;                        // index into the robot's links(); -1 for markers
   // modulates the lit colour (Ogre's default texture unit), sampled at the mesh's uvs; none if null
-  std::shared_ptr<const TextureImage> texture;
+  std::shared_ptr<const texture::TextureImage> texture;
   // how many of the material's texture units show `texture`: the lit colour is multiplied by it
   // this many times (RViz gives a mesh material one unit per texture map, all showing its diffuse
   // map; see geometry::MeshPart)
@@ -39,7 +39,7 @@ struct LineSet {
 // y up in metres, hung at an anchor point, textured with a luminance-alpha glyph texture, blended,
 // depth-tested without depth writes and pulled slightly towards the camera (movable_text.cpp).
 struct TextLabel {
-  std::shared_ptr<const TextureImage> texture;
+  std::shared_ptr<const texture::TextureImage> texture;
   std::vector<GlyphQuad> quads;
   Eigen::Vector3d anchor = Eigen::Vector3d::Zero();   // in the fixed frame
   Eigen::Vector4f rgba{1, 1, 1, 1};

@@ -29,7 +29,7 @@ std::set<char32_t> CodePointsOf(const std::vector<std::string>& texts) {
   return code_points;
 }
 
-std::vector<GlyphQuad> LayOutText(const GlyphAtlas& atlas, const std::string& text, float char_height) {
+std::vector<GlyphQuad> LayOutText(const texture::GlyphAtlas& atlas, const std::string& text, float char_height) {
   const std::u32string characters = DecodeUtf8(text);
   // Ogre's Font::getGlyphAspectRatio is 1 for a code point without a cell
   const auto advance = [&](char32_t c) {
@@ -46,7 +46,7 @@ std::vector<GlyphQuad> LayOutText(const GlyphAtlas& atlas, const std::string& te
     const float right = left + advance(c);
     // V_BELOW: the cells' top edge is the anchor
     if (const auto it = atlas.glyphs.find(c); c != U' ' && it != atlas.glyphs.end()) {
-      const GlyphCell& cell = it->second;
+      const texture::GlyphCell& cell = it->second;
       quads.push_back({{left, -char_height}, {right, 0.f}, {cell.u0, cell.v1}, {cell.u1, cell.v0}});
     }
     left = right;

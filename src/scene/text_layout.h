@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "scene/glyph_atlas.h"
+#include "texture/glyph_atlas.h"
 
 namespace urdfsnap::scene {
 
@@ -28,6 +28,6 @@ std::set<char32_t> CodePointsOf(const std::vector<std::string>& texts);
 // H_CENTER, V_BELOW): each character a cell `char_height` high and `aspect * char_height` wide,
 // a space as wide as an 'A'. A character without a cell in `atlas` leaves a gap one character
 // height wide, as in Ogre.
-std::vector<GlyphQuad> LayOutText(const GlyphAtlas& atlas, const std::string& text, float char_height);
+std::vector<GlyphQuad> LayOutText(const texture::GlyphAtlas& atlas, const std::string& text, float char_height);
 
 }  // namespace urdfsnap::scene

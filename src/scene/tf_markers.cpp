@@ -2,7 +2,7 @@
 // TF display sizes and colours them, and the frame names as camera-facing text labels.
 #include "scene/tf_markers.h"
 
-#include "scene/glyph_atlas.h"
+#include "texture/glyph_atlas.h"
 #include "scene/primitive_meshes.h"
 #include "scene/text_layout.h"
 
@@ -74,7 +74,7 @@ Eigen::Vector4f NameColourOn(const Eigen::Vector3f& background) {
 std::vector<TextLabel> MakeTfNameLabels(const model::Robot& robot, const TfOptions& options) {
   std::vector<std::string> names;
   for (const auto& link : robot.links()) names.push_back(link.name);
-  const std::shared_ptr<const GlyphAtlas> atlas = BuildGlyphAtlas(FindLiberationSans(), CodePointsOf(names));
+  const std::shared_ptr<const texture::GlyphAtlas> atlas = texture::BuildGlyphAtlas(texture::FindLiberationSans(), CodePointsOf(names));
   std::vector<TextLabel> labels;
   for (const std::string& name : names) {
     labels.push_back({atlas->texture, LayOutText(*atlas, name, kNameHeight * static_cast<float>(options.marker_scale)),

@@ -14,7 +14,7 @@ extern "C" {
 
 #include "common/error.h"
 #include "common/file_reading.h"
-#include "video/ffmpeg_output.h"
+#include "video/internal/ffmpeg_output.h"
 
 namespace urdfsnap::video {
 

@@ -1,5 +1,5 @@
 // Codecs: LoadModule of urdfsnap-video.so, and OpenAnimationReader through it.
-#include "video/codec_module.h"
+#include "video/internal/codec_module.h"
 
 #include "common/error.h"
 #include "common/module_loader.h"

@@ -1,9 +1,9 @@
 // urdfsnap-video.so's entry point: its table of encoders and the reader, for its own build only.
 #include "common/module_loader.h"
-#include "video/codec_module.h"
-#include "video/gif_encoder.h"
-#include "video/video_encoder.h"
-#include "video/webp_encoder.h"
+#include "video/internal/codec_module.h"
+#include "video/internal/gif_encoder.h"
+#include "video/internal/video_encoder.h"
+#include "video/internal/webp_encoder.h"
 
 // kCodecModuleEntry
 extern "C" __attribute__((visibility("default"))) const void* urdfsnap_video_module(

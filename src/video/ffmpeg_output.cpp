@@ -1,6 +1,6 @@
 // EncodedOutput on libavcodec's send/receive API and libavformat's interleaving writer; FFmpeg's
 // log captured through av_log_set_callback.
-#include "video/ffmpeg_output.h"
+#include "video/internal/ffmpeg_output.h"
 
 extern "C" {
 #include <libavutil/imgutils.h>

@@ -1,6 +1,6 @@
 // FilterGraph: buffer/buffersink filters made by hand, the rest parsed from the description with
 // avfilter_graph_parse_ptr (FFmpeg's filtering example's way of joining them).
-#include "video/filter_graph.h"
+#include "video/internal/filter_graph.h"
 
 extern "C" {
 #include <libavfilter/buffersink.h>
@@ -9,7 +9,7 @@ extern "C" {
 }
 
 #include "common/error.h"
-#include "video/ffmpeg_output.h"
+#include "video/internal/ffmpeg_output.h"
 
 namespace urdfsnap::video {
 

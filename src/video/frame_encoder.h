@@ -3,13 +3,13 @@
 // interface for all: open with the size and frame rate, write the frames in order, finish. Every
 // encoder streams (memory does not grow with the number of frames), writes to temporary files and
 // moves the result into place only when finished, so an error never leaves a partial output.
+// Encoders are opened by OpenFrameEncoder (open_frame_encoder.h).
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <string>
 
-#include "common/warnings.h"
 #include "image/image.h"
 
 namespace urdfsnap::video {
@@ -61,13 +61,5 @@ class FrameEncoder {
   // Completes the output and moves it into place. Throws Error; then nothing is left behind.
   virtual void Finish() = 0;
 };
-
-// Opens the encoder for `path` (see OutputFormatOf), creating its temporary output at once so that
-// an unwritable place is reported before any frame is made. Throws Error for an unknown format, a
-// size the format cannot hold (odd sides for MP4's 4:2:0 chroma, WebP's 16383 pixels), a bad
-// frame rate, a video starting past frame 0, or an output that cannot be written. Advice that is no error (GIF frame delays
-// browsers do not honour) goes to `warnings`.
-std::unique_ptr<FrameEncoder> OpenFrameEncoder(const std::string& path,
-                                               const EncoderSettings& settings, Warnings& warnings);
 
 }  // namespace urdfsnap::video

@@ -1,7 +1,7 @@
 // FrameStore: zstd at a fast level (robot renders shrink ten- to thirtyfold: large flat background,
 // smooth shading), each frame as a 4-byte size and its compressed bytes, pread/pwrite on the
 // unnamed file.
-#include "video/frame_store.h"
+#include "video/internal/frame_store.h"
 
 #include <fcntl.h>
 #include <unistd.h>

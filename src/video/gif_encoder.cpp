@@ -1,15 +1,15 @@
 // GifEncoder: palettegen over every frame while storing them, then paletteuse (Sierra-2-4A error
 // diffusion, only the rectangle that changed reprocessed so still areas do not shimmer) into the
 // GIF encoder and muxer.
-#include "video/gif_encoder.h"
+#include "video/internal/gif_encoder.h"
 
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/number_text.h"
-#include "video/ffmpeg_output.h"
-#include "video/filter_graph.h"
-#include "video/frame_size.h"
-#include "video/frame_store.h"
+#include "video/internal/ffmpeg_output.h"
+#include "video/internal/filter_graph.h"
+#include "video/internal/frame_size.h"
+#include "video/internal/frame_store.h"
 
 namespace urdfsnap::video {
 namespace {

@@ -1,9 +1,9 @@
-// PngSequenceEncoder: image::EncodePng into FrameFiles.
-#include "video/png_sequence_encoder.h"
+// PngSequenceEncoder: image::EncodePng into NumberedFiles.
+#include "video/internal/png_sequence_encoder.h"
 
 #include "image/png_writer.h"
-#include "video/frame_files.h"
-#include "video/frame_size.h"
+#include "video/numbered_files.h"
+#include "video/internal/frame_size.h"
 
 namespace urdfsnap::video {
 namespace {
@@ -23,7 +23,7 @@ class PngSequenceEncoder final : public FrameEncoder {
 
  private:
   EncoderSettings settings_;
-  FrameFiles files_;
+  NumberedFiles files_;
 };
 
 }  // namespace

@@ -1,5 +1,5 @@
 // VideoEncoder: one yuv420p frame reused for every input, the codec's settings per format.
-#include "video/video_encoder.h"
+#include "video/internal/video_encoder.h"
 
 extern "C" {
 #include <libavutil/opt.h>
@@ -8,8 +8,8 @@ extern "C" {
 
 #include "common/atomic_file.h"
 #include "common/error.h"
-#include "video/ffmpeg_output.h"
-#include "video/frame_size.h"
+#include "video/internal/ffmpeg_output.h"
+#include "video/internal/frame_size.h"
 
 namespace urdfsnap::video {
 namespace {

@@ -1,6 +1,6 @@
 // WebpEncoder: RIFF/WEBP container with VP8X and ANIM chunks, then one ANMF chunk per frame as
 // libwebp's animation encoder made it (see developers.google.com/speed/webp/docs/riff_container).
-#include "video/webp_encoder.h"
+#include "video/internal/webp_encoder.h"
 
 #include <webp/demux.h>
 #include <webp/encode.h>
@@ -11,7 +11,7 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
-#include "video/frame_size.h"
+#include "video/internal/frame_size.h"
 
 namespace urdfsnap::video {
 namespace {

@@ -1,18 +1,18 @@
 // Python attribute access and the methods of the builtin types that xacro files use.
-#include "xacro/attributes.h"
+#include "xacro/internal/attributes.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
 
-#include "xacro/call_arguments.h"
-#include "xacro/evaluation_budget.h"
-#include "xacro/operators.h"
-#include "xacro/python_iterators.h"
-#include "xacro/python_set.h"
-#include "xacro/python_types.h"
-#include "xacro/symbol_table.h"
+#include "xacro/internal/call_arguments.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/operators.h"
+#include "xacro/internal/python_iterators.h"
+#include "xacro/internal/python_set.h"
+#include "xacro/internal/python_types.h"
+#include "xacro/internal/symbol_table.h"
 
 namespace urdfsnap::xacro {
 

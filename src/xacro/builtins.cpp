@@ -1,20 +1,20 @@
 // Python's builtin functions on Values (the types are in type_constructors.cpp, math in
 // math_module.cpp) and the global symbol table xacro's expressions start from.
-#include "xacro/builtins.h"
+#include "xacro/internal/builtins.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "xacro/call_arguments.h"
-#include "xacro/evaluation_budget.h"
-#include "xacro/math_module.h"
-#include "xacro/number_format.h"
-#include "xacro/operators.h"
-#include "xacro/python_complex.h"
-#include "xacro/python_hash.h"
-#include "xacro/python_iterators.h"
-#include "xacro/python_set.h"
-#include "xacro/python_types.h"
+#include "xacro/internal/call_arguments.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/math_module.h"
+#include "xacro/internal/number_format.h"
+#include "xacro/internal/operators.h"
+#include "xacro/internal/python_complex.h"
+#include "xacro/internal/python_hash.h"
+#include "xacro/internal/python_iterators.h"
+#include "xacro/internal/python_set.h"
+#include "xacro/internal/python_types.h"
 
 namespace urdfsnap::xacro {
 namespace {

@@ -1,5 +1,5 @@
 // Argument-count and keyword checks worded as CPython words them.
-#include "xacro/call_arguments.h"
+#include "xacro/internal/call_arguments.h"
 
 #include <algorithm>
 

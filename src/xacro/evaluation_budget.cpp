@@ -1,5 +1,5 @@
 // EvaluationBudget: counters per thread, owned by the outermost open budget.
-#include "xacro/evaluation_budget.h"
+#include "xacro/internal/evaluation_budget.h"
 
 #include <string>
 

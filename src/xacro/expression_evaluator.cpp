@@ -1,15 +1,15 @@
 // Tree-walking evaluation of Python expressions.
-#include "xacro/expression_evaluator.h"
+#include "xacro/internal/expression_evaluator.h"
 
 #include <optional>
 #include <utility>
 #include <vector>
 
-#include "xacro/attributes.h"
-#include "xacro/evaluation_budget.h"
-#include "xacro/operators.h"
-#include "xacro/python_hash.h"
-#include "xacro/python_set.h"
+#include "xacro/internal/attributes.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/operators.h"
+#include "xacro/internal/python_hash.h"
+#include "xacro/internal/python_set.h"
 
 namespace urdfsnap::xacro {
 namespace {

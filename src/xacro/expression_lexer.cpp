@@ -1,6 +1,6 @@
 // Python's tokenizer for expressions: number literals (with underscores, 0x/0o/0b prefixes,
 // exponents, imaginary `j`), string literals (quotes, escapes, raw and triple-quoted forms), names, operators.
-#include "xacro/expression_lexer.h"
+#include "xacro/internal/expression_lexer.h"
 
 #include <cctype>
 #include <cstdlib>

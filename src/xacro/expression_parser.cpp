@@ -1,9 +1,9 @@
 // Recursive-descent parser for the Python expression subset, following Python's grammar rules.
-#include "xacro/expression_parser.h"
+#include "xacro/internal/expression_parser.h"
 
 #include <set>
 
-#include "xacro/expression_lexer.h"
+#include "xacro/internal/expression_lexer.h"
 
 namespace urdfsnap::xacro {
 namespace {

@@ -1,5 +1,5 @@
 // Macro parameter parsing (xacro's re_macro_arg) and macro scopes.
-#include "xacro/macro_table.h"
+#include "xacro/internal/macro_table.h"
 
 #include <regex>
 

@@ -1,13 +1,13 @@
 // The math module's functions and constants on Values, with Python's errors.
-#include "xacro/math_module.h"
+#include "xacro/internal/math_module.h"
 
 #include <cmath>
 
 #include <algorithm>
 
-#include "xacro/attributes.h"
-#include "xacro/call_arguments.h"
-#include "xacro/operators.h"
+#include "xacro/internal/attributes.h"
+#include "xacro/internal/call_arguments.h"
+#include "xacro/internal/operators.h"
 
 namespace urdfsnap::xacro {
 namespace {

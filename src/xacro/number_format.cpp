@@ -1,6 +1,6 @@
 // Python 3's spelling of numbers: float repr via the shortest round-trip digits, int str, and the
 // text-to-number conversions int() and float() accept.
-#include "xacro/number_format.h"
+#include "xacro/internal/number_format.h"
 
 #include <charconv>
 #include <cmath>

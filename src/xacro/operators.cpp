@@ -1,16 +1,16 @@
 // Python operator semantics on values.
-#include "xacro/operators.h"
+#include "xacro/internal/operators.h"
 
 #include <cmath>
 
-#include "xacro/evaluation_budget.h"
-#include "xacro/number_format.h"
-#include "xacro/python_complex.h"
-#include "xacro/python_hash.h"
-#include "xacro/python_iterators.h"
-#include "xacro/python_set.h"
-#include "xacro/python_types.h"
-#include "xacro/string_format.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/number_format.h"
+#include "xacro/internal/python_complex.h"
+#include "xacro/internal/python_hash.h"
+#include "xacro/internal/python_iterators.h"
+#include "xacro/internal/python_set.h"
+#include "xacro/internal/python_types.h"
+#include "xacro/internal/string_format.h"
 
 namespace urdfsnap::xacro {
 namespace {

@@ -1,5 +1,5 @@
 // The in-order xacro processor, a port of xacro's eval_all() and its helpers onto xml_tree.
-#include "xacro/processor.h"
+#include "xacro/internal/processor.h"
 
 #include <glob.h>
 #include <pthread.h>
@@ -10,11 +10,11 @@
 #include <regex>
 
 #include "common/error.h"
-#include "xacro/expression_evaluator.h"
-#include "xacro/builtins.h"
-#include "xacro/evaluation_budget.h"
-#include "xacro/number_format.h"
-#include "xacro/yaml_loader.h"
+#include "xacro/internal/expression_evaluator.h"
+#include "xacro/internal/builtins.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/number_format.h"
+#include "xacro/internal/yaml_loader.h"
 
 namespace urdfsnap::xacro {
 namespace {

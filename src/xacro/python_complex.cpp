@@ -1,11 +1,11 @@
 // Complex arithmetic, spelling and parsing as CPython 3.11 has them.
-#include "xacro/python_complex.h"
+#include "xacro/internal/python_complex.h"
 
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 
-#include "xacro/number_format.h"
+#include "xacro/internal/number_format.h"
 
 namespace urdfsnap::xacro {
 namespace {

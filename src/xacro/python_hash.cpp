@@ -1,13 +1,13 @@
 // CPython 3.11's hash functions (Python/pyhash.c, Objects/longobject.c, floatobject.c,
 // tupleobject.c, setobject.c, complexobject.c, rangeobject.c), on Values.
-#include "xacro/python_hash.h"
+#include "xacro/internal/python_hash.h"
 
 #include <cmath>
 #include <cstring>
 #include <vector>
 
-#include "xacro/python_iterators.h"
-#include "xacro/python_set.h"
+#include "xacro/internal/python_iterators.h"
+#include "xacro/internal/python_set.h"
 
 namespace urdfsnap::xacro {
 namespace {

@@ -1,7 +1,7 @@
 // map, filter, zip, enumerate, reversed and range as CPython 3.11 has them.
-#include "xacro/python_iterators.h"
+#include "xacro/internal/python_iterators.h"
 
-#include "xacro/evaluation_budget.h"
+#include "xacro/internal/evaluation_budget.h"
 
 namespace urdfsnap::xacro {
 namespace {

@@ -1,8 +1,8 @@
 // CPython 3.11's set table and set algebra (Objects/setobject.c), on Values.
-#include "xacro/python_set.h"
+#include "xacro/internal/python_set.h"
 
-#include "xacro/evaluation_budget.h"
-#include "xacro/python_hash.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/python_hash.h"
 
 namespace urdfsnap::xacro {
 namespace {

@@ -1,12 +1,12 @@
 // Type objects: the registry of builtin types, type(), isinstance/issubclass, unions and the
 // classes of type(name, bases, dict).
-#include "xacro/python_types.h"
+#include "xacro/internal/python_types.h"
 
 #include <cstdio>
 #include <unordered_map>
 
-#include "xacro/attributes.h"
-#include "xacro/python_iterators.h"
+#include "xacro/internal/attributes.h"
+#include "xacro/internal/python_iterators.h"
 
 namespace urdfsnap::xacro {
 namespace {

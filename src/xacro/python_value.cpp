@@ -1,18 +1,18 @@
 // Python's rules for values: constructors, str()/repr(), truth, equality, ordering, calls and
 // iteration.
-#include "xacro/python_value.h"
+#include "xacro/internal/python_value.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "xacro/evaluation_budget.h"
-#include "xacro/number_format.h"
-#include "xacro/python_complex.h"
-#include "xacro/python_hash.h"
-#include "xacro/python_iterators.h"
-#include "xacro/python_set.h"
-#include "xacro/python_types.h"
-#include "xacro/symbol_table.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/number_format.h"
+#include "xacro/internal/python_complex.h"
+#include "xacro/internal/python_hash.h"
+#include "xacro/internal/python_iterators.h"
+#include "xacro/internal/python_set.h"
+#include "xacro/internal/python_types.h"
+#include "xacro/internal/symbol_table.h"
 
 namespace urdfsnap::xacro {
 

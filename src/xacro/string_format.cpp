@@ -1,13 +1,13 @@
 // Python's `%` string formatting on top of C's snprintf for the numeric conversions.
-#include "xacro/string_format.h"
+#include "xacro/internal/string_format.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "xacro/evaluation_budget.h"
-#include "xacro/number_format.h"
-#include "xacro/operators.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/number_format.h"
+#include "xacro/internal/operators.h"
 
 namespace urdfsnap::xacro {
 namespace {

@@ -1,5 +1,5 @@
 // Substitution args as xacro's substitution_args.py resolves them.
-#include "xacro/substitution_args.h"
+#include "xacro/internal/substitution_args.h"
 
 #include <unistd.h>
 
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "common/error.h"
-#include "xacro/expression_evaluator.h"
-#include "xacro/expression_parser.h"
+#include "xacro/internal/expression_evaluator.h"
+#include "xacro/internal/expression_parser.h"
 
 namespace urdfsnap::xacro {
 namespace {

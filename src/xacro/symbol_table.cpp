@@ -1,9 +1,9 @@
 // Lazy property scopes (xacro's Table).
-#include "xacro/symbol_table.h"
+#include "xacro/internal/symbol_table.h"
 
 #include <algorithm>
 
-#include "xacro/number_format.h"
+#include "xacro/internal/number_format.h"
 
 namespace urdfsnap::xacro {
 

@@ -1,6 +1,6 @@
 // The xacro document tree: parsing with expat (keeping line numbers), in-place editing, and
 // xacro's pretty printer.
-#include "xacro/xml_tree.h"
+#include "xacro/internal/xml_tree.h"
 
 #include <expat.h>
 #include <sys/mman.h>

@@ -1,5 +1,5 @@
 // YAML to Python values with PyYAML's YAML 1.1 implicit typing, on top of yaml-cpp.
-#include "xacro/yaml_loader.h"
+#include "xacro/internal/yaml_loader.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -8,9 +8,9 @@
 #include <unordered_map>
 
 #include "common/file_reading.h"
-#include "xacro/evaluation_budget.h"
-#include "xacro/number_format.h"
-#include "xacro/xml_tree.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/number_format.h"
+#include "xacro/internal/xml_tree.h"
 
 namespace urdfsnap::xacro {
 

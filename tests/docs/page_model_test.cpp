@@ -9,7 +9,7 @@
 #include "common/error.h"
 #include "docs/fact_text.h"
 #include "docs/file_names.h"
-#include "docs/joint_motion.h"
+#include "docs/joint_sweeps.h"
 #include "docs/test_robot.h"
 
 namespace urdfsnap::docs {

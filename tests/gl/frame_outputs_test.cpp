@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "front_view.h"
 #include "renderer_fixture.h"
 #include "scene/grid.h"

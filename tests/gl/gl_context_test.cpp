@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "front_view.h"
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "scene/primitive_meshes.h"
 #include "support/gl_required.h"
 
@@ -47,7 +47,7 @@ TEST_P(GlContextTest, SaysWhoAskedForItAndTellsTheRendererChoiceOnce) {
   BackendChoice choice(GetParam());
   choice.asked_by = "--gl-backend";
   choice.on_context = [&](const std::string& summary) { told.push_back(summary); };
-  const Renderer renderer(0, choice);
+  const SceneRenderer renderer(0, choice);
   EXPECT_EQ(told, std::vector<std::string>{renderer.Summary()});
   EXPECT_EQ(renderer.Summary(), context->Summary());
 }
@@ -86,11 +86,11 @@ TEST(GlContextFactoryTest, BackendsTakeTurnsInOneProcess) {
   URDFSNAP_REQUIRE_GL_BACKEND(Backend::kEgl);
   // each backend draws its own colour: a call that reached the other backend's context would
   // show up as the other colour (or as the background)
-  Renderer osmesa(4, {Backend::kOsMesa});
-  Renderer egl(4, {Backend::kEgl});
+  SceneRenderer osmesa(4, {Backend::kOsMesa});
+  SceneRenderer egl(4, {Backend::kEgl});
   const scene::Scene red = BoxFacingTheCamera({1, 0, 0}), blue = BoxFacingTheCamera({0, 0, 1});
   for (int round = 0; round < 3; ++round) {
-    for (Renderer* renderer : {&osmesa, &egl, &egl, &osmesa}) {
+    for (SceneRenderer* renderer : {&osmesa, &egl, &egl, &osmesa}) {
       const bool is_egl = renderer == &egl;
       const image::Image image = renderer->Render(is_egl ? blue : red, FrontView(), 64, 48).colour;
       const size_t centre = (24 * 64 + 32) * 3;

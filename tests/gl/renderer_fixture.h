@@ -1,4 +1,4 @@
-// The GL tests' fixture: one Renderer (4x multisampling) for a test suite, made by the first test
+// The GL tests' fixture: one SceneRenderer (4x multisampling) for a test suite, made by the first test
 // that finds a GL context. Without one the tests are skipped with the GL factory's reason (failed
 // under CI=true). ctest runs the GL tests once per backend with URDFSNAP_GL_BACKEND set, which
 // the renderer follows.
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gl/renderer.h"
+#include "gl/scene_renderer.h"
 #include "support/gl_required.h"
 
 namespace urdfsnap::gl {
@@ -15,13 +15,13 @@ class RendererFixture : public ::testing::Test {
  protected:
   void SetUp() override {
     URDFSNAP_REQUIRE_GL();
-    if (!renderer_) renderer_ = new Renderer(4);
+    if (!renderer_) renderer_ = new SceneRenderer(4);
   }
   static void TearDownTestSuite() {
     delete renderer_;
     renderer_ = nullptr;
   }
-  static inline Renderer* renderer_ = nullptr;
+  static inline SceneRenderer* renderer_ = nullptr;
 };
 
 }  // namespace urdfsnap::gl

@@ -13,7 +13,7 @@
 #include "model/forward_kinematics.h"
 #include "scene/primitive_meshes.h"
 #include "scene/robot_scene.h"
-#include "scene/texture_file.h"
+#include "texture/texture_file.h"
 
 namespace urdfsnap::scene {
 namespace {
@@ -45,7 +45,7 @@ TEST_F(SceneTextureTest, UrdfTextureIsDrawnOnWhiteOnEveryShapeAndCollision) {
   const Scene scene = BuildTexbot();
   EXPECT_TRUE(warnings_.empty());
   int textured_shapes = 0;
-  std::shared_ptr<const TextureImage> checker;
+  std::shared_ptr<const texture::TextureImage> checker;
   for (const DrawItem& item : scene.items) {
     if (item.mesh != UnitBoxMesh() && item.mesh != UnitCylinderMesh() && item.mesh != UnitSphereMesh()) continue;
     ASSERT_TRUE(item.texture) << item.link;
@@ -97,7 +97,7 @@ TEST_F(SceneTextureTest, MissingTextureIsAnErrorAtTheLinkOrAWarningWhenAllowed) 
   const Scene scene = Build(kMissingTexture);
   ASSERT_EQ(scene.items.size(), 1u);
   // robot_link.cpp names the image to Ogre all the same, and Ogre draws its warning texture
-  EXPECT_EQ(scene.items[0].texture, WarningTexture());
+  EXPECT_EQ(scene.items[0].texture, texture::WarningTexture());
   ASSERT_EQ(warnings_.messages().size(), 1u);
   EXPECT_NE(warnings_.messages()[0].find("drawn with Ogre's warning texture"), std::string::npos)
       << warnings_.messages()[0];
@@ -133,7 +133,7 @@ TEST_F(SceneTextureTest, EveryMapOfAMeshMaterialModulatesByItsDiffuseMap) {
   EXPECT_EQ(item_of("base_colour_gltf").texture_units, 2);
   // maps without a diffuse one: Ogre's warning texture over the material's own colour, said once
   const DrawItem bump_only = item_of("bump_only");
-  EXPECT_EQ(bump_only.texture, WarningTexture());
+  EXPECT_EQ(bump_only.texture, texture::WarningTexture());
   EXPECT_EQ(bump_only.texture_units, 1);
   EXPECT_TRUE(bump_only.rgba.isApprox(Eigen::Vector4f(0.8f, 0.6f, 0.4f, 1)));
   ASSERT_EQ(warnings_.messages().size(), 1u);
@@ -144,7 +144,7 @@ TEST_F(SceneTextureTest, EveryMapOfAMeshMaterialModulatesByItsDiffuseMap) {
 }
 
 TEST(WarningTextureTest, IsOgresYellowAndBlackStripes) {
-  const std::shared_ptr<const TextureImage> warning = WarningTexture();
+  const std::shared_ptr<const texture::TextureImage> warning = texture::WarningTexture();
   ASSERT_EQ(warning->width, 8);
   ASSERT_EQ(warning->height, 8);
   ASSERT_EQ(warning->channels, 4);
@@ -160,7 +160,7 @@ TEST(WarningTextureTest, IsOgresYellowAndBlackStripes) {
   EXPECT_EQ(texel(7, 0), yellow);
   EXPECT_EQ(texel(7, 1), black);
   EXPECT_EQ(texel(2, 5), yellow);
-  EXPECT_EQ(WarningTexture(), warning);
+  EXPECT_EQ(texture::WarningTexture(), warning);
 }
 
 }  // namespace

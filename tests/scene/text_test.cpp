@@ -3,25 +3,25 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "scene/glyph_atlas.h"
+#include "texture/glyph_atlas.h"
 #include "scene/text_layout.h"
 
 namespace urdfsnap::scene {
 namespace {
 
-GlyphAtlas Atlas(const std::vector<std::string>& texts) {
-  return *BuildGlyphAtlas(FindLiberationSans(), CodePointsOf(texts));
+texture::GlyphAtlas Atlas(const std::vector<std::string>& texts) {
+  return *texture::BuildGlyphAtlas(texture::FindLiberationSans(), CodePointsOf(texts));
 }
 
 // the luminance-alpha texel at (x, y)
-std::pair<int, int> Texel(const TextureImage& t, int x, int y) {
+std::pair<int, int> Texel(const texture::TextureImage& t, int x, int y) {
   const size_t i = (static_cast<size_t>(y) * t.width + x) * 2;
   return {t.texels[i], t.texels[i + 1]};
 }
 
 TEST(GlyphAtlasTest, CellsShareOneHeightAndHoldTheirGlyphsOnly) {
-  const GlyphAtlas atlas = Atlas({"base_link", "Wj|"});
-  const TextureImage& t = *atlas.texture;
+  const texture::GlyphAtlas atlas = Atlas({"base_link", "Wj|"});
+  const texture::TextureImage& t = *atlas.texture;
   ASSERT_EQ(t.channels, 2);
   ASSERT_EQ(t.texels.size(), static_cast<size_t>(t.width) * t.height * 2);
   // every character but the space has a cell; all cells span the same rows
@@ -57,9 +57,9 @@ TEST(GlyphAtlasTest, CellsShareOneHeightAndHoldTheirGlyphsOnly) {
 TEST(GlyphAtlasTest, HeightAndBaselineAreOgresHintedOnes) {
   // Ogre's FreeType pass over code points 0..999 of Liberation Sans at 24 px per em: cells 28 texels
   // high (from 'ý', 2·23 − 18); an 'l' (17 rows above the baseline) starts 24 − 17 = 7 rows down
-  const GlyphAtlas atlas = Atlas({"l"});
-  const TextureImage& t = *atlas.texture;
-  const GlyphCell& l = atlas.glyphs.at(U'l');
+  const texture::GlyphAtlas atlas = Atlas({"l"});
+  const texture::TextureImage& t = *atlas.texture;
+  const texture::GlyphCell& l = atlas.glyphs.at(U'l');
   EXPECT_NEAR((l.v1 - l.v0) * t.height, 28, 1e-3);
   const int top = static_cast<int>(std::lround(l.v0 * t.height));
   const int x = static_cast<int>(std::lround(l.u0 * t.width)) + 2;
@@ -71,7 +71,7 @@ TEST(GlyphAtlasTest, HeightAndBaselineAreOgresHintedOnes) {
 }
 
 TEST(TextLayoutTest, CentredOnTheAnchorAndHangingBelowIt) {
-  const GlyphAtlas atlas = Atlas({"arm"});
+  const texture::GlyphAtlas atlas = Atlas({"arm"});
   const std::vector<GlyphQuad> quads = LayOutText(atlas, "arm", 0.1f);
   ASSERT_EQ(quads.size(), 3u);
   EXPECT_NEAR(quads.front().min.x(), -quads.back().max.x(), 1e-6);
@@ -82,14 +82,14 @@ TEST(TextLayoutTest, CentredOnTheAnchorAndHangingBelowIt) {
       EXPECT_FLOAT_EQ(quads[i].min.x(), quads[i - 1].max.x());
     }
   }
-  const GlyphCell& m = atlas.glyphs.at(U'm');
+  const texture::GlyphCell& m = atlas.glyphs.at(U'm');
   EXPECT_NEAR(quads[2].max.x() - quads[2].min.x(), m.aspect * 0.1, 1e-6);
   EXPECT_EQ(quads[2].uv_min, Eigen::Vector2f(m.u0, m.v1));
   EXPECT_EQ(quads[2].uv_max, Eigen::Vector2f(m.u1, m.v0));
 }
 
 TEST(TextLayoutTest, SpaceIsAsWideAsACapitalAAndUnknownCharactersAreOneHeight) {
-  const GlyphAtlas atlas = Atlas({"a b"});
+  const texture::GlyphAtlas atlas = Atlas({"a b"});
   const std::vector<GlyphQuad> spaced = LayOutText(atlas, "a b", 1.f);
   ASSERT_EQ(spaced.size(), 2u);
   EXPECT_NEAR(spaced[1].min.x() - spaced[0].max.x(), atlas.space_aspect, 1e-6);
@@ -107,15 +107,15 @@ TEST(TextLayoutTest, DecodesUtf8AndKeepsStrayBytes) {
 }
 
 TEST(GlyphAtlasTest, EachSetOfCodePointsIsBuiltOnce) {
-  const std::string font = FindLiberationSans();
-  const auto first = BuildGlyphAtlas(font, {U'a', U'b'});
-  EXPECT_EQ(BuildGlyphAtlas(font, {U'b', U'a'}), first);
-  EXPECT_NE(BuildGlyphAtlas(font, {U'a'}), first);
+  const std::string font = texture::FindLiberationSans();
+  const auto first = texture::BuildGlyphAtlas(font, {U'a', U'b'});
+  EXPECT_EQ(texture::BuildGlyphAtlas(font, {U'b', U'a'}), first);
+  EXPECT_NE(texture::BuildGlyphAtlas(font, {U'a'}), first);
 }
 
 TEST(GlyphAtlasTest, MissingFontNamesEveryPlaceAndThePackage) {
   try {
-    FindLiberationSans({"/nonexistent/a.ttf", "/nonexistent/b.ttf"});
+    texture::FindLiberationSans({"/nonexistent/a.ttf", "/nonexistent/b.ttf"});
     FAIL() << "no error";
   } catch (const Error& e) {
     const std::string what = e.what();
@@ -123,7 +123,7 @@ TEST(GlyphAtlasTest, MissingFontNamesEveryPlaceAndThePackage) {
     EXPECT_NE(what.find("fonts-liberation"), std::string::npos) << what;
     EXPECT_NE(what.find("--no-tf-names"), std::string::npos) << what;
   }
-  EXPECT_THROW(BuildGlyphAtlas("/nonexistent/font.ttf", {U'a'}), Error);
+  EXPECT_THROW(texture::BuildGlyphAtlas("/nonexistent/font.ttf", {U'a'}), Error);
 }
 
 }  // namespace

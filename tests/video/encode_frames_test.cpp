@@ -11,6 +11,7 @@
 #include "support/error_text.h"
 #include "support/temp_folder.h"
 #include "synthetic_frames.h"
+#include "video/open_frame_encoder.h"
 
 namespace urdfsnap::video {
 namespace {

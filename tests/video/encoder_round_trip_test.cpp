@@ -12,7 +12,7 @@
 #include "image/png_writer.h"
 #include "support/temp_folder.h"
 #include "synthetic_frames.h"
-#include "video/frame_encoder.h"
+#include "video/open_frame_encoder.h"
 
 namespace urdfsnap::video {
 namespace {

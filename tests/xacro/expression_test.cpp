@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "xacro/builtins.h"
-#include "xacro/evaluation_budget.h"
-#include "xacro/expression_evaluator.h"
-#include "xacro/expression_parser.h"
+#include "xacro/internal/builtins.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/expression_evaluator.h"
+#include "xacro/internal/expression_parser.h"
 
 namespace urdfsnap::xacro {
 namespace {

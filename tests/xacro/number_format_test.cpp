@@ -1,5 +1,5 @@
 // Python's spelling of numbers: float repr, int str, int()/float() of text, round().
-#include "xacro/number_format.h"
+#include "xacro/internal/number_format.h"
 
 #include <gtest/gtest.h>
 

@@ -14,10 +14,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "xacro/builtins.h"
-#include "xacro/evaluation_budget.h"
-#include "xacro/expression_evaluator.h"
-#include "xacro/expression_parser.h"
+#include "xacro/internal/builtins.h"
+#include "xacro/internal/evaluation_budget.h"
+#include "xacro/internal/expression_evaluator.h"
+#include "xacro/internal/expression_parser.h"
 
 namespace urdfsnap::xacro {
 namespace {

@@ -1,0 +1,308 @@
+// OpenGL drawing of a scene::Scene: state setup, draw order and per-item uniforms.
+#include "gl/scene_renderer.h"
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+#include "common/error.h"
+#include "gl/internal/framebuffer.h"
+#include "gl/internal/gl_api.h"
+#include "gl/gl_context.h"
+#include "gl/internal/gpu_mesh.h"
+#include "gl/internal/gpu_texture.h"
+#include "gl/internal/shader_program.h"
+
+namespace urdfsnap::gl {
+
+namespace {
+
+// Below this alpha Ogre (and so RViz) switches a material to blended, depth-write-off rendering
+// (robot_link.cpp L383-430, grid.cpp L115-130).
+constexpr float kOpaqueAlpha = 0.9998f;
+
+// Most texture units applied to one mesh. Mesa's fixed-function pipeline has 8; Ogre splits a
+// pass with more into several multiplying passes, which comes to the same product, but a hostile
+// mesh file could ask for millions.
+constexpr int kMaxTextureUnits = 32;
+
+struct Transparent {
+  double depth;            // squared distance from the eye, for back-to-front order
+  std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*> what;
+};
+
+// GPU copies of scene data, made on first use and kept while the source object lives: entries
+// hold the source weakly and are dropped (their GPU memory freed) once it is gone, so a renderer
+// that draws many robots or reloaded models does not grow. Keyed by the source's address; an
+// entry whose source died is replaced when a new object reuses the address.
+template <typename Source, typename Gpu>
+class GpuCache {
+ public:
+  const Gpu& Get(const std::shared_ptr<const Source>& source) {
+    auto it = entries_.find(source.get());
+    if (it == entries_.end() || it->second.source.expired()) {
+      if (entries_.size() >= purge_at_) Purge();
+      it = entries_.insert_or_assign(source.get(), Entry{source, std::make_unique<Gpu>(*source)}).first;
+    }
+    return *it->second.gpu;
+  }
+
+ private:
+  struct Entry {
+    std::weak_ptr<const Source> source;
+    std::unique_ptr<Gpu> gpu;
+  };
+  void Purge() {
+    std::erase_if(entries_, [](const auto& entry) { return entry.second.source.expired(); });
+    purge_at_ = std::max<size_t>(64, 2 * entries_.size());
+  }
+  std::unordered_map<const Source*, Entry> entries_;
+  size_t purge_at_ = 64;
+};
+
+}  // namespace
+
+struct SceneRenderer::Impl {
+  Impl(int samples, const BackendChoice& backend)
+      : samples(samples),
+        context(CreateGlContext(backend.backend, backend.asked_by)),
+        lit("lit.vert", "lit.frag"),
+        line("line.vert", "line.frag"),
+        text("text.vert", "text.frag"),
+        label("label.vert", "label.frag") {
+    glGenVertexArrays(1, &stream_array);
+    glGenBuffers(1, &stream_buffer);
+  }
+  ~Impl() {
+    // this context's objects are deleted in it (the members below too), not in whichever
+    // context another SceneRenderer made current last
+    try {
+      context->MakeCurrent();
+    } catch (const Error&) {
+      // nothing to delete them in: they go with the context
+    }
+    glDeleteBuffers(1, &stream_buffer);
+    glDeleteVertexArrays(1, &stream_array);
+  }
+
+  // Fills the stream buffer with `floats` and sets up attribute i from `sizes[i]` of each vertex.
+  void Stream(const std::vector<float>& floats, std::initializer_list<int> sizes) {
+    glBindVertexArray(stream_array);
+    glBindBuffer(GL_ARRAY_BUFFER, stream_buffer);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(floats.size() * sizeof(float)),
+                 floats.data(), GL_STREAM_DRAW);
+    int stride = 0;
+    for (int size : sizes) stride += size;
+    int offset = 0, index = 0;
+    for (int size : sizes) {
+      glEnableVertexAttribArray(index);
+      glVertexAttribPointer(index++, size, GL_FLOAT, GL_FALSE, stride * static_cast<GLsizei>(sizeof(float)),
+                            reinterpret_cast<const void*>(offset * sizeof(float)));
+      offset += size;
+    }
+    for (; index < 2; ++index) glDisableVertexAttribArray(index);
+  }
+
+  void DrawMesh(const scene::DrawItem& item, const Eigen::Matrix4d& V, const Eigen::Matrix4d& PV) {
+    const Eigen::Matrix4d M = item.X_FG.matrix();
+    lit.Set("model_view_projection", Eigen::Matrix4f((PV * M).cast<float>()));
+    const Eigen::Matrix3d MV = (V * M).topLeftCorner<3, 3>();
+    lit.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
+    lit.Set("diffuse", item.rgba);
+    lit.Set("emissive", item.emissive);
+    lit.Set("texture_units", item.texture ? std::clamp(item.texture_units, 0, kMaxTextureUnits) : 0);
+    if (item.texture) {
+      lit.Set("image", 0);
+      textures.Get(item.texture).Bind(0);
+    }
+    // a mirroring scale turns the winding around; Ogre flips culling for such nodes, and so do we
+    glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
+    meshes.Get(item.mesh).Draw();
+  }
+
+  void DrawLines(const scene::LineSet& lines, const Eigen::Matrix4d& PV) {
+    line.Use();
+    line.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
+    line.Set("colour", lines.rgba);
+    std::vector<float> floats;
+    floats.reserve(lines.points.size() * 3);
+    for (const auto& p : lines.points) floats.insert(floats.end(), p.data(), p.data() + 3);
+    Stream(floats, {3});
+    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.points.size()));
+  }
+
+  // movable_text.cpp: depth-checked, no depth write, depth bias (1, 1), which Ogre's GL render
+  // system applies as glPolygonOffset(-1, -1); two triangles per character, as MovableText's
+  void DrawLabel(const scene::TextLabel& label, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
+    if (label.quads.empty()) return;
+    text.Use();
+    text.Set("projection", Eigen::Matrix4f(P.cast<float>()));
+    text.Set("anchor_view", Eigen::Vector3f((V * label.anchor.homogeneous()).head<3>().cast<float>()));
+    text.Set("colour", label.rgba);
+    text.Set("glyphs", 0);
+    textures.Get(label.texture).Bind(0);
+    std::vector<float> floats;
+    floats.reserve(label.quads.size() * 24);
+    for (const auto& q : label.quads) {
+      const float corners[6][4] = {
+          {q.min.x(), q.max.y(), q.uv_min.x(), q.uv_max.y()},   // upper left
+          {q.min.x(), q.min.y(), q.uv_min.x(), q.uv_min.y()},   // lower left
+          {q.max.x(), q.max.y(), q.uv_max.x(), q.uv_max.y()},   // upper right
+          {q.max.x(), q.max.y(), q.uv_max.x(), q.uv_max.y()},   // upper right
+          {q.min.x(), q.min.y(), q.uv_min.x(), q.uv_min.y()},   // lower left
+          {q.max.x(), q.min.y(), q.uv_max.x(), q.uv_min.y()}};  // lower right
+      for (const auto& corner : corners) floats.insert(floats.end(), corner, corner + 4);
+    }
+    Stream(floats, {2, 2});
+    glFrontFace(GL_CCW);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(-1.f, -1.f);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(label.quads.size() * 6));
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+
+  // The colour image: opaque geometry first, then transparent geometry, lines and text blended
+  // back to front, as Ogre orders RViz's scene.
+  image::Image DrawColour(const scene::Scene& scene, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P,
+                          int width, int height) {
+    if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height) {
+      framebuffer.reset();
+      framebuffer = std::make_unique<Framebuffer>(width, height, samples);
+    }
+    framebuffer->Bind();
+    const Eigen::Matrix4d PV = P * V;
+    const Eigen::Vector3d eye = V.inverse().topRightCorner<3, 1>();
+
+    glClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
+    glClearDepth(1.0);
+    glDepthMask(GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+
+    // opaque geometry first, writing depth
+    glDisable(GL_BLEND);
+    lit.Use();
+    std::vector<Transparent> transparent;
+    for (const auto& item : scene.items) {
+      if (item.rgba.w() >= kOpaqueAlpha) {
+        DrawMesh(item, V, PV);
+      } else {
+        transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
+      }
+    }
+    for (const auto& lines : scene.lines) {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const auto& p : lines.points) centre += p.cast<double>();
+      if (!lines.points.empty()) centre /= static_cast<double>(lines.points.size());
+      transparent.push_back({(centre - eye).squaredNorm(), &lines});
+    }
+    // Ogre sorts MovableText with the transparent objects by its node's position, the anchor
+    for (const auto& text_label : scene.labels) {
+      transparent.push_back({(text_label.anchor - eye).squaredNorm(), &text_label});
+    }
+
+    // then blended geometry back to front, depth-tested but not writing depth
+    std::stable_sort(transparent.begin(), transparent.end(),
+                     [](const Transparent& a, const Transparent& b) { return a.depth > b.depth; });
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    for (const auto& t : transparent) {
+      if (const auto* item = std::get_if<const scene::DrawItem*>(&t.what)) {
+        lit.Use();
+        DrawMesh(**item, V, PV);
+      } else if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
+        DrawLines(**lines, PV);
+      } else {
+        DrawLabel(*std::get<const scene::TextLabel*>(t.what), V, P);
+      }
+    }
+    glDepthMask(GL_TRUE);
+    return framebuffer->ReadPixels();
+  }
+
+  // The label image (the depths stay in the label framebuffer for ReadDepths): every draw item
+  // with a link, opaque or not, depth-tested and depth-writing, culled as in the colour image.
+  image::LabelImage DrawLabels(const scene::Scene& scene, const Eigen::Matrix4d& V,
+                               const Eigen::Matrix4d& P, int width, int height) {
+    if (!label_framebuffer || label_framebuffer->width() != width || label_framebuffer->height() != height) {
+      label_framebuffer.reset();
+      label_framebuffer = std::make_unique<LabelFramebuffer>(width, height);
+    }
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    label_framebuffer->BindAndClear();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    label.Use();
+    label.Set("projection", Eigen::Matrix4f(P.cast<float>()));
+    for (const auto& item : scene.items) {
+      if (item.link < 0) continue;
+      if (item.link >= 0xFFFF) {
+        throw Error("the label image holds 65534 links; link index " + std::to_string(item.link) + " does not fit");
+      }
+      const Eigen::Matrix4d M = item.X_FG.matrix();
+      label.Set("model_view", Eigen::Matrix4f((V * M).cast<float>()));
+      label.Set("label", static_cast<unsigned>(item.link + 1));
+      glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
+      meshes.Get(item.mesh).Draw();
+    }
+    return label_framebuffer->ReadLabels();
+  }
+
+  int samples;
+  std::unique_ptr<GlContext> context;
+  ShaderProgram lit;
+  ShaderProgram line;
+  ShaderProgram text;
+  ShaderProgram label;
+  unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
+  std::unique_ptr<Framebuffer> framebuffer;
+  std::unique_ptr<LabelFramebuffer> label_framebuffer;
+  GpuCache<geometry::TriangleMesh, GpuMesh> meshes;
+  GpuCache<texture::TextureImage, GpuTexture> textures;
+};
+
+SceneRenderer::SceneRenderer(int samples, const BackendChoice& backend)
+    : impl_(std::make_unique<Impl>(samples, backend)) {
+  if (backend.on_context) backend.on_context(Summary());
+}
+
+SceneRenderer::~SceneRenderer() = default;
+
+Backend SceneRenderer::backend() const { return impl_->context->backend(); }
+
+const std::string& SceneRenderer::description() const { return impl_->context->description(); }
+
+std::string SceneRenderer::Summary() const { return impl_->context->Summary(); }
+
+void SceneRenderer::ReleaseContext() { impl_->context->Release(); }
+
+image::Frame SceneRenderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width,
+                              int height, const image::FrameOutputs& outputs) {
+  return Render(scene, scene::ViewMatrix(view), scene::ProjectionMatrix(view, static_cast<double>(width) / height),
+                width, height, outputs);
+}
+
+image::Frame SceneRenderer::Render(const scene::Scene& scene, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P,
+                              int width, int height, const image::FrameOutputs& outputs) {
+  Impl& r = *impl_;
+  r.context->MakeCurrent();
+  image::Frame frame;
+  if (outputs.colour) frame.colour = r.DrawColour(scene, V, P, width, height);
+  if (outputs.depth || outputs.labels) {
+    image::LabelImage labels = r.DrawLabels(scene, V, P, width, height);
+    if (outputs.depth) frame.depth = r.label_framebuffer->ReadDepths(labels);
+    if (outputs.labels) frame.labels = std::move(labels);
+  }
+  return frame;
+}
+
+}  // namespace urdfsnap::gl

@@ -1,0 +1,46 @@
+// NumberedFiles: WriteFileAtomically per frame to its temporary name; the files are found again by
+// number for the renames and removal, so nothing grows with the sequence's length.
+#include "video/numbered_files.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <system_error>
+
+#include "common/atomic_file.h"
+#include "common/error.h"
+
+namespace urdfsnap::video {
+
+NumberedFiles::NumberedFiles(const std::string& pattern, std::int64_t first)
+    : pattern_(pattern), temporary_suffix_(".part-" + RandomSuffix()), first_(first) {
+  AtomicFile probe(pattern_.Name(first_));  // created and removed: the place is writable
+}
+
+NumberedFiles::~NumberedFiles() {
+  if (finished_) return;
+  for (std::int64_t number = first_; number < first_ + count_; ++number) {
+    ::unlink(TemporaryName(number).c_str());
+  }
+}
+
+std::string NumberedFiles::TemporaryName(std::int64_t number) const {
+  return pattern_.Name(number) + temporary_suffix_;
+}
+
+void NumberedFiles::Write(std::string_view bytes) {
+  WriteFileAtomically(TemporaryName(first_ + count_), bytes);
+  ++count_;
+}
+
+void NumberedFiles::Finish() {
+  for (std::int64_t number = first_; number < first_ + count_; ++number) {
+    if (std::rename(TemporaryName(number).c_str(), pattern_.Name(number).c_str()) != 0) {
+      throw Error(pattern_.Name(number) + ": cannot write: " + std::system_category().message(errno));
+    }
+  }
+  finished_ = true;
+}
+
+}  // namespace urdfsnap::video
