@@ -72,6 +72,13 @@ void ApplyOptions(const RenderRequest& r, const OptionLabel& label, render::Rend
 }
 
 void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
+  // the TF display's options, when neither --tf nor an .rviz config (which may show TF) turns it on
+  if (!r.tf && r.rviz.empty()) {
+    for (const auto& [given, name] : {std::pair{!r.tf_scale.empty(), "tf-scale"}, {r.no_tf_names, "no-tf-names"},
+                                      {r.no_tf_axes, "no-tf-axes"}, {r.no_tf_arrows, "no-tf-arrows"}}) {
+      if (given) warnings.Add(label(name) + " is ignored: the TF display is off (" + label("tf") + " shows it)");
+    }
+  }
   if (!r.fit && !r.fit_margin.empty()) {
     warnings.Add(label("fit-margin") + " " + r.fit_margin + " is ignored: it is the border " + label("fit") +
                  " leaves, and " + label("fit") + " is not given");

@@ -109,7 +109,7 @@ render::FitMargin ParseFitMargin(const std::string& text, const std::string& opt
   render::FitMargin margin;
   margin.pixels = text.size() > 2 && text.ends_with("px");
   const std::string number = margin.pixels ? text.substr(0, text.size() - 2) : text;
-  const double most_pixels = (std::min(size.width, size.height) - 1) / 2;
+  const double most_pixels = (std::min(size.width, size.height) - 1) / 2.0;
   if (!ParseNumber(number, margin.amount) || margin.amount < 0 ||
       margin.amount > (margin.pixels ? most_pixels : 0.45)) {
     throw Error(option + " '" + text + "': expected a fraction of each side from 0 to 0.45 (e.g. 0.05) or " +

@@ -63,6 +63,7 @@ void AddViewOptions(std::vector<CommandOption>& options, const char* command, co
   number("--distance", "--distance {v}");
   number("--focal", "--focal 0,{v},0");
   number("--fov", "--fov {v}");
+  number("--fit-margin", "--fit --fit-margin {v}");
   number("--background", "--background {v},0,0");
   number("--alpha", "--alpha {v}");
   number("--tf-scale", "--tf-scale {v}");
@@ -221,6 +222,7 @@ const std::vector<SuiteKey>& SuiteKeys() {
       {"distance", Kind::kNumber, "{v}"},
       {"focal", Kind::kNumber, "0,{v},0"},
       {"fov", Kind::kNumber, "{v}"},
+      {"fit-margin", Kind::kNumber, "{v}"},
       {"fixed-frame", Kind::kText},
       {"background", Kind::kNumber, "{v},0,0"},
       {"alpha", Kind::kNumber, "{v}"},
