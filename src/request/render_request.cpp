@@ -67,8 +67,8 @@ const std::array kFlagOptions{
                "sliders are)",
                &R::no_clamp},
     FlagOption{"fit",
-               "choose the distance (and, without --focal, the focal point) so the robot fills "
-               "the image (RViz has no such view: default off)",
+               "choose the distance (and, without --focal, the focal point) so the robot's silhouette "
+               "fills the image up to --fit-margin, centred (RViz has no such view: default off)",
                &R::fit},
     FlagOption{"collision", "show collision geometry (RViz default off)", &R::collision},
     FlagOption{"no-visual", "hide visual geometry (RViz default shown)", &R::no_visual},
