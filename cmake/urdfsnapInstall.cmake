@@ -8,7 +8,7 @@ include(CMakePackageConfigHelpers)
 
 set(urdfsnap_libraries urdfsnap_common urdfsnap_shard urdfsnap_xacro urdfsnap_model
   urdfsnap_geometry urdfsnap_image urdfsnap_texture urdfsnap_camera urdfsnap_scene urdfsnap_gl urdfsnap_render urdfsnap_request
-  urdfsnap_snapshot urdfsnap_stream urdfsnap_bag urdfsnap_tf urdfsnap_motion urdfsnap_video)
+  urdfsnap_snapshot urdfsnap_stream urdfsnap_bag urdfsnap_tf urdfsnap_display urdfsnap_motion urdfsnap_video)
 set(urdfsnap_include_dir ${CMAKE_INSTALL_INCLUDEDIR}/urdfsnap)
 set(urdfsnap_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/urdfsnap)
 

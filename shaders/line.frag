@@ -1,9 +1,9 @@
-// Unlit lines (the grid): a constant colour, blended by its alpha.
+// Unlit lines and flat triangles: the vertices' colour, interpolated, blended by its alpha.
 #version 330 core
 
-uniform vec4 colour;
+in vec4 vertex_colour;
 out vec4 fragment_colour;
 
 void main() {
-  fragment_colour = colour;
+  fragment_colour = vertex_colour;
 }

@@ -1,12 +1,13 @@
 // Robot surfaces: RViz's fixed-function Gouraud lighting, evaluated per vertex.
 // One white directional head-light along the camera's view direction, no ambient, no specular:
 // colour = emissive + diffuse * max(0, n . l), clamped to 1 as fixed-function lighting is, where l
-// points from the surface back to the camera.
+// points from the surface back to the camera. Compiled twice (gl/renderer.cpp): with TEXTURED
+// defined for textured surfaces, and without, where no texture coordinate is fetched or
+// interpolated (a third less to set up and interpolate per triangle).
 #version 330 core
 
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
-layout(location = 2) in vec2 uv;
 
 uniform mat4 model_view_projection;
 uniform mat3 normal_to_view;   // inverse transpose of the model-view matrix (handles scaling)
@@ -14,12 +15,18 @@ uniform vec4 diffuse;          // rgba; alpha is passed through for blending
 uniform vec3 emissive;         // the material's self-illumination
 
 out vec4 vertex_colour;
+
+#ifdef TEXTURED
+layout(location = 2) in vec2 uv;
 out vec2 texture_uv;
+#endif
 
 void main() {
   gl_Position = model_view_projection * vec4(position, 1.0);
   // the light shines along -z in view space, so n . l is the view-space normal's z
   vec3 n = normalize(normal_to_view * normal);
   vertex_colour = vec4(min(emissive + diffuse.rgb * max(0.0, n.z), vec3(1.0)), diffuse.a);
+#ifdef TEXTURED
   texture_uv = uv;
+#endif
 }

@@ -9,10 +9,8 @@
 set -euo pipefail
 snap=$1
 frames=${2:-1000}
-root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$(dirname "$0")/../bench_work.sh" animate_bench
 model=$root/models/mrm_description/urdf/mrm.urdf
-work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_animate_bench.XXXXXX")
-trap 'rm -rf "$work"' EXIT
 
 # every joint of mrm swinging, a waypoint a second for 400 s (enough for 10,000 frames at 30/s)
 awk 'BEGIN {

@@ -10,10 +10,8 @@ set -euo pipefail
 snap=$1
 bag=$2/rover_loop_60s.mcap
 runs=${3:-3}
-root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$(dirname "$0")/../bench_work.sh" bag_bench
 model=$root/models/rover_description/urdf/rover.urdf
-work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_bag_bench.XXXXXX")
-trap 'rm -rf "$work"' EXIT
 
 # the joint values the bag holds (tests/node/make_test_bags.mjs, roverLoop(60, 100))
 awk 'BEGIN {

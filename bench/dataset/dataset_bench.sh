@@ -12,9 +12,7 @@ set -euo pipefail
 snap=$1
 samples=${2:-400}
 franka=${3:-}
-root=$(cd "$(dirname "$0")/../.." && pwd)
-work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_dataset_bench.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/../bench_work.sh" dataset_bench
 
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
 printf '%-8s %8s %8s %10s %10s %12s %12s\n' robot samples wall_s samples/s cpu_s cpu_ms/sample 2core_max/s

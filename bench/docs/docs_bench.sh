@@ -4,9 +4,7 @@
 # usage: bench/docs/docs_bench.sh URDFSNAP
 set -euo pipefail
 snap=$1
-root=$(cd "$(dirname "$0")/../.." && pwd)
-work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_docs_bench.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/../bench_work.sh" docs_bench
 printf '%-10s %8s %8s %10s %8s %7s\n' robot "wall s" "cpu s" "peak MB" pictures "page MB"
 for entry in "mrm models/mrm_description/urdf/mrm.xacro" "meshbot models/meshbot_description/urdf/meshbot.urdf" \
              "bigbot tests/data/bigbot/bigbot.urdf.xacro"; do

@@ -14,6 +14,10 @@ double Seconds(Clock::time_point a, Clock::time_point b);
 
 double Median(std::vector<double> v);
 
+// The CPU time of all of this process's threads so far, in seconds (on a shared machine the wall
+// time grows with the load, the CPU time much less).
+double CpuSeconds();
+
 // Median wall time of `runs` calls of fn (each timed on its own), in seconds.
 double MedianTime(int runs, const std::function<void()>& fn);
 

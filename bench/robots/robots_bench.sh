@@ -18,10 +18,8 @@
 set -euo pipefail
 snap=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 runs=${2:-3}
-root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$(dirname "$0")/../bench_work.sh" robots_bench
 frames_tool=$(dirname "$snap")/urdfsnap_robot_frames
-work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_robots_bench.XXXXXX")
-trap 'rm -rf "$work"' EXIT
 
 # timed COMMAND...: runs it under /usr/bin/time; sets wall, cpu (s) and peak (MB)
 timed() {

@@ -15,15 +15,13 @@
 #                        $(find mrm_description) resolves through ROS_PACKAGE_PATH (ROS 1) and a
 #                        temporary AMENT_PREFIX_PATH (ROS 2) made here.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$(dirname "$0")/../bench_work.sh" startup
 urdfsnap=$(realpath "${1:-$root/build/urdfsnap}")
 rounds=${2:-5}
 for tool in hyperfine python3 /usr/bin/time; do
   command -v "$tool" >/dev/null || { echo "startup_bench.sh: $tool is missing" >&2; exit 2; }
 done
 real_xacro=${URDFSNAP_REAL_XACRO:-$(command -v xacro || true)}
-work=$(mktemp -d "${TMPDIR:-/tmp}/urdfsnap_startup.XXXXXX")
-trap 'rm -rf "$work"' EXIT
 
 models=$root/models
 mrm=$models/mrm_description/urdf

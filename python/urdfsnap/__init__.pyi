@@ -37,11 +37,15 @@ class Joint:
     mimic: Optional[Mimic]
 
 class RenderResult:
-    """Robot.render's result when depth or labels are asked for (arrays get a leading N from
-    render_many)."""
+    """Robot.render's result when depth, labels, mask or keypoints are asked for (arrays get a
+    leading N from render_many, keypoints become a list of N dicts)."""
     color: npt.NDArray[np.uint8]  # H×W×3 RGB
     depth: Optional[npt.NDArray[np.float32]]  # H×W metres along the viewing axis, NaN off the robot
     labels: Optional[npt.NDArray[np.uint16]]  # H×W, 1 + index into Robot.links, 0 off the robot
+    mask: Optional[npt.NDArray[np.uint8]]  # H×W, 255 on the robot (grown by mask_dilate), 0 elsewhere
+    # the `render --keypoints` file's contents: {"camera": {...}, "frames": [{"name", "kind", "u", "v",
+    # "depth", "in_image", "visible"}, ...]} (docs/camera.md)
+    keypoints: Optional[Union[dict, list[dict]]]
     label_names: list[str]  # label value -> link name ("" for 0)
     def _repr_png_(self) -> Optional[bytes]: ...
 
@@ -74,18 +78,33 @@ class Robot:
                collision: bool = False, depth: bool = False, labels: bool = False,
                gl_backend: str = "auto", fov: float = 45.0, fixed_frame: str = "",
                antialias: bool = True, clamp: bool = True, tf_scale: float = 1.0,
-               allow_missing_meshes: bool = False) -> Union[npt.NDArray[np.uint8], RenderResult]:
+               allow_missing_meshes: bool = False, camera_info: Optional[Path] = None,
+               camera_frame: str = "", camera_pose: Optional[Sequence[float]] = None,
+               near: float = 0.01, far: float = 100.0, distort: bool = False,
+               underlay: Optional[ImageLike] = None, underlay_alpha: float = 0.5,
+               mask: bool = False, mask_dilate: int = 0,
+               keypoints: bool = False) -> Union[npt.NDArray[np.uint8], RenderResult]:
         """Renders the robot with `joints` (name -> rad or m; other joints at their defaults).
 
-        Returns an H×W×3 uint8 array, or with depth=True or labels=True a RenderResult. The same
+        Returns an H×W×3 uint8 array, or with depth, labels, mask or keypoints a RenderResult. The same
         pixels as `urdfsnap render` with the same options (parsed and checked by the same code):
         yaw, pitch (rad), distance (m, 0.01 to 1e6), focal (m), fov (degrees, vertical), size
         (width, height), fit (frame the robot, --fit; with focal given, around that point), tf
         (TF markers), tf_scale, alpha (robot opacity 0..1), background (R, G, B 0..255, or
         "white", "#RRGGBB" as --background), grid, visual, collision, fixed_frame (a link; "" =
         the root), antialias (False = --no-aa), clamp (False = --no-clamp), allow_missing_meshes. gl_backend: "auto" (URDFSNAP_GL_BACKEND
-        when set, else OSMesa then EGL), "osmesa" or "egl". Raises Error for an unknown joint, a
-        keyword out of range, an unknown fixed frame, a mesh that cannot be read."""
+        when set, else OSMesa then EGL), "osmesa" or "egl".
+
+        A calibrated camera instead of the orbit view (docs/camera.md), as render's --camera-*
+        options: camera_info (a camera_calibration YAML or an echoed CameraInfo; the image is its
+        size), camera_frame (a link, in ROS's optical convention), camera_pose (X, Y, Z, QX, QY, QZ,
+        QW in camera_frame, or in the fixed frame), near, far, distort (the raw image through the
+        lens), underlay (a camera image behind the robot: an H×W×3 array or a PNG path) and
+        underlay_alpha. mask=True adds RenderResult.mask (mask_dilate grows it), keypoints=True
+        RenderResult.keypoints (through the orbit view as a camera when none is given).
+
+        Raises Error for an unknown joint, a keyword out of range, an unknown fixed frame or camera
+        frame, a mesh or camera info that cannot be read."""
     def render_many(self, positions: Union[npt.ArrayLike, Iterable[Mapping[str, float]]], *,
                     out: Optional[npt.NDArray[np.uint8]] = None,
                     **view: object) -> Union[npt.NDArray[np.uint8], RenderResult]:

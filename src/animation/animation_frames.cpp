@@ -7,11 +7,16 @@ namespace urdfsnap::animation {
 
 AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motion::FramePlan& plan,
                                  const motion::FramePoses& poses, const CameraRequest& camera,
-                                 Warnings& warnings, const motion::RootPoses* root)
-    : plan_(plan), poses_(poses), root_(root), size_(camera.size), turntable_(camera.turntable),
-      view_(camera.view), camera_(camera.camera) {
+                                 Warnings& warnings, SceneAdditions additions)
+    : plan_(plan), poses_(poses), additions_(additions), size_(camera.size), turntable_(camera.turntable),
+      view_(camera.view), camera_(camera.camera), camera_tf_(camera.camera_tf) {
   // motion::kMaxFrames keeps the count within FitView's int
   const int count = static_cast<int>(plan_.frame_count);
+  if (camera.fit != render::Fit::kNone && additions_.follow) {
+    warnings.Add("--fit frames the whole motion from one place: the view does not follow a frame (--follow, an "
+                 ".rviz view's Target Frame)");
+    additions_.follow = nullptr;
+  }
   const auto pose = [&](int k) { return Positions(k, warnings); };
   const auto place = [&](int k) { return Place(k, warnings); };
   if (!turntable_) {
@@ -27,12 +32,34 @@ std::vector<double> AnimationFrames::Positions(std::int64_t k, Warnings& warning
 }
 
 Eigen::Isometry3d AnimationFrames::Place(std::int64_t k, Warnings& warnings) const {
-  return root_ ? root_->At(plan_.TrajectoryTime(k), warnings) : Eigen::Isometry3d::Identity();
+  return additions_.root ? additions_.root->At(plan_.TrajectoryTime(k), warnings) : Eigen::Isometry3d::Identity();
+}
+
+scene::Scene AnimationFrames::Scene(const render::RobotRenderer& robot, std::int64_t k, Warnings& warnings) const {
+  const std::vector<double> positions = Positions(k, warnings);
+  const Eigen::Isometry3d X_SF = Place(k, warnings);
+  scene::Scene scene = robot.Pose(positions, X_SF);
+  if (additions_.tf) additions_.tf->AddTo(robot, positions, X_SF, plan_.TrajectoryTime(k), scene, warnings);
+  return scene;
+}
+
+std::optional<render::CameraSettings> AnimationFrames::Camera(std::int64_t k, Warnings& warnings) const {
+  if (!camera_ || !camera_tf_) return camera_;
+  // X_TR: the robot's root in the camera's TF frame T; the camera then hangs off the root link
+  render::CameraSettings placed = *camera_;
+  placed.pose = camera_tf_->At(plan_.TrajectoryTime(k), warnings).inverse() * camera_->pose;
+  placed.frame = camera_tf_->root();
+  return placed;
 }
 
 scene::OrbitView AnimationFrames::View(std::int64_t k) const {
   scene::OrbitView view = view_;
   if (turntable_) view.yaw = plan_.TurntableYaw(k, view_.yaw);
+  if (additions_.follow) {
+    Warnings repeated;   // the pose's warnings, which Positions and Place give the caller as well
+    view.focal += additions_.follow->Origin(Positions(k, repeated), Place(k, repeated), plan_.TrajectoryTime(k),
+                                            repeated);
+  }
   return view;
 }
 

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "common/warnings.h"
+#include "animation/followed_frame.h"
+#include "animation/tf_display.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
 #include "motion/root_poses.h"
@@ -25,6 +27,17 @@ struct CameraRequest {
   render::FitMargin fit_margin;
   bool turntable = false;  // the yaw turns once around over the animation
   std::optional<render::CameraSettings> camera;   // when set, every frame is seen through it instead
+  // when set, camera->frame is a TF frame of the bag (not a link): its pose in the robot's root
+  // link at each frame's time (kept by reference)
+  const motion::RootPoses* camera_tf = nullptr;
+};
+
+// What a recording adds to each frame, each kept by reference when given: where TF places the
+// robot in a fixed frame outside it, the TF display of its frames, the frame the view follows.
+struct SceneAdditions {
+  const motion::RootPoses* root = nullptr;
+  const TfDisplay* tf = nullptr;
+  const FollowedFrame* follow = nullptr;
 };
 
 class AnimationFrames {
@@ -35,10 +48,12 @@ class AnimationFrames {
   // frames each frame from its own yaw. Poses are made as they are needed and not kept, so fitting
   // takes time in proportion to the frame count and no memory for it (two poses per frame, four
   // for a fitted turntable). Warnings of the poses (see FramePoses::At) go to `warnings`.
-  // `root`, when given (kept by reference), places the robot in a fixed frame outside it per frame.
+  // `additions` place the robot, draw the TF display and move the focal point per frame; with a
+  // fitted camera the followed frame is not followed (one warning): the fit frames the whole motion
+  // from one place.
   AnimationFrames(const render::RobotRenderer& robot, const motion::FramePlan& plan,
                   const motion::FramePoses& poses, const CameraRequest& camera, Warnings& warnings,
-                  const motion::RootPoses* root = nullptr);
+                  SceneAdditions additions = {});
 
   std::int64_t count() const { return plan_.frame_count; }
   const motion::FramePlan& plan() const { return plan_; }
@@ -49,19 +64,26 @@ class AnimationFrames {
   std::vector<double> Positions(std::int64_t k, Warnings& warnings) const;
   // Where frame `k` places the robot's fixed link in the scene (identity without `root`).
   Eigen::Isometry3d Place(std::int64_t k, Warnings& warnings) const;
-  // The camera of frame `k`.
+  // The scene of frame `k`: `robot` (the renderer the frames were fitted for) posed and placed,
+  // with the TF display when there is one.
+  scene::Scene Scene(const render::RobotRenderer& robot, std::int64_t k, Warnings& warnings) const;
+  // The camera of frame `k` (its focal point relative to the followed frame's origin then).
   scene::OrbitView View(std::int64_t k) const;
-  // The calibrated camera every frame is seen through, if one was asked for (View is then unused).
-  const std::optional<render::CameraSettings>& camera() const { return camera_; }
+  // The frame the view follows, if any (none with a fitted camera).
+  const FollowedFrame* followed() const { return additions_.follow; }
+  // The calibrated camera frame `k` is seen through, if one was asked for (View is then unused):
+  // the same for every frame unless its frame is a TF frame of the bag, which moves it per frame.
+  std::optional<render::CameraSettings> Camera(std::int64_t k, Warnings& warnings) const;
 
  private:
   const motion::FramePlan& plan_;
   const motion::FramePoses& poses_;
-  const motion::RootPoses* root_;
+  SceneAdditions additions_;
   render::ImageSize size_;
   bool turntable_;
   scene::OrbitView view_;  // frame 0's, fitted
   std::optional<render::CameraSettings> camera_;
+  const motion::RootPoses* camera_tf_;
 };
 
 }  // namespace urdfsnap::animation

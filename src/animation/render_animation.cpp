@@ -1,40 +1,76 @@
-// RenderAnimation: RunPipeline with image::Frame items (colour, and depth and labels when asked).
+// RenderAnimation: RunPipeline with the frames' images (colour, and depth and labels when asked)
+// and keypoints; masks are made on the writer's thread.
 #include "animation/render_animation.h"
 
-#include <filesystem>
 #include <string>
 
+#include "camera/robot_mask.h"
+#include "dataset/frame_extras.h"
+#include "dataset/rendered_keypoints.h"
 #include "image/depth_label_files.h"
+#include "image/png_writer.h"
 #include "stream/pipeline.h"
 
 namespace urdfsnap::animation {
 
+namespace {
+
+// One frame on its way from the renderer to the writer.
+struct DrawnFrame {
+  image::Frame frame;
+  std::string keypoints;   // the keypoint file's text, when asked for
+};
+
+// The camera frame `k` is seen through, with its pose in the robot's fixed frame: the calibrated
+// camera, or the orbit view as one (moved into the robot's fixed frame when `X_SF` places it).
+render::CameraSettings FrameCamera(const AnimationFrames& frames, std::int64_t k,
+                                   const std::optional<render::CameraSettings>& calibrated, const Eigen::Isometry3d& X_SF) {
+  if (calibrated) return *calibrated;
+  render::CameraSettings camera = render::OrbitCamera(frames.View(k), frames.size().width, frames.size().height);
+  camera.pose = X_SF.inverse() * camera.pose;
+  return camera;
+}
+
+}  // namespace
+
 void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const AnimationFrames& frames,
                      shard::FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
                      Warnings& warnings, std::size_t depth) {
-  const image::FrameOutputs wanted{true, outputs.depth != nullptr, outputs.labels != nullptr};
-  const auto render = [&](std::int64_t i, image::Frame& frame) {
+  const image::FrameOutputs wanted = dataset::OutputsFor(
+      {true, outputs.depth != nullptr, outputs.labels != nullptr},
+      {outputs.mask != nullptr, outputs.mask_dilate, outputs.keypoints != nullptr});
+  const auto render = [&](std::int64_t i, DrawnFrame& drawn) {
     const std::int64_t k = range.first + i;
     const std::vector<double> positions = frames.Positions(k, warnings);
-    frame = frames.camera() ? robot.Render(gl, positions, *frames.camera(), wanted)
-                            : robot.Render(gl, positions, frames.View(k), frames.size(), wanted,
-                                           frames.Place(k, warnings));
+    const std::optional<render::CameraSettings> camera = frames.Camera(k, warnings);
+    const Eigen::Isometry3d X_SF = camera ? Eigen::Isometry3d::Identity() : frames.Place(k, warnings);
+    drawn.frame = camera ? robot.Render(gl, positions, *camera, wanted)
+                         : gl.Render(frames.Scene(robot, k, warnings), frames.View(k), frames.size().width,
+                                     frames.size().height, wanted);
+    if (outputs.keypoints) {
+      drawn.keypoints =
+          dataset::RenderedKeypointsJson(robot, positions, FrameCamera(frames, k, camera, X_SF), drawn.frame);
+    }
   };
-  // the depth files' format, by the pattern's extension as `render --depth FILE` decides it
-  const std::string depth_extension =
-      outputs.depth ? std::filesystem::path(outputs.depth->pattern().pattern()).extension().string() : "";
-  const auto write = [&](std::int64_t i, const image::Frame& frame) {
+  const auto write = [&](std::int64_t i, const DrawnFrame& drawn) {
+    const image::Frame& frame = drawn.frame;
     outputs.colour->Write(frame.colour);
     if (outputs.depth) {
-      outputs.depth->Write(image::EncodeDepth(frame.depth, depth_extension));
+      outputs.depth->Write(image::EncodeDepthFile(frame.depth, outputs.depth->pattern().pattern()));
     }
     if (outputs.labels) outputs.labels->Write(image::EncodeLabels(frame.labels));
+    if (outputs.mask) {
+      const std::vector<std::uint8_t> png = image::EncodeGray8Png(camera::RobotMask(frame.labels, outputs.mask_dilate));
+      outputs.mask->Write({reinterpret_cast<const char*>(png.data()), png.size()});
+    }
+    if (outputs.keypoints) outputs.keypoints->Write(drawn.keypoints);
     if (progress) progress->Update(i + 1);
   };
-  stream::RunPipeline<image::Frame>(range.size(), depth, render, write);
+  stream::RunPipeline<DrawnFrame>(range.size(), depth, render, write);
   outputs.colour->Finish();
-  if (outputs.depth) outputs.depth->Finish();
-  if (outputs.labels) outputs.labels->Finish();
+  for (video::NumberedFiles* files : {outputs.depth, outputs.labels, outputs.mask, outputs.keypoints}) {
+    if (files) files->Finish();
+  }
 }
 
 }  // namespace urdfsnap::animation

@@ -1,7 +1,7 @@
 // The render/encode loop of an animation: frame k rendered on the calling thread (which owns the
 // GL context) while the frames before it are encoded and written on a worker thread
-// (stream::RunPipeline), into the colour encoder and the depth and label sequences at once. Memory
-// holds a few frames whatever the animation's length.
+// (stream::RunPipeline), into the colour encoder and the depth, label, mask and keypoint sequences
+// at once. Memory holds a few frames whatever the animation's length.
 #pragma once
 
 #include <cstddef>
@@ -18,11 +18,14 @@
 
 namespace urdfsnap::animation {
 
-// Where the frames go; depth and labels are optional.
+// Where the frames go; all but the colour are optional.
 struct AnimationOutputs {
   video::FrameEncoder* colour = nullptr;  // required
   video::NumberedFiles* depth = nullptr;     // numbered depth files (.png millimetres or .npy metres)
   video::NumberedFiles* labels = nullptr;    // numbered link-label files (.png)
+  video::NumberedFiles* mask = nullptr;      // numbered robot masks (8-bit .png, as `render --mask`)
+  int mask_dilate = 0;                    // pixels the masks are grown by
+  video::NumberedFiles* keypoints = nullptr; // numbered keypoint files (.json, as `render --keypoints`)
 };
 
 // Renders the frames of `range` (the whole animation, or a shard's frames) of `frames` with `robot` through `gl` and writes them, in order, to

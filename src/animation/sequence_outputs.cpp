@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "common/error.h"
+#include "common/file_extension.h"
 #include "image/image_file_names.h"
 #include "video/frame_pattern.h"
 
@@ -12,10 +13,10 @@ namespace urdfsnap::animation {
 
 namespace {
 
-void CheckPattern(const std::string& pattern, const std::string& option) {
+// `example` shows a pattern of the right kind in the message
+void CheckFramePattern(const std::string& pattern, const std::string& option, const std::string& example) {
   if (!video::FramePattern::IsPattern(pattern)) {
-    throw Error(option + " '" + pattern + "': expected a pattern with the frame number, such as " +
-                "depth/%05d.png");
+    throw Error(option + " '" + pattern + "': expected a pattern with the frame number, such as " + example);
   }
   try {
     video::FramePattern checked(pattern);
@@ -27,13 +28,20 @@ void CheckPattern(const std::string& pattern, const std::string& option) {
 }  // namespace
 
 void CheckDepthPattern(const std::string& pattern, const std::string& option) {
-  CheckPattern(pattern, option);
+  CheckFramePattern(pattern, option, "depth/%05d.png");
   image::CheckImageFileName(pattern, image::ImageKind::kDepth, option);
 }
 
 void CheckLabelsPattern(const std::string& pattern, const std::string& option) {
-  CheckPattern(pattern, option);
+  CheckFramePattern(pattern, option, "labels/%05d.png");
   image::CheckImageFileName(pattern, image::ImageKind::kLabels, option);
+}
+
+void CheckPattern(const std::string& pattern, const std::string& extension, const std::string& option) {
+  CheckFramePattern(pattern, option, "frames/%05d" + extension);
+  if (LowerCaseExtension(pattern) != extension) {
+    throw Error(option + " '" + pattern + "': expected " + extension + " files");
+  }
 }
 
 void PlanOutput(OutputPlan& plan, const std::string& path, const std::string& role) {

@@ -1,6 +1,6 @@
-// The depth and link-label sequences beside an animation (`--depth`, `--labels`): numbered files
-// (video::NumberedFiles) in the formats `render --depth/--labels` writes (image/depth_label_files.h), one
-// per frame, from the same renders as the colour frames.
+// The sequences beside an animation (`--depth`, `--labels`, `--mask`, `--keypoints`): numbered files
+// (video::NumberedFiles) in the formats `render --depth/--labels/--mask/--keypoints` writes, one per
+// frame, from the same renders as the colour frames.
 #pragma once
 
 #include <string>
@@ -13,6 +13,8 @@ namespace urdfsnap::animation {
 // video::FramePattern) of a depth file (.png or .npy) or a label file (.png).
 void CheckDepthPattern(const std::string& pattern, const std::string& option);
 void CheckLabelsPattern(const std::string& pattern, const std::string& option);
+// Likewise for a sequence of files with `extension` (".png" masks, ".json" keypoints).
+void CheckPattern(const std::string& pattern, const std::string& extension, const std::string& option);
 
 // Adds the output `path` to `plan`: the numbered files of a frame pattern, or one file.
 void PlanOutput(OutputPlan& plan, const std::string& path, const std::string& role);

@@ -1,5 +1,6 @@
 // DecodeMessage: a walk over the schema's fields in order, each primitive read through CdrReader
-// (aligned to its size), arrays as counted or fixed runs, nested messages inline as CDR lays them.
+// (aligned to its size), arrays as counted or fixed runs (uint8 ones copied as bytes), nested
+// messages inline as CDR lays them.
 #include "bag/cdr_message.h"
 
 #include <algorithm>
@@ -30,6 +31,11 @@ class Decoder {
                                     ? reader_.FixedLength(field.length, min_bytes)
                                     : reader_.SequenceLength(min_bytes);
     MessageValue list;
+    if (field.kind == FieldKind::kUint8) {
+      const std::span<const std::uint8_t> bytes = reader_.Bytes(count);
+      list.bytes.assign(bytes.begin(), bytes.end());
+      return list;
+    }
     list.items.reserve(count);
     for (std::uint32_t i = 0; i < count; ++i) list.items.push_back(Element(field));
     return list;

@@ -14,12 +14,15 @@
 namespace urdfsnap::bag {
 
 // One decoded value: a number (every integer, float and bool, as a double: exact for the 32-bit
-// stamps and counts urdfsnap reads), a string, or a list of values (an array's elements, or a
-// message's fields in definition order, with `type` set).
+// stamps and counts urdfsnap reads), a string, a list of values (an array's elements, or a
+// message's fields in definition order, with `type` set), or the raw bytes of a uint8/byte/char
+// array (a PointCloud2's or an image's data: one MessageValue per byte would take 100 times the
+// memory), with `items` empty.
 struct MessageValue {
   double number = 0;
   std::string text;
   std::vector<MessageValue> items;
+  std::vector<std::uint8_t> bytes;
   const MessageType* type = nullptr;  // a message: its definition
 
   // The field `name` of a message. Throws CdrError when this is no message or has no such field

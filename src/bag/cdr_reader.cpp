@@ -94,6 +94,10 @@ T CdrReader::Primitive(const char* what) {
   return big_endian_ != (std::endian::native == std::endian::big) ? ByteSwapped(value) : value;
 }
 
+std::span<const std::uint8_t> CdrReader::Bytes(std::size_t count) {
+  return {Take(count, "a byte array"), count};
+}
+
 std::int32_t CdrReader::Int32() { return Primitive<std::int32_t>("an int32"); }
 std::uint32_t CdrReader::Uint32() { return Primitive<std::uint32_t>("a uint32"); }
 double CdrReader::Float64() { return Primitive<double>("a float64"); }

@@ -31,6 +31,8 @@ class CdrReader {
   // An unsigned or signed integer of 1, 2, 4 or 8 bytes.
   std::uint64_t Unsigned(std::size_t bytes);
   std::int64_t Signed(std::size_t bytes);
+  // `count` raw bytes (a uint8[] or byte[] array's elements, which need no alignment).
+  std::span<const std::uint8_t> Bytes(std::size_t count);
   // A wstring (uint32 count of 4-byte characters), skipped.
   void SkipWideString();
   // A string: uint32 length counting its terminating NUL, the bytes, the NUL (not returned).

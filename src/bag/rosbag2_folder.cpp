@@ -14,6 +14,7 @@
 
 #include "common/error.h"
 #include "common/file_reading.h"
+#include "common/internal/yaml_reader.h"
 
 namespace urdfsnap::bag {
 namespace {
@@ -80,66 +81,59 @@ BagLayout FromMetadata(const fs::path& folder, const fs::path& metadata_path) {
   } catch (const FileReadError& e) {
     throw Error(where + ": cannot read it: " + e.what());
   }
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw Error(SourceLocation{where, e.mark.line + 1}, "bad YAML: " + e.msg);
-  }
-  const auto fail = [&](const YAML::Node& node, const std::string& what) -> void {
-    throw Error(SourceLocation{where, node.IsDefined() ? node.Mark().line + 1 : 0}, what);
-  };
+  const YamlReader reader(where);
+  YAML::Node root = reader.Load(text);
   const YAML::Node info = root.IsMap() ? root["rosbag2_bagfile_information"] : YAML::Node();
   if (!info.IsDefined() || !info.IsMap()) {
-    fail(root, "expected rosbag2's 'rosbag2_bagfile_information' map");
+    reader.Fail(root, "expected rosbag2's 'rosbag2_bagfile_information' map");
   }
   const auto text_of = [&](const char* key) {
     const YAML::Node node = info[key];
     if (!node.IsDefined() || node.IsNull()) return std::string();
-    if (!node.IsScalar()) fail(node, std::string("'") + key + "': expected text");
+    if (!node.IsScalar()) reader.Fail(node, std::string("'") + key + "': expected text");
     return node.Scalar();
   };
   BagLayout layout;
   const std::string storage = text_of("storage_identifier");
   if (storage != "mcap" && storage != "sqlite3") {
-    fail(info["storage_identifier"], "storage_identifier '" + storage +
+    reader.Fail(info["storage_identifier"], "storage_identifier '" + storage +
                                          "': urdfsnap reads 'mcap' and 'sqlite3' bags");
   }
   const std::string format = text_of("compression_format");
   const std::string mode = text_of("compression_mode");
   if (!format.empty() && format != "zstd") {
-    fail(info["compression_format"], "compression_format '" + format + "': urdfsnap reads zstd");
+    reader.Fail(info["compression_format"], "compression_format '" + format + "': urdfsnap reads zstd");
   }
   if (mode == "FILE" || mode == "file") {
     layout.compression = Compression::kFile;
   } else if (mode == "MESSAGE" || mode == "message") {
     layout.compression = Compression::kMessage;
   } else if (!mode.empty() && mode != "NONE" && mode != "none") {
-    fail(info["compression_mode"], "compression_mode '" + mode + "': expected FILE or MESSAGE");
+    reader.Fail(info["compression_mode"], "compression_mode '" + mode + "': expected FILE or MESSAGE");
   }
   const YAML::Node paths = info["relative_file_paths"];
   if (!paths.IsDefined()) {  // hand-written metadata: the folder's files, as without it
     const BagLayout listed = ListFolder(folder.string());
     if ((listed.files.front().storage == Storage::kMcap) != (storage == "mcap")) {
-      fail(info["storage_identifier"], "storage_identifier '" + storage +
+      reader.Fail(info["storage_identifier"], "storage_identifier '" + storage +
                                            "', but the folder holds the other kind of files");
     }
     layout.files = listed.files;
     return layout;
   }
   if (!paths.IsSequence() || paths.size() == 0) {
-    fail(paths, "'relative_file_paths': expected a list of files");
+    reader.Fail(paths, "'relative_file_paths': expected a list of files");
   }
   for (const YAML::Node& item : paths) {
-    if (!item.IsScalar()) fail(item, "'relative_file_paths': expected file names");
+    if (!item.IsScalar()) reader.Fail(item, "'relative_file_paths': expected file names");
     // rosbag2 writes names relative to the folder (older versions: with the folder's name first)
     fs::path file = folder / fs::path(item.Scalar()).filename();
     if (fs::path(item.Scalar()).is_absolute() || item.Scalar().find("..") != std::string::npos) {
-      fail(item, "'" + item.Scalar() + "': expected a file in the bag's folder");
+      reader.Fail(item, "'" + item.Scalar() + "': expected a file in the bag's folder");
     }
     std::error_code error;
     if (!fs::is_regular_file(file, error)) {
-      fail(item, "'" + item.Scalar() + "': no such file in " + folder.string());
+      reader.Fail(item, "'" + item.Scalar() + "': no such file in " + folder.string());
     }
     layout.files.push_back({file.string(), storage == "mcap" ? Storage::kMcap : Storage::kSqlite});
   }

@@ -1,4 +1,4 @@
-// CameraInfo files read with yaml-cpp: both ROS layouts into one struct, every error located.
+// CameraInfo files read with yaml-cpp (common's located YamlReader): both ROS layouts into one struct, every error located.
 #include "camera/camera_info.h"
 
 #include <cmath>
@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "common/file_reading.h"
+#include "common/internal/yaml_reader.h"
 #include "common/number_text.h"
 #include "image/image.h"
 
@@ -18,9 +19,10 @@ namespace {
 constexpr std::initializer_list<const char*> kIntrinsicKeys = {"camera_matrix", "k", "K"};
 constexpr std::initializer_list<const char*> kProjectionKeys = {"projection_matrix", "p", "P"};
 
-class Reader {
+// common's YamlReader over the file's root map, with the spellings of the layouts.
+class Reader : public YamlReader {
  public:
-  Reader(const YAML::Node& root, const std::string& path) : root_(root), path_(path) {}
+  Reader(const YAML::Node& root, const std::string& path) : YamlReader(path), root_(root) {}
 
   // The first of `keys` the file has (layouts and ROS versions spell them differently), and its
   // spelling there; the first key and an undefined node when it has none.
@@ -35,19 +37,6 @@ class Reader {
     return {YAML::Node(YAML::NodeType::Undefined), *keys.begin()};
   }
 
-  // Throws at `node`'s line, or at the file when `node` is not there.
-  [[noreturn]] void Fail(const YAML::Node& node, const std::string& what) const {
-    throw Error(SourceLocation{path_, node.IsDefined() ? node.Mark().line + 1 : 0}, what);
-  }
-
-  double Number(const YAML::Node& node, const std::string& key) const {
-    double value = 0;
-    if (!node.IsScalar() || !ParseNumber(node.Scalar(), value)) {
-      Fail(node, key + ": expected a finite number, got " + (node.IsScalar() ? "'" + node.Scalar() + "'" : node.IsNull() ? "nothing" : "a list or map"));
-    }
-    return value;
-  }
-
   int Side(std::initializer_list<const char*> keys) const {
     const auto [node, key] = Find(keys);
     if (!node) Fail(node, "missing '" + key + "' (the image size)");
@@ -60,7 +49,7 @@ class Reader {
   }
 
   // The numbers of a matrix: a plain list (a message) or {rows, cols, data} (a calibration file).
-  std::vector<double> Numbers(const YAML::Node& node, const std::string& key) const {
+  std::vector<double> MatrixNumbers(const YAML::Node& node, const std::string& key) const {
     const YAML::Node list = node.IsMap() ? node["data"] : node;
     if (!list.IsSequence()) {
       Fail(node, key + ": expected a list of numbers" + (node.IsMap() ? " under 'data'" : ""));
@@ -78,7 +67,7 @@ class Reader {
       if (required) Fail(node, "missing '" + key + "'");
       return fallback;
     }
-    const std::vector<double> numbers = Numbers(node, key);
+    const std::vector<double> numbers = MatrixNumbers(node, key);
     if (numbers.size() != Rows * Cols) {
       Fail(node, key + ": expected " + std::to_string(Rows * Cols) + " numbers (" + std::to_string(Rows) +
                      "x" + std::to_string(Cols) + ", row-major), got " + std::to_string(numbers.size()));
@@ -90,11 +79,8 @@ class Reader {
     return m;
   }
 
-  const YAML::Node& root() const { return root_; }
-
  private:
   YAML::Node root_;
-  const std::string& path_;
 };
 
 }  // namespace
@@ -107,13 +93,8 @@ Intrinsics CameraInfo::RectifiedIntrinsics() const {
 }
 
 CameraInfo ParseCameraInfo(std::string_view text, const std::string& path) {
-  YAML::Node root;
-  try {
-    // `ros2 topic echo` ends each message with "---"; the first document is the message
-    root = YAML::Load(std::string(text));
-  } catch (const YAML::Exception& e) {
-    throw Error(SourceLocation{path, e.mark.line + 1}, "bad YAML: " + e.msg);
-  }
+  // `ros2 topic echo` ends each message with "---"; the first document is the message
+  YAML::Node root = LoadYaml(std::string(text), path);
   if (!root.IsMap()) {
     throw Error(SourceLocation{path, 0},
                 "expected a camera calibration (image_width, camera_matrix, ...) or a CameraInfo "
@@ -130,7 +111,7 @@ CameraInfo ParseCameraInfo(std::string_view text, const std::string& path) {
   if (model && !model.IsScalar()) r.Fail(model, "distortion_model: expected a name such as plumb_bob");
   info.distortion_model = model ? model.Scalar() : "";
   const auto [d, d_key] = r.Find({"distortion_coefficients", "d", "D"});
-  if (d) info.D = r.Numbers(d, d_key);
+  if (d) info.D = r.MatrixNumbers(d, d_key);
   std::string why;
   const std::optional<Distortion> distortion = MakeDistortion(info.distortion_model, info.D, why);
   if (!distortion) r.Fail(model ? model : d, why);

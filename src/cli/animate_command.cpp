@@ -1,12 +1,13 @@
 // `urdfsnap animate`: MODEL + a trajectory (CSV, ROS messages in YAML/JSON, a ROS 2 bag), or a
 // bag alone as MODEL (its robot description and motion), and/or a turntable → MP4, WebM, GIF,
-// animated WebP or a PNG sequence, with depth and label sequences from the same frames. Every
-// output appears only when complete; --print-frame K instead prints the `render` options that make
-// frame K.
+// animated WebP or a PNG sequence, with depth, label, mask and keypoint sequences from the same
+// frames. Every output appears only when complete; --print-frame K instead prints the `render`
+// options that make frame K.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -17,7 +18,9 @@
 #include "animation/sequence_outputs.h"
 #include "bag/joint_state_bag.h"
 #include "bag/robot_description.h"
+#include "cli/bag_batch.h"
 #include "cli/bag_model.h"
+#include "cli/bag_scene.h"
 #include "cli/command.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
@@ -26,11 +29,11 @@
 #include "common/error.h"
 #include "common/number_text.h"
 #include "gl/gl_context.h"
+#include "dataset/frame_extras.h"
 #include "image/depth_label_files.h"
 #include "gl/rasteriser_threads.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
-#include "motion/root_poses.h"
 #include "motion/trajectory_file.h"
 #include "request/render_session.h"
 #include "request/request_inputs.h"
@@ -59,8 +62,11 @@ struct AnimateOptions {
   bool turntable = false;
   bool clamp = false, strict_joints = false;  // how the trajectory's joints meet the model's
   std::string depth, labels;  // optional depth and link-label sequences (patterns)
+  std::string mask, keypoints;  // optional robot-mask and keypoint sequences (patterns)
+  int mask_dilate = 0;
   std::string print_frame;    // a frame number: print its render options instead of writing
   bool quiet = false;
+  bool model_from_bag = false;   // MODEL was a bag: its recorded description is the model
   ShardOptions sharding;      // a frame sequence's contiguous range of frames
   RenderOptions render;
   GlOptions gl_options;
@@ -146,11 +152,11 @@ void PrintNewWarnings(const Warnings& printed, const Warnings& later) {
 
 // An animation ready to render: the robot prepared once, its frames planned and its camera fitted.
 struct PreparedAnimation {
-  request::Prepared robot;   // settings.view before --fit (fitted over every frame by `frames`)
+  BagScene scene;   // robot.settings.view before --fit (fitted over every frame by `frames`); TF only for a bag
   motion::Trajectory trajectory;
   motion::FramePlan plan;
   std::optional<motion::FramePoses> poses;
-  std::optional<motion::RootPoses> root;   // where the bag's TF puts the robot, for a fixed frame outside it
+  std::optional<motion::RootPoses> camera_tf;   // where the bag's TF puts the robot from a --camera-frame outside it
   std::optional<animation::AnimationFrames> frames;
 };
 
@@ -162,66 +168,77 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
   // --fit frames every frame at once, below, not the first pose alone
   const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
-  // a fixed frame outside the robot (odom, map): the bag's TF places the robot in it, as RViz's
-  // Fixed Frame does; the scene is drawn from the root link, then placed
-  const bool bag_frame = !r.fixed_frame.empty() && !o.trajectory.empty() && motion::IsBag(o.trajectory);
-  if (bag_frame) {
-    resolved.settings.scene.fixed_frame.clear();
-    resolved.fixed_frame_given = false;
-  }
-  a.robot = session.Prepare(resolved, warnings);
-  std::string tf_fixed_frame;
-  if (bag_frame && a.robot.robot->FindLink(r.fixed_frame) >= 0) {
-    resolved.settings.scene.fixed_frame = r.fixed_frame;   // a link after all: drawn from it as usual
-    resolved.fixed_frame_given = true;
-    a.robot = session.Prepare(resolved, warnings);
-  } else if (bag_frame) {
-    tf_fixed_frame = r.fixed_frame;
-  }
+  const model::NamedValues joints = resolved.joints;
+  const bool clamp = resolved.clamp;
   if (!o.trajectory.empty()) a.trajectory = motion::ReadTrajectory(o.trajectory, {o.topic}, warnings);
+  // a bag: the fixed frame through its TF (odom, map place the robot as RViz's Fixed Frame does),
+  // and the TF display of its frames
+  const bool bag = !o.trajectory.empty() && motion::IsBag(o.trajectory);
+  PrepareBagScene(session, std::move(resolved), bag ? o.trajectory : "", a.trajectory.stamp_at_zero.value_or(0),
+                  o.model_from_bag, warnings, a.scene);
   a.plan = Plan(o, a.trajectory);
   // joints the trajectory does not name: the joint file, then -j, as render takes them
-  a.poses.emplace(*a.robot.robot, a.trajectory, resolved.joints,
-                  motion::JointRules{resolved.clamp, o.clamp, o.strict_joints}, warnings);
-  if (!tf_fixed_frame.empty()) {
+  const request::Prepared& robot = a.scene.robot;
+  a.poses.emplace(*robot.robot, a.trajectory, joints, motion::JointRules{clamp, o.clamp, o.strict_joints}, warnings);
+  if (a.scene.root && !o.print_frame.empty()) {
+    throw Error("--print-frame: the frames are placed by TF in a fixed frame outside the robot, which `render` "
+                "draws with --bag " + o.trajectory + " --at SECONDS");
+  }
+  const render::RenderSettings& settings = robot.settings;
+  // a camera frame outside the robot (a camera's optical frame in the bag's TF) moves per frame
+  if (settings.camera && !settings.camera->frame.empty() && robot.robot->FindLink(settings.camera->frame) < 0 &&
+      bag) {
+    a.camera_tf.emplace(!a.scene.transforms->frames().empty() ? a.scene.transforms
+                                           : std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(o.trajectory)),
+                        settings.camera->frame, robot.robot->links().front().name,
+                        a.trajectory.stamp_at_zero.value_or(0), o.trajectory, "--camera-frame");
     if (!o.print_frame.empty()) {
-      throw Error("--print-frame: the frames are placed by TF in '" + tf_fixed_frame +
+      throw Error("--print-frame: the camera is placed by TF from '" + settings.camera->frame +
                   "', which `render` cannot do");
     }
-    a.root.emplace(tf::ReadBagTransforms(o.trajectory), tf_fixed_frame, a.robot.robot->links().front().name,
-                   a.trajectory.stamp_at_zero.value_or(0), o.trajectory);
   }
-  const render::RenderSettings& settings = a.robot.settings;
-  a.frames.emplace(*a.robot.renderer, a.plan, *a.poses,
-                   animation::CameraRequest{settings.view, settings.size, fit, settings.fit_margin, o.turntable, settings.camera}, warnings,
-                   a.root ? &*a.root : nullptr);
+  a.frames.emplace(*robot.renderer, a.plan, *a.poses,
+                   animation::CameraRequest{settings.view, settings.size, fit, settings.fit_margin, o.turntable, settings.camera,
+                                            a.camera_tf ? &*a.camera_tf : nullptr},
+                   warnings, a.scene.Additions());
 }
 
 // --print-frame K: the render options that draw frame K, to stdout.
 void PrintFrame(const AnimateOptions& o, const PreparedAnimation& a, Warnings& warnings) {
   const std::int64_t k = FrameNumber(o.print_frame, a.plan);
   const std::vector<double> positions = a.frames->Positions(k, warnings);
+  scene::OrbitView view = a.frames->View(k);
+  if (const animation::FollowedFrame* followed = a.frames->followed()) {
+    // `render` with the same --follow adds the link's origin back for the frame's joints
+    if (!followed->is_link()) {
+      throw Error("--print-frame: the view follows a frame of the bag's TF, which `render` follows with --bag " +
+                  o.trajectory + " --at SECONDS");
+    }
+    view.focal -= followed->Origin(positions, Eigen::Isometry3d::Identity(), a.plan.TrajectoryTime(k), warnings);
+  }
   PrintWarnings(warnings);
   WriteToStdout(animation::JoinWords(
-      animation::RenderWords(*a.robot.robot, positions, a.frames->View(k), !o.render.request.no_clamp)) + "\n");
+      animation::RenderWords(*a.scene.robot.robot, positions, view, !o.render.request.no_clamp)) + "\n");
 }
 
 // Renders this shard's frames into the outputs `outputs` planned (prepared: checked and their folders
 // made), every output opened before the first frame and appearing only when all are complete.
 void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, request::RenderSession& session,
                     const PreparedAnimation& a, OutputPlan& outputs, Warnings& warnings) {
-  const render::RenderSettings& settings = a.robot.settings;
+  const render::RenderSettings& settings = a.scene.robot.settings;
   const shard::FrameRange range = shard::FramesOfShard(a.plan.frame_count, choice.shard);
   PrintShardLine(choice, range.size(), a.plan.frame_count, "frames", RangeText(range));
 
   a.frames->Positions(0, warnings);  // a pose's warnings are every frame's: print them first
   const auto encoder = video::OpenFrameEncoder(
       o.output, {settings.size.width, settings.size.height, a.plan.fps, range.first}, warnings);
-  std::optional<video::NumberedFiles> depth, labels;
+  std::optional<video::NumberedFiles> depth, labels, mask, keypoints;
   if (!o.depth.empty()) depth.emplace(o.depth, range.first);
+  if (!o.mask.empty()) mask.emplace(o.mask, range.first);
+  if (!o.keypoints.empty()) keypoints.emplace(o.keypoints, range.first);
   if (!o.labels.empty()) {
     labels.emplace(o.labels, range.first);
-    outputs.Write(animation::LabelNamesPath(o.labels), image::LabelNamesJson(a.robot.robot->LinkNames()));
+    outputs.Write(animation::LabelNamesPath(o.labels), image::LabelNamesJson(a.scene.robot.robot->LinkNames()));
   }
   PrintWarnings(warnings);   // --strict ends here, before any frame
 
@@ -229,23 +246,25 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
                           o.quiet ? stream::ProgressBar::Display::kNever
                                   : stream::ProgressBar::Display::kIfTerminal);
   Warnings later;
-  animation::RenderAnimation(*a.robot.renderer, session.GlRenderer(settings.samples), *a.frames, range,
-                             {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr},
+  animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(settings.samples), *a.frames, range,
+                             {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr,
+                              mask ? &*mask : nullptr, o.mask_dilate, keypoints ? &*keypoints : nullptr},
                              &bar, later);
   outputs.Commit();
   bar.Finish(WrittenText(o.output, range));
   PrintNewWarnings(warnings, later);
 }
 
-void Run(AnimateOptions& o) {
-  const gl::BackendChoice backend = o.gl_options.Choice();
-  const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
+// One animation (of the one MODEL, or of one of many bags) drawn through `session`; `gl_loading`
+// is the GL library being loaded.
+void RunOne(AnimateOptions& o, request::RenderSession& session, const std::future<void>& gl_loading) {
   request::RenderRequest& r = o.render.request;
   // MODEL given as a bag: its motion and the robot description it recorded
   std::optional<BagModel> bag_model;
   if (o.trajectory.empty() && motion::IsBag(o.model.path)) {
     o.trajectory = o.model.path;
     bag_model.emplace(o.model.path, o.description_topic);
+    o.model_from_bag = true;
   }
   r.model = o.model.ToRequest();
   if (bag_model) r.model.path = bag_model->path();
@@ -262,6 +281,9 @@ void Run(AnimateOptions& o) {
   const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
+  if (!o.mask.empty()) animation::CheckPattern(o.mask, ".png", "--mask");
+  dataset::CheckMaskDilate(o.mask_dilate, "--mask-dilate");
+  if (!o.keypoints.empty()) animation::CheckPattern(o.keypoints, ".json", "--keypoints");
   // no output may be another output or an input; their folders are made (removed again on failure)
   OutputPlan outputs;
   if (o.print_frame.empty()) {
@@ -273,12 +295,13 @@ void Run(AnimateOptions& o) {
       animation::PlanOutput(outputs, o.labels, "--labels");
       outputs.AddFile(animation::LabelNamesPath(o.labels), "the link names of --labels");
     }
+    if (!o.mask.empty()) animation::PlanOutput(outputs, o.mask, "--mask");
+    if (!o.keypoints.empty()) animation::PlanOutput(outputs, o.keypoints, "--keypoints");
     outputs.Prepare();
   }
 
   Warnings warnings;
   try {
-    request::RenderSession session(backend);
     PreparedAnimation animation;
     PrepareAnimation(o, session, animation, warnings);
     if (!o.print_frame.empty()) return PrintFrame(o, animation, warnings);
@@ -286,7 +309,7 @@ void Run(AnimateOptions& o) {
     // (set while no other thread runs: before the encoder opens and the GL context reads it)
     gl_loading.wait();
     const std::string rasteriser =
-        gl::LeaveCoresToOtherThreads(1, animation.robot.renderer->scene().triangle_count());
+        gl::LeaveCoresToOtherThreads(1, animation.scene.robot.renderer->scene().triangle_count());
     if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
     WriteAnimation(o, choice, session, animation, outputs, warnings);
   } catch (const Error& e) {
@@ -297,6 +320,42 @@ void Run(AnimateOptions& o) {
     PrintWarningsBeforeError(warnings);
     throw;
   }
+}
+
+// MODEL and the words after it that are bags, when MODEL is one (`animate a.mcap b.mcap ...`).
+std::vector<std::string> BagsGiven(const ModelSource& model) {
+  if (!motion::IsBag(model.path)) return {};
+  std::vector<std::string> bags{model.path};
+  for (const std::string& word : model.xacro_words) {
+    if (word.find(":=") == std::string::npos && motion::IsBag(word)) bags.push_back(word);
+  }
+  return bags;
+}
+
+void Run(AnimateOptions& o) {
+  const gl::BackendChoice backend = o.gl_options.Choice();
+  const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
+  request::RenderSession session(backend);
+  const std::vector<std::string> bags = BagsGiven(o.model);
+  if (bags.size() < 2) return RunOne(o, session, gl_loading);
+  if (!o.trajectory.empty() || !o.print_frame.empty()) {
+    throw Error("animate: " + std::to_string(bags.size()) + " bags are animated each with its own motion and "
+                "description; --trajectory and --print-frame take one MODEL");
+  }
+  std::vector<std::string> words;   // the xacro arguments, the same for every bag
+  for (const std::string& word : o.model.xacro_words) {
+    if (std::find(bags.begin(), bags.end(), word) == bags.end()) words.push_back(word);
+  }
+  AnimateEachBag(bags, o.output, [&](const std::string& bag) {
+    AnimateOptions one = o;
+    one.model.path = bag;
+    one.model.xacro_words = words;
+    const std::string stem = BagStem(bag);
+    one.output = WithStem(o.output, stem);
+    one.depth = WithStem(o.depth, stem);
+    one.labels = WithStem(o.labels, stem);
+    RunOne(one, session, gl_loading);
+  });
 }
 
 }  // namespace
@@ -311,7 +370,10 @@ void AddAnimateCommand(CLI::App& app) {
                   "a PNG sequence such as frames/%05d.png (numbered from 0; each frame as `render` "
                   "writes it); missing folders are made. A frame sequence splits over workers "
                   "with --shard: each writes a contiguous range of the files, named as in the whole "
-                  "animation, from the same camera");
+                  "animation, from the same camera. Several bags as MODEL (animate a.mcap b.mcap ... "
+                  "-o out/{stem}.mp4) are each animated with the same view and options into the file "
+                  "{stem} (the bag's name) makes, one line per bag and a summary; a bag that fails gets "
+                  "its error line, the others are still animated, and the run then exits with status 2");
   cmd->add_option("--trajectory", o->trajectory,
                   "the motion: a CSV table (time,<joint>,...), a JointTrajectory, MoveIt "
                   "RobotTrajectory/DisplayTrajectory or JointState stream in YAML/JSON (as `ros2 "
@@ -352,6 +414,14 @@ void AddAnimateCommand(CLI::App& app) {
                   "labels/%05d.png, as `render --labels` writes them, with the link names once in "
                   "the pattern's name without the number, .json (labels/labels.json; each shard writes "
                   "the same one)");
+  cmd->add_option("--mask", o->mask,
+                  "also write the robot's mask of every frame: a pattern such as masks/%05d.png, "
+                  "as `render --mask` writes it (8-bit, 255 on the robot)");
+  cmd->add_option("--mask-dilate", o->mask_dilate, "grow each --mask by N pixels (a disc), 0 to 1000 (default 0)");
+  cmd->add_option("--keypoints", o->keypoints,
+                  "also write every frame's keypoints: a pattern such as keypoints/%05d.json, each "
+                  "file as `render --keypoints` writes it (link frames' and joint origins' pixels, "
+                  "depth, visibility, and the camera)");
   cmd->add_option("--print-frame", o->print_frame,
                   "write nothing; print the options that make `render` (with the same MODEL and "
                   "options, without --fit) draw frame K byte for byte: the view and every joint");

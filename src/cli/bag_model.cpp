@@ -3,6 +3,7 @@
 
 #include <stdlib.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -14,7 +15,7 @@
 namespace urdfsnap::cli {
 
 BagModel::BagModel(const std::string& bag, const std::string& topic)
-    : name_(bag + ": '" + topic + "'") {
+    : bag_(bag), name_(bag + ": '" + topic + "'") {
   const std::string description = bag::ReadRobotDescription(bag, topic);
   const char* tmp = std::getenv("TMPDIR");
   std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/urdfsnap-description-XXXXXX";
@@ -40,6 +41,17 @@ BagModel::~BagModel() {
 std::string BagModel::Located(std::string message) const {
   for (std::size_t at; (at = message.find(path_)) != std::string::npos;) {
     message.replace(at, path_.size(), name_);
+  }
+  // a line of the description named after the bag, whose folder its meshes are found from
+  const std::string line_of_bag = bag_ + ":";
+  for (std::size_t at = 0; (at = message.find(line_of_bag, at)) != std::string::npos;) {
+    const std::size_t after = at + line_of_bag.size();
+    if (after < message.size() && std::isdigit(static_cast<unsigned char>(message[after]))) {
+      message.replace(at, bag_.size(), name_);
+      at += name_.size();
+    } else {
+      at = after;
+    }
   }
   return message;
 }

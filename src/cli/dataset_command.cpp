@@ -14,9 +14,11 @@
 #include "cli/shard_options.h"
 #include "common/error.h"
 #include "common/number_text.h"
+#include "dataset/camera_poses_file.h"
 #include "dataset/dataset_writer.h"
 #include "gl/gl_context.h"
 #include "gl/rasteriser_threads.h"
+#include "model/forward_kinematics.h"
 #include "request/render_session.h"
 #include "request/value_parsing.h"
 
@@ -27,7 +29,8 @@ namespace {
 struct DatasetOptions {
   ModelSource model;
   std::string output;
-  std::string count, seed = "0", distance, elevation = "0:60";
+  std::string count, seed = "0", distance, elevation;
+  std::string camera_poses;   // a file of camera poses, cycled through
   bool quiet = false;
   ShardOptions sharding;
   request::RenderRequest request;
@@ -35,7 +38,7 @@ struct DatasetOptions {
 };
 
 // render's options that a dataset draws per sample, or that a dataset has no use for
-constexpr std::string_view kDrawnPerSample[] = {"yaw", "pitch", "distance", "focal", "fit", "fit-margin", "camera-frame",
+constexpr std::string_view kDrawnPerSample[] = {"yaw", "pitch", "distance", "focal", "fit", "fit-margin",
                                                 "camera-pose", "underlay", "underlay-alpha"};
 
 // render's view and display options less kDrawnPerSample.
@@ -85,7 +88,18 @@ void Run(DatasetOptions& o) {
   spec.folder = o.output;
   spec.count = static_cast<std::int64_t>(ParseWhole(o.count, "--count", 1, 1e9));
   spec.seed = static_cast<std::uint64_t>(ParseWhole(o.seed, "--seed", 0, 9007199254740992.0));
-  spec.elevation = ParseInterval(o.elevation, "--elevation", -90, 90);
+  spec.elevation = ParseInterval(o.elevation.empty() ? "0:60" : o.elevation, "--elevation", -90, 90);
+  // the cameras: from the poses file, at the camera frame itself, or random on a sphere
+  if (!o.camera_poses.empty()) {
+    spec.camera_poses = dataset::ReadCameraPoses(o.camera_poses);
+  } else if (!r.camera_frame.empty()) {
+    spec.camera_poses = {Eigen::Isometry3d::Identity()};
+  }
+  if (!spec.camera_poses.empty() && (!o.distance.empty() || !o.elevation.empty())) {
+    throw Error(std::string(o.distance.empty() ? "--elevation" : "--distance") +
+                " places random cameras around the robot; the cameras are given by " +
+                (o.camera_poses.empty() ? "--camera-frame" : "--camera-poses"));
+  }
   const shard::ShardChoice choice = o.sharding.Choose();
   spec.range = shard::FramesOfShard(spec.count, choice.shard);
   spec.annotations_file = choice.sharded() ? "annotations." + std::to_string(choice.shard.index) + "-of-" +
@@ -111,8 +125,13 @@ void Run(DatasetOptions& o) {
     }
     settings.scene.fixed_frame.clear();   // cameras are placed in the root link's frame
     const render::RobotRenderer renderer(robot, settings.scene, warnings);
-    spec.distance = o.distance.empty() ? dataset::DefaultDistance(renderer, *settings.camera->model)
-                                       : ParseInterval(o.distance, "--distance", 1e-3, 1e6);
+    // an unknown --camera-frame is named before anything is written
+    renderer.CameraPose(model::ComputeLinkPoses(*robot, std::vector<double>(robot->joints().size(), 0.0)),
+                        *settings.camera);
+    if (spec.camera_poses.empty()) {
+      spec.distance = o.distance.empty() ? dataset::DefaultDistance(renderer, *settings.camera->model)
+                                         : ParseInterval(o.distance, "--distance", 1e-3, 1e6);
+    }
     PrintWarnings(warnings);
     gl::SceneRenderer gl(settings.samples, backend);
     stream::ProgressBar bar(spec.range.size(), "samples",
@@ -146,6 +165,10 @@ void AddDatasetCommand(CLI::App& app) {
                   "distance at which the zero pose's bounding sphere fills the image height)");
   cmd->add_option("--elevation", o->elevation,
                   "camera elevation above the horizontal MIN:MAX in degrees (default 0:60)");
+  cmd->add_option("--camera-poses", o->camera_poses,
+                  "FILE: the cameras instead of random ones, one pose of the optical frame per line, "
+                  "X Y Z QX QY QZ QW (m; spaces or commas; '#' comments), in the root link's frame "
+                  "or --camera-frame's; sample k uses line k modulo their number");
   cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
   o->sharding.AddOptions(*cmd, "samples");
   AddSceneOptions(*cmd, o->request);

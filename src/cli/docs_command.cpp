@@ -2,13 +2,14 @@
 // into a folder that appears only when complete, or `--check`ed against a fresh one for CI.
 #include <filesystem>
 #include <memory>
+#include <string_view>
 #include <utility>
 
 #include "cli/command.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
+#include "cli/render_options.h"
 #include "cli/shard_options.h"
-#include "cli/view_options.h"
 #include "common/error.h"
 #include "docs/animation_output.h"
 #include "docs/page_check.h"
@@ -24,16 +25,43 @@ namespace urdfsnap::cli {
 
 namespace {
 
+// render's options that cannot work on a page whose every picture is fitted to what it shows
+// through the orbit view: each is refused with the reason (--fit, which docs always does, warned
+// of), not left out of the command line, so that a user who gives one learns why.
+constexpr std::string_view kNotOnDocs[] = {"distance", "fit", "camera-info", "camera-frame", "camera-pose",
+                                           "near", "far", "underlay", "underlay-alpha", "distort"};
+
 struct DocsOptions {
   ModelSource model;
   std::string output, check;
-  std::vector<std::string> joint_globs;
-  std::string animations;
+  std::vector<std::string> section_globs;
+  std::string animations, stills = "webp";
   bool quiet = false;
   ShardOptions sharding;            // a contiguous part of the page's pictures and animations
-  request::RenderRequest request;   // the view and display options, filled by CLI11 directly
+  RenderOptions render;             // the pose (-j, --joints) and the view and display options
+  std::vector<std::string> refused; // the kNotOnDocs options given, in order
   GlOptions gl_options;
 };
+
+// Throws for the first refused option given (a warning for --fit), and for --joints naming no
+// file: before, it was the section filter --sections is now.
+void CheckOptions(const DocsOptions& o, Warnings& warnings) {
+  for (const std::string& name : o.refused) {
+    if (name == "fit") {
+      warnings.Add("--fit: docs always fits each picture to what it shows; the option changes nothing");
+    } else if (name == "distance") {
+      throw Error("docs: --distance does not apply: each picture of the page is fitted to what it shows "
+                  "(choose the direction with --yaw and --pitch, the point looked at with --focal)");
+    } else {
+      throw Error("docs: --" + name + " does not apply: the page's pictures are drawn through the orbit view "
+                  "(--yaw, --pitch, --focal, --fov); a calibrated camera is for render, animate and snapshot");
+    }
+  }
+  const std::string& file = o.render.request.joint_file;
+  if (std::error_code error; file.empty() || std::filesystem::exists(file, error)) return;
+  throw Error("--joints '" + file + "': no such joint file (--joints is the page's pose as in render, a "
+              "YAML/JSON joint file; to give sections only to some joints use --sections '" + file + "')");
+}
 
 // Prints what --check found and ends with status 1 when the page is stale.
 void Report(const std::string& folder, const std::vector<std::string>& differences) {
@@ -52,11 +80,15 @@ void Run(DocsOptions& o) {
   if (o.output.empty() == o.check.empty()) {
     throw Error("docs: give -o DIR to write a page, or --check DIR to compare a committed page with a fresh one");
   }
-  o.request.model = o.model.ToRequest();
+  Warnings warnings;
+  CheckOptions(o, warnings);
+  o.render.ParseJointWords();
+  request::RenderRequest& request = o.render.request;
+  request.model = o.model.ToRequest();
   // the page replaces its folder as a whole: no file the page is made from may be in it
   OutputPlan outputs;
   if (!o.output.empty()) {
-    request::AddRequestInputs(outputs, o.request);
+    request::AddRequestInputs(outputs, request);
     outputs.AddFolder(o.output, "-o");
     outputs.Prepare();
   } else if (std::error_code error; std::filesystem::exists(o.check, error) &&
@@ -65,11 +97,10 @@ void Run(DocsOptions& o) {
   }
   const shard::ShardChoice choice =
       o.sharding.Choose(o.check.empty() ? "" : "docs --check compares the whole page with a fresh one");
-  Warnings warnings;
   try {
     // the page's views are always fitted, each over what it shows (the docs stage does that)
-    o.request.fit = true;
-    request::ResolvedRequest resolved = request::ResolveRequest(o.request, request::CommandLineLabel, warnings);
+    request.fit = true;
+    request::ResolvedRequest resolved = request::ResolveRequest(request, request::CommandLineLabel, warnings);
     const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
     request::RenderSession session(backend);
     const request::Prepared prepared = session.Prepare(resolved, warnings);
@@ -77,13 +108,19 @@ void Run(DocsOptions& o) {
     look.backend = backend;
     look.settings = prepared.settings;
     look.settings.fit = fit;
+    look.tf_scale_given = !request.tf_scale.empty();
     docs::PageOptions options;
-    options.joint_globs = o.joint_globs;
+    options.section_globs = o.section_globs;
+    options.positions = prepared.positions;
+    options.posed = !request.joints.empty() || !request.joint_file.empty();
     options.view_size = {look.settings.size.width, look.settings.size.height};
-    options.joint_size = {std::max(1, options.view_size.width / 2), std::max(1, options.view_size.height / 2)};
+    // the joints' pictures and animations three quarters of --size: large enough to see a joint
+    // move, and a PR2's page of 39 joints within 5 MB as WebP
+    options.joint_size = {std::max(1, options.view_size.width * 3 / 4), std::max(1, options.view_size.height * 3 / 4)};
     options.animation_extension = o.animations == "none" ? "" : "." + o.animations;
-    const docs::RobotPage page = docs::MakeRobotPage(*prepared.robot, o.request.model.path,
-                                                     o.request.model.xacro_args, options, warnings);
+    options.still_extension = "." + o.stills;
+    const docs::RobotPage page = docs::MakeRobotPage(*prepared.robot, request.model.path,
+                                                     request.model.xacro_args, options, warnings);
     const std::vector<docs::PageImage> all = docs::PageImages(page, look);
     const std::vector<docs::PageImage> files = docs::ShardPageImages(all, choice.shard);
     PrintShardLine(choice, files.size(), all.size(), "pictures and animations",
@@ -135,19 +172,32 @@ void AddDocsCommand(CLI::App& app) {
   cmd->add_option("--check", o->check,
                   "instead of writing, compare the page in this folder with a fresh one: exit 0 when "
                   "it is up to date, 1 when stale (images within the snapshot tolerances, text exactly)");
-  cmd->add_option("--joints", o->joint_globs,
+  cmd->add_option("--sections", o->section_globs,
                   "give sections only to the movable joints matching GLOB (* ? [..], repeatable; "
                   "default: every movable joint)");
   std::vector<std::string> formats;
   for (const std::string& extension : docs::AnimationExtensions()) formats.push_back(extension.substr(1));
   formats.push_back("none");
-  o->animations = formats.front();
+  o->animations = "webp";
   cmd->add_option("--animations", o->animations,
-                  "format of the joint sweeps and the turntable (default " + formats.front() + ")")
+                  "format of the joint sweeps and the turntable: webp (lossy, about a quarter of gif's bytes), "
+                  "gif or none (default webp)")
       ->check(CLI::IsMember(formats));
+  cmd->add_option("--stills", o->stills,
+                  "format of the pictures: webp (lossy, a third to an eighth of png's bytes) or png (lossless; default webp)")
+      ->check(CLI::IsMember({"webp", "png"}));
   cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
   o->sharding.AddOptions(*cmd, "pictures and animations of the page");
-  AddViewOptions(*cmd, o->request);
+  o->render.AddOptions(*cmd, kNotOnDocs);
+  for (const std::string_view name : kNotOnDocs) {
+    const std::string option = "--" + std::string(name);
+    const auto given = [o, name] { o->refused.emplace_back(name); };
+    if (name == "fit" || name == "distort") {
+      cmd->add_flag_callback(option, given)->group("");
+    } else {
+      cmd->add_option_function<std::string>(option, [given](const std::string&) { given(); })->group("");
+    }
+  }
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
 }

@@ -5,8 +5,8 @@
 
 namespace urdfsnap::cli {
 
-void ModelSource::AddOptions(CLI::App& command) {
-  command.add_option("MODEL", path, "URDF or xacro file")->required();
+void ModelSource::AddOptions(CLI::App& command, bool optional) {
+  command.add_option("MODEL", path, "URDF or xacro file")->required(!optional);
   command.add_option("NAME:=VALUE", xacro_words, "xacro arguments, as for ROS's xacro");
   command.add_option("--package", packages,
                      "where $(find PKG) and package://PKG point (PKG=DIR, repeatable)");

@@ -17,8 +17,9 @@ struct ModelSource {
   std::vector<std::string> packages;           // PKG=DIR
   bool xacro_ns = false;
 
-  // Adds MODEL, the NAME:=VALUE words, --package and --xacro-ns to a subcommand.
-  void AddOptions(CLI::App& command);
+  // Adds MODEL (required unless `optional`: the command then checks it), the NAME:=VALUE words,
+  // --package and --xacro-ns to a subcommand.
+  void AddOptions(CLI::App& command, bool optional = false);
   // The words parsed; throws urdfsnap::Error for a word that is not NAME:=VALUE or PKG=DIR.
   request::ModelRequest ToRequest() const;
 };

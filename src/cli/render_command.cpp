@@ -2,20 +2,26 @@
 // options come from request::TextOptions/FlagOptions, the table snapshot suites read as well.
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <utility>
 
+#include "cli/bag_model.h"
+#include "cli/bag_still.h"
 #include "cli/command.h"
+#include "cli/display_options.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
-#include "camera/robot_mask.h"
 #include "common/error.h"
 #include "common/file_extension.h"
 #include "common/output_plan.h"
-#include "dataset/rendered_keypoints.h"
+#include "dataset/frame_extras.h"
 #include "image/depth_label_files.h"
 #include "image/image_file_names.h"
 #include "image/png_writer.h"
+#include "motion/trajectory_file.h"
 #include "gl/gl_context.h"
+#include "request/display_frame.h"
 #include "request/render_session.h"
 #include "request/request_inputs.h"
 
@@ -30,6 +36,8 @@ struct RenderCommandOptions {
   std::string mask, keypoints;  // optional robot mask and keypoint files
   int mask_dilate = 0;
   RenderOptions render;
+  DisplayOptions displays;
+  BagStillOptions bag;   // --bag, --at: a moment of a recording
   GlOptions gl_options;
 };
 
@@ -46,20 +54,26 @@ void CheckJsonExtension(const std::string& path, const std::string& option) {
 void Run(RenderCommandOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
   const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
+  // a recording: MODEL may be the bag itself, and without a MODEL the bag's robot description
+  if (o.bag.bag.empty() && !o.model.path.empty() && motion::IsBag(o.model.path)) o.bag.bag = std::exchange(o.model.path, "");
+  if (o.bag.bag.empty() && !o.bag.at.empty()) throw Error("--at: a moment of a recording; give the recording with --bag");
+  if (o.bag.bag.empty() && o.model.path.empty()) throw Error("render: give MODEL (a URDF or xacro file) or --bag");
+  std::optional<BagModel> bag_model;
+  if (o.model.path.empty()) bag_model.emplace(o.bag.bag, o.bag.description_topic);
   o.render.request.model = o.model.ToRequest();
+  if (bag_model) o.render.request.model.path = bag_model->path();
   o.render.ParseJointWords();
-  const std::string output = o.output.empty() ? DefaultOutput(o.model.path) : o.output;
+  const std::string output = o.output.empty() ? DefaultOutput(bag_model ? o.bag.bag : o.model.path) : o.output;
   image::CheckImageFileName(output, image::ImageKind::kColour, "-o");
   if (!o.depth.empty()) image::CheckImageFileName(o.depth, image::ImageKind::kDepth, "--depth");
   if (!o.labels.empty()) image::CheckImageFileName(o.labels, image::ImageKind::kLabels, "--labels");
   if (!o.mask.empty()) image::CheckImageFileName(o.mask, image::ImageKind::kMask, "--mask");
-  if (o.mask_dilate < 0 || o.mask_dilate > 1000) {
-    throw Error("--mask-dilate " + std::to_string(o.mask_dilate) + ": expected a number of pixels from 0 to 1000");
-  }
+  dataset::CheckMaskDilate(o.mask_dilate, "--mask-dilate");
   if (!o.keypoints.empty()) CheckJsonExtension(o.keypoints, "--keypoints");
   // every output checked, and its folder made, before drawing; all written, or none
   OutputPlan plan;
   request::AddRequestInputs(plan, o.render.request);
+  if (!o.bag.bag.empty()) plan.AddInput(o.bag.bag, "--bag");
   // (the default output/ folder is made; a folder given must exist)
   plan.AddFile(output, o.output.empty() ? "the output" : "-o", o.output.empty());
   if (!o.depth.empty()) plan.AddFile(o.depth, "--depth", false);
@@ -74,19 +88,35 @@ void Run(RenderCommandOptions& o) {
   request::RenderSession session(backend);
   image::Frame frame;
   std::shared_ptr<const model::Robot> robot;
-  std::string keypoints;
+  const dataset::ExtrasWanted wanted{!o.mask.empty(), o.mask_dilate, !o.keypoints.empty()};
+  dataset::FrameExtras extras;
   try {
-    const request::Prepared prepared = session.Prepare(o.render.request, request::CommandLineLabel, warnings);
-    const bool wants_keypoints = !o.keypoints.empty();
-    frame = session.Draw(prepared, {true, !o.depth.empty() || wants_keypoints,
-                                    !o.labels.empty() || !o.mask.empty() || wants_keypoints});
-    robot = prepared.robot;
-    if (wants_keypoints) {
-      const render::RenderSettings& s = prepared.settings;
-      keypoints = dataset::RenderedKeypointsJson(
-          *prepared.renderer, prepared.positions,
-          s.camera ? *s.camera : render::OrbitCamera(s.view, s.size.width, s.size.height), frame);
+    std::optional<BagStill> still;
+    if (!o.bag.bag.empty()) still.emplace(o.bag, session, o.render.request, bag_model.has_value(), warnings);
+    const request::Prepared prepared =
+        still ? still->prepared() : session.Prepare(o.render.request, request::CommandLineLabel, warnings);
+    const image::FrameOutputs outputs = dataset::OutputsFor({true, !o.depth.empty(), !o.labels.empty()}, wanted);
+    if (o.displays.empty() && prepared.settings.displays.empty()) {
+      frame = still ? still->Draw(session, outputs, warnings) : session.Draw(prepared, outputs);
+    } else {
+      const scene::SceneOptions& scene = prepared.settings.scene;
+      display::DisplaySet displays = o.displays.MakeDisplays(
+          prepared.settings.displays, scene.fixed_frame, request::MarkerResourcesFor(scene), warnings);
+      // a recording's displays show its messages up to the moment, placed through its TF
+      const std::int64_t time_ns = still ? still->StampNanoseconds() : 0;
+      if (still) display::ReadBagDisplayMessages(o.bag.bag, time_ns, displays, warnings);
+      frame = request::DrawWithDisplays(session, prepared, displays, time_ns,
+                                        still ? still->Frames() : display::FrameLookup{}, warnings, outputs);
     }
+    robot = prepared.robot;
+    const render::RenderSettings& s = prepared.settings;
+    extras = dataset::MakeFrameExtras(wanted, *prepared.renderer, prepared.positions,
+                                      s.camera ? *s.camera : render::OrbitCamera(s.view, s.size.width, s.size.height),
+                                      frame);
+  } catch (const Error& e) {
+    PrintWarningsBeforeError(warnings);
+    if (bag_model) throw Error(bag_model->Located(e.what()));
+    throw;
   } catch (...) {
     PrintWarningsBeforeError(warnings);
     throw;
@@ -94,14 +124,14 @@ void Run(RenderCommandOptions& o) {
   PrintWarnings(warnings);
   plan.Write(output, image::EncodePng(frame.colour));
   if (!o.depth.empty()) {
-    plan.Write(o.depth, image::EncodeDepth(frame.depth, std::filesystem::path(o.depth).extension().string()));
+    plan.Write(o.depth, image::EncodeDepthFile(frame.depth, o.depth));
   }
   if (!o.labels.empty()) {
     plan.Write(o.labels, image::EncodeLabels(frame.labels));
     plan.Write(image::LabelNamesFile(o.labels), image::LabelNamesJson(robot->LinkNames()));
   }
-  if (!o.mask.empty()) plan.Write(o.mask, image::EncodeGray8Png(camera::RobotMask(frame.labels, o.mask_dilate)));
-  if (!o.keypoints.empty()) plan.Write(o.keypoints, keypoints);
+  if (!o.mask.empty()) plan.Write(o.mask, image::EncodeGray8Png(extras.mask));
+  if (!o.keypoints.empty()) plan.Write(o.keypoints, extras.keypoints);
   plan.Commit();
 }
 
@@ -110,7 +140,7 @@ void Run(RenderCommandOptions& o) {
 void AddRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a robot pose to a PNG image, as RViz shows it");
-  o->model.AddOptions(*cmd);
+  o->model.AddOptions(*cmd, true);
   cmd->add_option("-o,--output", o->output, "PNG file to write (default output/<model>.png)");
   cmd->add_option("--depth", o->depth,
                   "also write the robot's depth image from the same view: FILE.png (16-bit, mm along "
@@ -131,6 +161,8 @@ void AddRenderCommand(CLI::App& app) {
                   "camera (OpenCV's projectPoints convention, distortion included), depth, whether "
                   "it is in the image and visible, and the camera (K, D, pose) (default: none)");
   o->render.AddOptions(*cmd);
+  o->displays.AddOptions(*cmd);
+  o->bag.AddOptions(*cmd);
   o->gl_options.AddOptions(*cmd);
   cmd->callback([o] { Run(*o); });
 }

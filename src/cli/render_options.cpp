@@ -5,11 +5,11 @@
 
 namespace urdfsnap::cli {
 
-void RenderOptions::AddOptions(CLI::App& command) {
+void RenderOptions::AddOptions(CLI::App& command, std::span<const std::string_view> left_out) {
   command.add_option("-j,--joint", joint_words, "joint value NAME=VALUE in rad or m (repeatable)");
   command.add_option("--joints", request.joint_file,
                      "YAML/JSON joint file: {name: value} or {name: [...], position: [...]}");
-  AddViewOptions(command, request);
+  AddViewOptions(command, request, left_out);
 }
 
 void RenderOptions::ParseJointWords() {

@@ -3,7 +3,9 @@
 // of request::TextOptions/FlagOptions.
 #pragma once
 
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -16,8 +18,9 @@ struct RenderOptions {
   std::vector<std::string> joint_words;  // NAME=VALUE, parsed by Apply
   request::RenderRequest request;        // everything else, filled by CLI11 directly
 
-  // Adds -j, --joints and the view and display options to `command`.
-  void AddOptions(CLI::App& command);
+  // Adds -j, --joints and the view and display options to `command`, but those in `left_out`
+  // (see AddViewOptions).
+  void AddOptions(CLI::App& command, std::span<const std::string_view> left_out = {});
   // Parses the -j words into request.joints; throws urdfsnap::Error for a malformed one.
   void ParseJointWords();
 };

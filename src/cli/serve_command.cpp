@@ -124,7 +124,9 @@ void AddServeCommand(CLI::App& app) {
       "\nThe options after MODEL set the page's initial view and pose. Over SSH:\n"
       "  ssh -L 8765:127.0.0.1:8765 HOST urdfsnap serve MODEL   then open http://localhost:8765/\n"
       "HTTP API: GET /render.png?yaw=0.5&size=800x600&no-grid&j.NAME=VALUE (render's option names),\n"
-      "GET /api/robot (joints with joint_state_publisher's ranges and defaults), /api/view, /api/status.\n");
+      "GET /api/robot (joints with joint_state_publisher's ranges and defaults), /api/view, /api/status,\n"
+      "/api/fit?...&link=NAME (the view that frames the robot or a link). A model that does not load is\n"
+      "served as its error until an edit mends it.\n");
   cmd->callback([o] { Run(*o); });
 }
 

@@ -9,24 +9,6 @@
 
 namespace urdfsnap {
 
-YAML::Node LoadYaml(const std::string& text, const std::string& path) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw Error(SourceLocation{path, e.mark.line + 1}, "bad YAML: " + e.msg);
-  }
-}
-
-int LineOf(const YAML::Node& node) { return node.IsDefined() ? node.Mark().line + 1 : 0; }
-
-std::string DescribeYaml(const YAML::Node& node) {
-  if (!node.IsDefined()) return "nothing";
-  if (node.IsScalar()) return "'" + node.Scalar() + "'";
-  if (node.IsMap()) return "a map";
-  if (node.IsSequence()) return "a list";
-  return "nothing";
-}
-
 YamlSection::YamlSection(std::string path, const YAML::Node& map, std::string name, Values values)
     : path_(std::move(path)), map_(map), name_(std::move(name)), values_(values) {
   if (!map_.IsMap()) {

@@ -117,8 +117,12 @@ void WriteDataset(const render::RobotRenderer& robot, gl::SceneRenderer& gl, con
     const std::vector<Eigen::Isometry3d> X_RL = model::ComputeLinkPoses(model, s.positions);
     const Eigen::Isometry3d X_FR = X_RL[robot.scene().fixed_link()].inverse();
     render::CameraSettings placed = camera;
-    placed.frame.clear();
-    placed.pose = SampleCameraPose(X_FR * bounds.Box(X_RL).center(), spec.distance, spec.elevation, random);
+    if (spec.camera_poses.empty()) {
+      placed.frame.clear();
+      placed.pose = SampleCameraPose(X_FR * bounds.Box(X_RL).center(), spec.distance, spec.elevation, random);
+    } else {
+      placed.pose = spec.camera_poses[static_cast<size_t>(k) % spec.camera_poses.size()];
+    }
     s.frame = robot.Render(gl, s.positions, placed, {true, true, true});
     s.X_FC = robot.CameraPose(X_RL, placed);
     s.keypoints = ProjectKeypoints(model, X_RL, X_FR.inverse() * s.X_FC, *camera.model, s.frame.depth, s.frame.labels);

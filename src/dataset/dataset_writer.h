@@ -1,5 +1,5 @@
 // `urdfsnap dataset`: N samples of a robot in random poses seen by a camera placed at random on a
-// sphere around it, written as colour, depth and label images and one COCO annotation file. Each
+// sphere around it (or at poses given), written as colour, depth and label images and one COCO annotation file. Each
 // sample depends only on (seed, its index), so runs, shards and reruns agree byte for byte.
 //
 //   DIR/images/000000.png   colour (8-bit RGB)
@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "common/warnings.h"
 #include "dataset/sampling.h"
@@ -26,12 +27,16 @@ struct DatasetSpec {
   std::uint64_t seed = 0;
   Interval distance;                 // m from the robot's centre
   Interval elevation{0, 60};         // degrees above the horizontal plane
+  // when not empty, sample k is seen from camera_poses[k % size] in the camera's frame (its link,
+  // or the root link) instead of from a random place on the sphere
+  std::vector<Eigen::Isometry3d> camera_poses;
   shard::FrameRange range;           // the samples this run writes
   std::string annotations_file;      // the COCO file's name in `folder`
 };
 
 // Writes the samples spec.range of `robot` seen through `camera` (its intrinsics and distortion;
-// its pose is drawn per sample, in the fixed frame, which should be the robot's root). Rendering
+// its pose is drawn per sample, or taken from spec.camera_poses, in the fixed frame, which should
+// be the robot's root). Rendering
 // on this thread overlaps with encoding and writing on a second one. Throws urdfsnap::Error for a
 // file that cannot be written (no annotation file is then written).
 void WriteDataset(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const render::CameraSettings& camera,

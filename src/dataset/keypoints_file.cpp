@@ -6,7 +6,7 @@
 namespace urdfsnap::dataset {
 
 std::string KeypointsJson(const camera::CameraModel& camera, const Eigen::Isometry3d& X_FC,
-                          const std::vector<FrameKeypoint>& keypoints) {
+                          const std::vector<FrameKeypoint>& keypoints, int indent) {
   nlohmann::ordered_json json;
   json["camera"] = CameraJson(camera, X_FC);
   json["frames"] = nlohmann::ordered_json::array();
@@ -21,7 +21,7 @@ std::string KeypointsJson(const camera::CameraModel& camera, const Eigen::Isomet
     frame["visible"] = k.visible;
     json["frames"].push_back(std::move(frame));
   }
-  return json.dump(2) + "\n";
+  return json.dump(indent) + "\n";
 }
 
 }  // namespace urdfsnap::dataset

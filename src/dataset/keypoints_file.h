@@ -12,9 +12,9 @@
 
 namespace urdfsnap::dataset {
 
-// The file's text (JSON, two-space indented, a final newline) for `keypoints` seen by `camera` at
-// X_FC in the fixed frame.
+// The file's text (JSON indented by `indent` spaces, or on one line for -1; a final newline) for
+// `keypoints` seen by `camera` at X_FC in the fixed frame.
 std::string KeypointsJson(const camera::CameraModel& camera, const Eigen::Isometry3d& X_FC,
-                          const std::vector<FrameKeypoint>& keypoints);
+                          const std::vector<FrameKeypoint>& keypoints, int indent = 2);
 
 }  // namespace urdfsnap::dataset

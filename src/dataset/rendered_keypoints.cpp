@@ -15,9 +15,9 @@ RenderedKeypoints KeypointsOfFrame(const render::RobotRenderer& robot, const std
 }
 
 std::string RenderedKeypointsJson(const render::RobotRenderer& robot, const std::vector<double>& positions,
-                                  const render::CameraSettings& camera, const image::Frame& frame) {
+                                  const render::CameraSettings& camera, const image::Frame& frame, int indent) {
   const RenderedKeypoints k = KeypointsOfFrame(robot, positions, camera, frame);
-  return KeypointsJson(*camera.model, k.X_FC, k.keypoints);
+  return KeypointsJson(*camera.model, k.X_FC, k.keypoints, indent);
 }
 
 }  // namespace urdfsnap::dataset

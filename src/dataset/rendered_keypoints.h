@@ -11,10 +11,10 @@
 
 namespace urdfsnap::dataset {
 
-// The keypoints file text (KeypointsJson) of `frame`, rendered from `robot` at `positions` through
-// `camera`; `frame` must hold its depth and label images.
+// The keypoints file text (KeypointsJson, indented by `indent`) of `frame`, rendered from `robot` at
+// `positions` through `camera`; `frame` must hold its depth and label images.
 std::string RenderedKeypointsJson(const render::RobotRenderer& robot, const std::vector<double>& positions,
-                                  const render::CameraSettings& camera, const image::Frame& frame);
+                                  const render::CameraSettings& camera, const image::Frame& frame, int indent = 2);
 
 // Keypoints and the camera pose X_FC (in the fixed frame) of the same.
 struct RenderedKeypoints {

@@ -50,10 +50,17 @@ std::string Intro(const RobotPage& page) {
                      EscapeMarkup(page.source_note) + "</p>\n</header>\n";
   text += "<figure class=\"hero\">" + Img(page.hero_file, page.robot_name + " as RViz shows it", page.view_size) +
           "</figure>\n";
+  // the TF view at its own size on a row of its own, so that its names stay readable
+  std::string tf;
   text += "<div class=\"strip\">\n";
-  for (const View& view : Views(page)) text += Figure(Img(view.file, view.alt, view.size), view.caption);
+  for (const View& view : Views(page)) {
+    std::string& row = view.file == page.tf_file ? tf : text;
+    row += Figure(Img(view.file, view.alt, view.size), view.caption);
+  }
   text += "</div>\n";
   if (page.collision_file.empty()) text += "<p class=\"note\">The robot has no collision geometry.</p>\n";
+  text += tf;
+  if (!page.tf_note.empty()) text += "<p class=\"note\">" + EscapeMarkup(page.tf_note) + "</p>\n";
   text += "<nav><ul><li><a href=\"#tree\">Kinematic tree</a></li><li><a href=\"#joints\">Joints</a></li>"
           "<li><a href=\"#joint-by-joint\">Joint by joint</a></li><li><a href=\"#links\">Links</a></li></ul></nav>\n";
   return text;

@@ -35,13 +35,21 @@ std::string Intro(const RobotPage& page) {
   std::string text = "# " + MarkdownText(page.robot_name) + "\n\n" +
                      Image(page.robot_name + " as RViz shows it", page.hero_file) + "\n\n";
   text += MarkdownText(page.source_note) + "\n\n";
+  // the TF view on its own, at its own size, so that its names stay readable
   Cells header, images;
+  std::string tf;
   for (const View& view : Views(page)) {
+    if (view.file == page.tf_file) {
+      tf = MarkdownText(view.caption) + ":\n\n" + Image(view.alt, view.file) + "\n\n";
+      continue;
+    }
     header.push_back(view.caption);
     images.push_back(Image(view.alt, view.file));
   }
-  text += Grid(header, {images}, ":-:");
+  if (!header.empty()) text += Grid(header, {images}, ":-:");
   if (page.collision_file.empty()) text += "The robot has no collision geometry.\n\n";
+  text += tf;
+  if (!page.tf_note.empty()) text += MarkdownText(page.tf_note) + "\n\n";
   return text;
 }
 

@@ -4,6 +4,7 @@
 #include "docs/page_images.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <set>
 
@@ -20,6 +21,9 @@ namespace urdfsnap::docs {
 namespace {
 
 render::ImageSize SizeOf(PictureSize size) { return {size.width, size.height}; }
+
+// The length of RViz's TF axes at marker scale 1 (tf_display.cpp), in metres.
+constexpr double kRvizAxisLength = 0.2;
 
 class PageRenderer {
  public:
@@ -42,15 +46,12 @@ class PageRenderer {
       Still(render::RobotRenderer(robot_, options, warnings_), page_.collision_file);
     }
 
-    if (Wanted(page_.tf_file)) {
-      options = look_.settings.scene;
-      options.tf.enabled = true;
-      options.alpha *= look_.tf_alpha;
-      Still(render::RobotRenderer(robot_, options, warnings_), page_.tf_file);
-    }
+    tf_left_out_ = TfView();
 
     if (Wanted(page_.turntable_file)) Turntable(visual_);
   }
+
+  const std::vector<LeftOutName>& tf_left_out() const { return tf_left_out_; }
 
   void Section(const JointSection& section) {
     const bool any = Wanted(section.sweep_file) ||
@@ -67,8 +68,12 @@ class PageRenderer {
     const render::RobotRenderer faded(robot_, options, warnings_);
     // one camera for the stills and every frame of the sweep, fitted to what moves
     const int stills = static_cast<int>(section.pictures.size());
+    model::NamedValues others = PagePoseWithout(section.joint);
     const auto pose = [&](int k) {
-      return Pose(section.name, k < stills ? section.pictures[k].position : section.sweep[k - stills]);
+      others.emplace_back(section.name, k < stills ? section.pictures[k].position : section.sweep[k - stills]);
+      std::vector<double> positions = model::ResolveJointPositions(*robot_, others, false, ignored_);
+      others.pop_back();
+      return positions;
     };
     const scene::OrbitView view = MotionView(faded, moving, stills + static_cast<int>(section.sweep.size()), pose);
     for (int k = 0; k < stills; ++k) {
@@ -101,9 +106,18 @@ class PageRenderer {
                           look_.settings.fit_margin.For(SizeOf(page_.joint_size)));
   }
 
-  // joint_state_publisher's positions with `joint` at `value` (its mimic joints following).
-  std::vector<double> Pose(const std::string& joint, double value) {
-    return model::ResolveJointPositions(*robot_, {{joint, value}}, false, warnings_);
+  // The page's pose as values of the joints a value moves, but `joint`: with its value added, what
+  // ResolveJointPositions makes of them is the page's pose with that joint moved (its mimics
+  // following).
+  model::NamedValues PagePoseWithout(int joint) const {
+    model::NamedValues values;
+    const auto& joints = robot_->joints();
+    for (size_t j = 0; j < joints.size(); ++j) {
+      if (static_cast<int>(j) != joint && joints[j].IsMovable() && joints[j].mimic_leader < 0) {
+        values.emplace_back(joints[j].name, page_.default_positions[j]);
+      }
+    }
+    return values;
   }
 
   void Still(const render::RobotRenderer& robot, const std::string& file) {
@@ -111,6 +125,28 @@ class PageRenderer {
     const render::ImageSize size = SizeOf(page_.view_size);
     const scene::OrbitView view = robot.FitView(look_.settings.fit, look_.settings.fit_margin, look_.settings.view, size, 1, pose);
     Write(robot.Render(gl_, page_.default_positions, view, size).colour, file);
+  }
+
+  // The TF frames from the camera that frames the robot, their axes a share of the picture's
+  // height (unless --tf-scale was given) and their names laid out so that none hides another;
+  // drawn when wanted, laid out always: the page names what it leaves out. Returns those names.
+  std::vector<LeftOutName> TfView() {
+    const render::ImageSize size = SizeOf(page_.tf_size);
+    const auto pose = [&](int) { return page_.default_positions; };
+    const scene::OrbitView view = visual_.FitView(look_.settings.fit, look_.settings.fit_margin, look_.settings.view, size, 1, pose);
+    scene::SceneOptions options = look_.settings.scene;
+    options.tf.enabled = true;
+    options.alpha *= look_.tf_alpha;
+    if (!look_.tf_scale_given) {
+      const double picture_height = 2 * view.distance * std::tan(view.fov_y / 2);   // metres at the focal point
+      options.tf.marker_scale = look_.tf_axis_share * picture_height / kRvizAxisLength;
+    }
+    const render::RobotRenderer tf(robot_, options, warnings_);
+    scene::Scene scene = tf.Pose(page_.default_positions);
+    std::vector<LeftOutName> left_out;
+    if (!scene.labels.empty()) left_out = LayOutTfNames(scene, robot_->LinkNames(), view, size);
+    if (Wanted(page_.tf_file)) Write(gl_.Render(scene, view, size.width, size.height).colour, page_.tf_file);
+    return left_out;
   }
 
   // The camera's yaw once around, at the distance that frames the robot from every side.
@@ -140,10 +176,16 @@ class PageRenderer {
     });
   }
 
+  // A picture as PNG, or as WebP (lossy) through the animation encoder: a one-frame animation.
   void Write(const image::Image& image, const std::string& file) {
     const std::filesystem::path path = folder_ / file;
     std::filesystem::create_directories(path.parent_path());
-    image::WritePng(image, path.string());
+    if (path.extension() == ".png") {
+      image::WritePng(image, path.string());
+    } else {
+      WriteAnimation(path.string(), {image.width, image.height}, look_.fps, 1,
+                     [&](int, image::Image& frame) { frame = image; });
+    }
     Advance();
   }
 
@@ -156,6 +198,7 @@ class PageRenderer {
   const PageLook& look_;
   const std::filesystem::path folder_;
   Warnings& warnings_;
+  Warnings ignored_;   // a section's poses': the page's pose was warned of when it was resolved
   const Progress& progress_;
   const std::int64_t total_;
   std::int64_t done_ = 0;
@@ -165,6 +208,7 @@ class PageRenderer {
   // each variant, the PR2's were decoded and uploaded again for each of its 39 joint sections)
   const render::RobotRenderer visual_;
   std::set<std::string> wanted_;
+  std::vector<LeftOutName> tf_left_out_;
 };
 
 }  // namespace
@@ -189,12 +233,14 @@ std::int64_t ImageCount(const std::vector<PageImage>& files) {
   return count;
 }
 
-void RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
-                      const PageLook& look, const std::vector<PageImage>& files,
-                      const std::filesystem::path& folder, Warnings& warnings, const Progress& progress) {
+std::vector<LeftOutName> RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
+                                          const PageLook& look, const std::vector<PageImage>& files,
+                                          const std::filesystem::path& folder, Warnings& warnings,
+                                          const Progress& progress) {
   PageRenderer renderer(robot, page, look, files, folder, warnings, progress);
   renderer.Views();
   for (const JointSection& section : page.sections) renderer.Section(section);
+  return renderer.tf_left_out();
 }
 
 }  // namespace urdfsnap::docs

@@ -14,6 +14,7 @@
 
 #include "common/warnings.h"
 #include "docs/page_model.h"
+#include "docs/tf_name_layout.h"
 #include "gl/backend.h"
 #include "model/robot.h"
 #include "render/render_settings.h"
@@ -27,8 +28,10 @@ struct PageLook {
   render::RenderSettings settings;
   double faded_alpha = 0.25;   // link alpha of the links a joint does not move
   double tf_alpha = 0.3;       // multiplies the robot's alpha in the TF view, so frames inside show
-  int turntable_frames = 48;   // one turn of the camera's yaw
-  double fps = 12;             // of every animation
+  double tf_axis_share = 0.05; // TF axes' length in the TF view, a share of the picture's height
+  bool tf_scale_given = false; // --tf-scale sizes the TF view's axes instead
+  int turntable_frames = 36;   // one turn of the camera's yaw (3.6 s)
+  double fps = 10;             // of every animation: whole centiseconds, as GIF holds them
   gl::BackendChoice backend;   // the GL backend that draws them ({}: URDFSNAP_GL_BACKEND, else auto)
 };
 
@@ -52,9 +55,10 @@ std::int64_t ImageCount(const std::vector<PageImage>& files);
 // Renders the pictures and animations of `page` (made by MakeRobotPage for `robot`) that `files`
 // lists (PageImages, or a shard's part of them) into `folder`, at the page's relative file names;
 // each camera is fitted as for the whole page, so a picture is the same whichever part it is made
-// in. Throws urdfsnap::Error: files the robot needs that cannot be read (located at the link), no GL
-// context, an image that cannot be written.
-void RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
+// in. Pictures are PNG or WebP by their extension. Returns the frame names the TF picture leaves
+// out (the same whichever part is made). Throws urdfsnap::Error: files the robot needs that cannot
+// be read (located at the link), no GL context, an image that cannot be written.
+std::vector<LeftOutName> RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
                       const PageLook& look, const std::vector<PageImage>& files,
                       const std::filesystem::path& folder, Warnings& warnings, const Progress& progress);
 

@@ -4,6 +4,7 @@
 
 #include <fnmatch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -61,13 +62,15 @@ std::string SourceNote(const model::Robot& robot, const RobotPage& page) {
   return note + ": " + text + "). Made by urdfsnap docs; regenerate the page rather than edit it.";
 }
 
-std::string SectionsNote(size_t movable, size_t shown) {
+std::string SectionsNote(size_t movable, size_t shown, bool posed) {
   if (movable == 0) return "The robot has no movable joints.";
-  std::string note = "Each movable joint at its limits and its default (joint_state_publisher's), seen by one "
-                     "camera that frames its whole motion, with the links it does not move faded.";
+  std::string note = posed ? "Each movable joint at its limits and at the page's pose (given with -j or --joints: "
+                             "\"default\" below), the others staying there, seen by one camera"
+                           : "Each movable joint at its limits and its default (joint_state_publisher's), seen by one camera";
+  note += " that frames its whole motion, with the links it does not move faded.";
   const size_t left_out = movable - shown;
-  if (left_out == 1) note += " 1 movable joint is left out of this page (--joints).";
-  if (left_out > 1) note += " " + std::to_string(left_out) + " movable joints are left out of this page (--joints).";
+  if (left_out == 1) note += " 1 movable joint is left out of this page (--sections).";
+  if (left_out > 1) note += " " + std::to_string(left_out) + " movable joints are left out of this page (--sections).";
   return note;
 }
 
@@ -108,7 +111,7 @@ std::vector<int> ChosenJoints(const model::Robot& robot, const std::vector<std::
     if (!matched) {
       std::string names;
       for (const std::string& name : robot.MovableJointNames()) names += (names.empty() ? "" : ", ") + name;
-      throw Error("--joints '" + glob + "' matches none of the movable joints of robot '" + robot.name() +
+      throw Error("--sections '" + glob + "' matches none of the movable joints of robot '" + robot.name() +
                   "'" + (names.empty() ? " (it has none)" : ": " + names));
     }
   }
@@ -140,7 +143,7 @@ JointSection MakeSection(const model::Robot& robot, const RobotPage& page, int j
   const double default_position = page.default_positions[j];
   for (const StillPose& still : StillPoses(joint, default_position)) {
     const std::string value = PositionText(joint, still.position);
-    section.pictures.push_back({still.label, still.position, value, folder + still.file_stem + ".png",
+    section.pictures.push_back({still.label, still.position, value, folder + still.file_stem + options.still_extension,
                                 joint.name + " at " + still.label + ", " + value});
   }
   section.sweep = SweepPositions(joint, default_position, options.sweep_frames);
@@ -173,7 +176,7 @@ std::vector<View> Views(const RobotPage& page) {
     views.push_back({"collision geometry", "collision geometry of " + page.robot_name, page.collision_file,
                      page.view_size});
   }
-  views.push_back({"TF frames", "TF frames of " + page.robot_name, page.tf_file, page.view_size});
+  views.push_back({"TF frames", "TF frames of " + page.robot_name, page.tf_file, page.tf_size});
   if (!page.turntable_file.empty()) {
     views.push_back({"turntable", page.robot_name + " turning", page.turntable_file, page.joint_size});
   }
@@ -189,14 +192,27 @@ RobotPage MakeRobotPage(const model::Robot& robot, const std::string& model_path
   page.model_file = std::filesystem::path(model_path).filename().string();
   page.xacro_args = xacro_args;
   page.source_note = SourceNote(robot, page);
-  page.default_positions = model::ResolveJointPositions(robot, {}, true, warnings);
-  page.hero_file = "images/robot.png";
+  page.default_positions = options.positions.empty() ? model::ResolveJointPositions(robot, {}, true, warnings)
+                                                     : options.positions;
+  if (page.default_positions.size() != robot.joints().size()) {
+    throw Error("a docs page's pose needs " + std::to_string(robot.joints().size()) + " joint positions, not " +
+                std::to_string(page.default_positions.size()));
+  }
+  if (options.still_extension != ".png" && options.still_extension != ".webp") {
+    throw Error("a docs page's pictures are .png or .webp, not '" + options.still_extension + "'");
+  }
+  page.hero_file = "images/robot" + options.still_extension;
   bool has_collision = false;
   for (const model::Link& link : robot.links()) has_collision |= !link.collisions.empty();
-  if (has_collision) page.collision_file = "images/collision.png";
-  page.tf_file = "images/tf.png";
+  if (has_collision) page.collision_file = "images/collision" + options.still_extension;
+  page.tf_file = "images/tf" + options.still_extension;
   if (!options.animation_extension.empty()) page.turntable_file = "images/turntable" + options.animation_extension;
   page.view_size = options.view_size;
+  // about 30 frame names fit the TF view at --size 640x480; more frames (a PR2 has 90) get a
+  // picture up to twice as wide and high, so that more of their names find a place
+  const double grow = std::clamp(std::sqrt(robot.links().size() / 30.0), 1.0, 2.0);
+  page.tf_size = {static_cast<int>(std::lround(options.view_size.width * grow)),
+                  static_cast<int>(std::lround(options.view_size.height * grow))};
   page.joint_size = options.joint_size;
 
   const auto& joints = robot.joints();
@@ -222,7 +238,7 @@ RobotPage MakeRobotPage(const model::Robot& robot, const std::string& model_path
     page.tree.push_back(std::move(node));
   }
 
-  const std::vector<int> chosen = ChosenJoints(robot, options.joint_globs);
+  const std::vector<int> chosen = ChosenJoints(robot, options.section_globs);
   std::vector<std::string> chosen_names;
   for (int j : chosen) chosen_names.push_back(joints[j].name);
   const std::vector<std::string> safe_names = FileSafeNames(chosen_names);
@@ -233,7 +249,7 @@ RobotPage MakeRobotPage(const model::Robot& robot, const std::string& model_path
   for (size_t i = 0; i < links.size(); ++i) {
     if (links[i].parent_joint >= 0) page.tree[i].anchor = page.joints[links[i].parent_joint].anchor;
   }
-  page.sections_note = SectionsNote(robot.MovableJointNames().size(), chosen.size());
+  page.sections_note = SectionsNote(robot.MovableJointNames().size(), chosen.size(), options.posed);
   return page;
 }
 

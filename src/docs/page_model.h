@@ -72,11 +72,14 @@ struct RobotPage {
   std::vector<std::pair<std::string, std::string>> xacro_args;
   std::string source_note;               // "From mrm.urdf: 7 links, 6 joints (5 movable). Made by ..."
   std::string sections_note;             // what the joint sections show, and what is left out
-  std::vector<double> default_positions; // joint_state_publisher's, one per Robot::joints()
+  std::vector<double> default_positions; // the page's pose (joint_state_publisher's unless
+                                         // given), one per Robot::joints()
   std::string hero_file, tf_file;
   std::string collision_file;            // "" when the robot has no collision geometry
   std::string turntable_file;            // "" when the page has no animations
-  PictureSize view_size;                 // the robot, collision and TF views
+  std::string tf_note;                   // what the TF picture leaves out (LeftOutNote), "" for nothing
+  PictureSize view_size;                 // the robot and collision views
+  PictureSize tf_size;                   // the TF view: larger for a robot with many frames
   PictureSize joint_size;                // the joints' pictures and every animation
   std::vector<JointRow> joints;          // every joint, in document order
   std::vector<LinkRow> links;            // every link, in tree order
@@ -113,17 +116,23 @@ struct View {
 std::vector<View> Views(const RobotPage& page);
 
 struct PageOptions {
-  // Shell-style patterns (fnmatch: * ? [...]) choosing the movable joints that get a section;
-  // empty for all. A pattern naming a mimic joint gives its leader's section.
-  std::vector<std::string> joint_globs;
+  // Shell-style patterns (fnmatch: * ? [...]) choosing the movable joints that get a section
+  // (--sections); empty for all. A pattern naming a mimic joint gives its leader's section.
+  std::vector<std::string> section_globs;
+  // The page's pose, one position per Robot::joints() (mimics resolved): the views' and, but for
+  // its own joint, each section's; empty for joint_state_publisher's defaults.
+  std::vector<double> positions;
+  bool posed = false;                    // the pose was given (-j, --joints), not the defaults
   PictureSize view_size;                 // --size
   PictureSize joint_size{320, 240};      // half of it
-  int sweep_frames = 36;                 // frames of each joint's sweep animation
+  int sweep_frames = 24;                 // frames of each joint's sweep animation (2.4 s)
   std::string animation_extension = ".gif";   // "" for a page without animations
+  std::string still_extension = ".png";       // of the pictures: ".png", or ".webp" (lossy, smaller)
 };
 
 // The page of `robot`, loaded from `model_path` with `xacro_args`. Throws urdfsnap::Error for a
-// joint pattern that matches no movable joint (listing them), or sweep_frames below 2.
+// section pattern that matches no movable joint (listing them), positions of the wrong count, or
+// sweep_frames below 2.
 RobotPage MakeRobotPage(const model::Robot& robot, const std::string& model_path,
                         const std::vector<std::pair<std::string, std::string>>& xacro_args,
                         const PageOptions& options, Warnings& warnings);

@@ -10,9 +10,10 @@ namespace urdfsnap::docs {
 void WritePage(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
                const std::vector<PageImage>& files, const std::filesystem::path& folder, Warnings& warnings,
                const Progress& progress) {
-  RenderPageImages(robot, page, look, files, folder, warnings, progress);
-  WriteFileAtomically((folder / kMarkdownFile).string(), MarkdownPage(page));
-  WriteFileAtomically((folder / kHtmlFile).string(), HtmlPage(page));
+  RobotPage written = page;
+  written.tf_note = LeftOutNote(RenderPageImages(robot, page, look, files, folder, warnings, progress));
+  WriteFileAtomically((folder / kMarkdownFile).string(), MarkdownPage(written));
+  WriteFileAtomically((folder / kHtmlFile).string(), HtmlPage(written));
 }
 
 }  // namespace urdfsnap::docs

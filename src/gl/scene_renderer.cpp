@@ -2,6 +2,7 @@
 #include "gl/scene_renderer.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <variant>
@@ -13,6 +14,7 @@
 #include "gl/gl_context.h"
 #include "gl/internal/gpu_mesh.h"
 #include "gl/internal/gpu_texture.h"
+#include "gl/internal/point_set_drawing.h"
 #include "gl/internal/shader_program.h"
 
 namespace urdfsnap::gl {
@@ -30,7 +32,9 @@ constexpr int kMaxTextureUnits = 32;
 
 struct Transparent {
   double depth;            // squared distance from the eye, for back-to-front order
-  std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*> what;
+  std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*, const scene::PointSet*,
+               const scene::FlatTriangles*>
+      what;
 };
 
 // GPU copies of scene data, made on first use and kept while the source object lives: entries
@@ -61,6 +65,60 @@ class GpuCache {
   std::unordered_map<const Source*, Entry> entries_;
   size_t purge_at_ = 64;
 };
+
+// Appends one vertex of the line shader: position, then rgba.
+void AppendVertex(const Eigen::Vector3f& p, const Eigen::Vector4f& rgba, std::vector<float>& floats) {
+  floats.insert(floats.end(), p.data(), p.data() + 3);
+  floats.insert(floats.end(), rgba.data(), rgba.data() + 4);
+}
+
+Eigen::Vector4f PointColour(const scene::LineSet& lines, size_t i) {
+  return i < lines.colours.size() ? lines.colours[i] : lines.rgba;
+}
+
+std::vector<float> LineVertices(const scene::LineSet& lines) {
+  std::vector<float> floats;
+  floats.reserve(lines.points.size() * 7);
+  for (size_t i = 0; i < lines.points.size(); ++i) AppendVertex(lines.points[i], PointColour(lines, i), floats);
+  return floats;
+}
+
+// billboard_line.cpp: each segment a quad `width` wide, its sides offset from the segment by half
+// the width along the direction across both the segment and the line of sight from `eye`.
+std::vector<float> RibbonVertices(const scene::LineSet& lines, const Eigen::Vector3d& eye) {
+  std::vector<float> floats;
+  floats.reserve(lines.points.size() / 2 * 6 * 7);
+  for (size_t i = 0; i + 1 < lines.points.size(); i += 2) {
+    const Eigen::Vector3f a = lines.points[i], b = lines.points[i + 1];
+    const Eigen::Vector3f sight = (a + b) / 2 - eye.cast<float>();
+    Eigen::Vector3f across = (b - a).cross(sight);
+    if (across.squaredNorm() == 0) continue;   // a point, or seen end on
+    across = across.normalized() * (lines.width / 2);
+    const Eigen::Vector4f ca = PointColour(lines, i), cb = PointColour(lines, i + 1);
+    const Eigen::Vector3f a0 = a - across, a1 = a + across, b0 = b - across, b1 = b + across;
+    AppendVertex(a0, ca, floats), AppendVertex(a1, ca, floats), AppendVertex(b1, cb, floats);
+    AppendVertex(a0, ca, floats), AppendVertex(b1, cb, floats), AppendVertex(b0, cb, floats);
+  }
+  return floats;
+}
+
+// Whether every colour of `set` (a PointSet, FlatTriangles) is opaque: RViz's point cloud blends
+// (without depth writes) once its alpha or any point's is below 1 (point_cloud.cpp,
+// PointCloud::setAlpha), and so does a triangle list whose alpha is (triangle_list_marker.cpp).
+template <typename Set>
+bool Opaque(const Set& set) {
+  return std::all_of(set.colours.begin(), set.colours.end(),
+                     [](const Eigen::Vector4f& rgba) { return rgba.w() >= kOpaqueAlpha; });
+}
+
+// The mean of `points`, where a set of them is sorted among the transparent objects.
+template <typename Points>
+Eigen::Vector3d Centre(const Points& points) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& p : points) centre += p.template cast<double>();
+  if (!points.empty()) centre /= static_cast<double>(points.size());
+  return centre;
+}
 
 }  // namespace
 
@@ -105,16 +163,21 @@ struct SceneRenderer::Impl {
     for (; index < 2; ++index) glDisableVertexAttribArray(index);
   }
 
+  // A texture shown by no unit leaves the colour as it is: such a surface is drawn untextured.
   void DrawMesh(const scene::DrawItem& item, const Eigen::Matrix4d& V, const Eigen::Matrix4d& PV) {
+    const int units = item.texture ? std::clamp(item.texture_units, 0, kMaxTextureUnits) : 0;
+    if (units > 0 && !lit_textured) lit_textured.emplace("lit.vert", "lit.frag", "TEXTURED");
+    const ShaderProgram& program = units > 0 ? *lit_textured : lit;
+    program.Use();
     const Eigen::Matrix4d M = item.X_FG.matrix();
-    lit.Set("model_view_projection", Eigen::Matrix4f((PV * M).cast<float>()));
+    program.Set("model_view_projection", Eigen::Matrix4f((PV * M).cast<float>()));
     const Eigen::Matrix3d MV = (V * M).topLeftCorner<3, 3>();
-    lit.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
-    lit.Set("diffuse", item.rgba);
-    lit.Set("emissive", item.emissive);
-    lit.Set("texture_units", item.texture ? std::clamp(item.texture_units, 0, kMaxTextureUnits) : 0);
-    if (item.texture) {
-      lit.Set("image", 0);
+    program.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
+    program.Set("diffuse", item.rgba);
+    program.Set("emissive", item.emissive);
+    if (units > 0) {
+      program.Set("texture_units", units);
+      program.Set("image", 0);
       textures.Get(item.texture).Bind(0);
     }
     // a mirroring scale turns the winding around; Ogre flips culling for such nodes, and so do we
@@ -122,15 +185,29 @@ struct SceneRenderer::Impl {
     meshes.Get(item.mesh).Draw();
   }
 
-  void DrawLines(const scene::LineSet& lines, const Eigen::Matrix4d& PV) {
+  // 1-pixel lines, or with a width the camera-facing ribbons of RibbonVertices
+  void DrawLines(const scene::LineSet& lines, const Eigen::Matrix4d& PV, const Eigen::Vector3d& eye) {
     line.Use();
     line.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
-    line.Set("colour", lines.rgba);
+    const std::vector<float> floats = lines.width > 0 ? RibbonVertices(lines, eye) : LineVertices(lines);
+    Stream(floats, {3, 4});
+    glDisable(GL_CULL_FACE);
+    glDrawArrays(lines.width > 0 ? GL_TRIANGLES : GL_LINES, 0, static_cast<GLsizei>(floats.size() / 7));
+    glEnable(GL_CULL_FACE);
+  }
+
+  void DrawTriangles(const scene::FlatTriangles& triangles, const Eigen::Matrix4d& PV) {
+    line.Use();
+    line.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
     std::vector<float> floats;
-    floats.reserve(lines.points.size() * 3);
-    for (const auto& p : lines.points) floats.insert(floats.end(), p.data(), p.data() + 3);
-    Stream(floats, {3});
-    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.points.size()));
+    floats.reserve(triangles.positions.size() * 7);
+    for (size_t i = 0; i < triangles.positions.size(); ++i) {
+      AppendVertex(triangles.positions[i], triangles.colours[i], floats);
+    }
+    Stream(floats, {3, 4});
+    glDisable(GL_CULL_FACE);   // triangle_list_marker.cpp: CULL_NONE
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.positions.size()));
+    glEnable(GL_CULL_FACE);
   }
 
   // movable_text.cpp: depth-checked, no depth write, depth bias (1, 1), which Ogre's GL render
@@ -186,7 +263,6 @@ struct SceneRenderer::Impl {
 
     // opaque geometry first, writing depth
     glDisable(GL_BLEND);
-    lit.Use();
     std::vector<Transparent> transparent;
     for (const auto& item : scene.items) {
       if (item.rgba.w() >= kOpaqueAlpha) {
@@ -195,11 +271,22 @@ struct SceneRenderer::Impl {
         transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
       }
     }
+    for (const auto& points : scene.points) {
+      if (Opaque(points)) {
+        point_sets.Draw(points, V, P);
+      } else {
+        transparent.push_back({(Centre(points.positions) - eye).squaredNorm(), &points});
+      }
+    }
+    for (const auto& triangles : scene.triangles) {
+      if (Opaque(triangles)) {
+        DrawTriangles(triangles, PV);
+      } else {
+        transparent.push_back({(Centre(triangles.positions) - eye).squaredNorm(), &triangles});
+      }
+    }
     for (const auto& lines : scene.lines) {
-      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-      for (const auto& p : lines.points) centre += p.cast<double>();
-      if (!lines.points.empty()) centre /= static_cast<double>(lines.points.size());
-      transparent.push_back({(centre - eye).squaredNorm(), &lines});
+      transparent.push_back({(Centre(lines.points) - eye).squaredNorm(), &lines});
     }
     // Ogre sorts MovableText with the transparent objects by its node's position, the anchor
     for (const auto& text_label : scene.labels) {
@@ -214,10 +301,13 @@ struct SceneRenderer::Impl {
     glDepthMask(GL_FALSE);
     for (const auto& t : transparent) {
       if (const auto* item = std::get_if<const scene::DrawItem*>(&t.what)) {
-        lit.Use();
         DrawMesh(**item, V, PV);
       } else if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
-        DrawLines(**lines, PV);
+        DrawLines(**lines, PV, eye);
+      } else if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
+        point_sets.Draw(**points, V, P);
+      } else if (const auto* triangles = std::get_if<const scene::FlatTriangles*>(&t.what)) {
+        DrawTriangles(**triangles, PV);
       } else {
         DrawLabel(*std::get<const scene::TextLabel*>(t.what), V, P);
       }
@@ -259,10 +349,12 @@ struct SceneRenderer::Impl {
 
   int samples;
   std::unique_ptr<GlContext> context;
-  ShaderProgram lit;
+  ShaderProgram lit;                           // untextured surfaces
+  std::optional<ShaderProgram> lit_textured;   // and textured ones, made for the first
   ShaderProgram line;
   ShaderProgram text;
   ShaderProgram label;
+  PointSetDrawing point_sets;
   unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
   std::unique_ptr<Framebuffer> framebuffer;
   std::unique_ptr<LabelFramebuffer> label_framebuffer;

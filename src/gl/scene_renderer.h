@@ -28,8 +28,8 @@ class SceneRenderer {
 
   // Renders `scene` seen through `view` into width x height images: the colour image as RViz
   // shows it, and the depth and label images of the draw items with a link (robot geometry; never
-  // the grid, TF markers or names), as `outputs` asks. Throws urdfsnap::Error when GL cannot
-  // render the size, or a draw item's link index does not fit a 16-bit label.
+  // the grid, TF markers, names or point sets), as `outputs` asks. Throws urdfsnap::Error when GL
+  // cannot render the size, or a draw item's link index does not fit a 16-bit label.
   image::Frame Render(const scene::Scene& scene, const scene::OrbitView& view, int width, int height,
                       const image::FrameOutputs& outputs = {});
 

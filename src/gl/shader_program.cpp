@@ -1,6 +1,7 @@
 // GLSL compilation and linking with readable errors (after Drake's internal_shader_program.cc).
 #include "gl/internal/shader_program.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "common/error.h"
@@ -27,12 +28,17 @@ std::string InfoLog(GLuint object, bool is_program) {
   return log.data();
 }
 
-GLuint Compile(GLenum stage, const std::string& name) {
+// Compiles shaders/<name>, with `define` #define'd at the end of its #version line (GLSL wants
+// #version before anything but comments).
+GLuint Compile(GLenum stage, const std::string& name, const std::string& define) {
   const std::string_view source = EmbeddedShader(name);
-  const GLchar* text = source.data();
-  const GLint length = static_cast<GLint>(source.size());
+  const size_t version_end = std::min(source.find('\n', source.find("#version")), source.size());
+  const std::string defined = define.empty() ? "" : "\n#define " + define;
+  const GLchar* texts[3] = {source.data(), defined.data(), source.data() + version_end};
+  const GLint lengths[3] = {static_cast<GLint>(version_end), static_cast<GLint>(defined.size()),
+                            static_cast<GLint>(source.size() - version_end)};
   const GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &text, &length);
+  glShaderSource(shader, 3, texts, lengths);
   glCompileShader(shader);
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -46,10 +52,11 @@ GLuint Compile(GLenum stage, const std::string& name) {
 
 }  // namespace
 
-ShaderProgram::ShaderProgram(const std::string& vertex_name, const std::string& fragment_name)
-    : name_(vertex_name + " + " + fragment_name) {
-  const GLuint vertex = Compile(GL_VERTEX_SHADER, vertex_name);
-  const GLuint fragment = Compile(GL_FRAGMENT_SHADER, fragment_name);
+ShaderProgram::ShaderProgram(const std::string& vertex_name, const std::string& fragment_name,
+                             const std::string& define)
+    : name_(vertex_name + " + " + fragment_name + (define.empty() ? "" : " " + define)) {
+  const GLuint vertex = Compile(GL_VERTEX_SHADER, vertex_name, define);
+  const GLuint fragment = Compile(GL_FRAGMENT_SHADER, fragment_name, define);
   id_ = glCreateProgram();
   glAttachShader(id_, vertex);
   glAttachShader(id_, fragment);
@@ -61,8 +68,7 @@ ShaderProgram::ShaderProgram(const std::string& vertex_name, const std::string& 
   if (ok != GL_TRUE) {
     const std::string log = InfoLog(id_, true);
     glDeleteProgram(id_);
-    throw Error("shader program '" + vertex_name + "' + '" + fragment_name +
-                "' failed to link: " + log);
+    throw Error("shader program '" + name_ + "' failed to link: " + log);
   }
   GLint count = 0;
   glGetProgramiv(id_, GL_ACTIVE_UNIFORMS, &count);
@@ -103,6 +109,8 @@ void ShaderProgram::Set(const char* name, const Eigen::Vector4f& value) const {
 void ShaderProgram::Set(const char* name, const Eigen::Vector3f& value) const {
   glUniform3fv(Location(name), 1, value.data());
 }
+
+void ShaderProgram::Set(const char* name, float value) const { glUniform1f(Location(name), value); }
 
 void ShaderProgram::Set(const char* name, int value) const { glUniform1i(Location(name), value); }
 

@@ -19,6 +19,15 @@ namespace urdfsnap::image {
 
 namespace {
 
+enum class DepthFormat { kMillimetrePng, kMetreNpy };
+
+// The format of the depth file `path` by its extension (in any letter case), checked as
+// CheckImageFileName checks --depth; throws naming `what` and the path.
+DepthFormat DepthFormatOf(const std::string& path, const std::string& what) {
+  CheckImageFileName(path, ImageKind::kDepth, what);
+  return LowerCaseExtension(path) == ".npy" ? DepthFormat::kMetreNpy : DepthFormat::kMillimetrePng;
+}
+
 std::string Bytes(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
 
 }  // namespace
@@ -33,10 +42,14 @@ Gray16Image DepthMillimetres(const DepthImage& depth) {
   return mm;
 }
 
-std::string EncodeDepth(const DepthImage& depth, const std::string& extension) {
-  if (extension == ".npy") return EncodeNpyFloat32(depth.width, depth.height, depth.metres);
-  if (extension == ".png") return Bytes(EncodeGray16Png(DepthMillimetres(depth)));
-  throw Error("a depth file ends in .png (16-bit millimetres) or .npy (float32 metres), not '" + extension + "'");
+std::string EncodeDepthFile(const DepthImage& depth, const std::string& path) {
+  switch (DepthFormatOf(path, "depth file")) {
+    case DepthFormat::kMetreNpy:
+      return EncodeNpyFloat32(depth.width, depth.height, depth.metres);
+    case DepthFormat::kMillimetrePng:
+      break;
+  }
+  return Bytes(EncodeGray16Png(DepthMillimetres(depth)));
 }
 
 std::string EncodeLabels(const LabelImage& labels) {
@@ -48,8 +61,7 @@ std::string LabelNamesFile(const std::string& path) {
 }
 
 void WriteDepthFile(const DepthImage& depth, const std::string& path) {
-  CheckImageFileName(path, ImageKind::kDepth, "depth file");
-  WriteFileAtomically(path, EncodeDepth(depth, LowerCaseExtension(path)));
+  WriteFileAtomically(path, EncodeDepthFile(depth, path));
 }
 
 std::string LabelNamesJson(const std::vector<std::string>& link_names) {

@@ -20,9 +20,10 @@ namespace urdfsnap::image {
 // Millimetres as the 16-bit depth PNG stores them (0 where there is no robot).
 Gray16Image DepthMillimetres(const DepthImage& depth);
 
-// The bytes of a depth file with `extension` (".png": 16-bit millimetres; ".npy": float32
-// metres). Throws urdfsnap::Error for another extension.
-std::string EncodeDepth(const DepthImage& depth, const std::string& extension);
+// The bytes of the depth file `path` (or of a numbered sequence's pattern such as depth/%05d.npy),
+// its format chosen by its extension: ".png", 16-bit millimetres; ".npy", float32 metres. The one
+// place that choice is made. Throws urdfsnap::Error naming the path for another extension.
+std::string EncodeDepthFile(const DepthImage& depth, const std::string& path);
 
 // The bytes of a 16-bit label PNG.
 std::string EncodeLabels(const LabelImage& labels);

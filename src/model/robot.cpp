@@ -52,6 +52,14 @@ std::vector<std::string> Robot::LinkNames() const {
   return names;
 }
 
+std::vector<int> Robot::ParentLinks() const {
+  std::vector<int> parents;
+  for (const Link& link : links_) {
+    parents.push_back(link.parent_joint >= 0 ? joints_[link.parent_joint].parent_link : -1);
+  }
+  return parents;
+}
+
 int Robot::FindJoint(std::string_view name) const { return IndexOfName(joints_, name); }
 
 std::vector<std::string> Robot::MovableJointNames() const {

@@ -103,6 +103,8 @@ class Robot {
 
   // Names of the links in links() order (the label image's order: label k is link k - 1).
   std::vector<std::string> LinkNames() const;
+  // Per link in links() order the index of its parent link, -1 for the root.
+  std::vector<int> ParentLinks() const;
 
   // Names of the joints a value moves (revolute, continuous, prismatic, not mimic), in
   // document order.

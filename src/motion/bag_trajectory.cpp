@@ -32,7 +32,9 @@ Trajectory ReadBagTrajectory(const std::string& path, const std::string& topic,
         *by_log_time ? static_cast<std::int64_t>(state.log_time) : state.message.StampNanoseconds(),
         state.message.names, state.message.positions, where);
   });
-  return std::move(tracks).Finish();
+  Trajectory trajectory = std::move(tracks).Finish();
+  trajectory.between = Between::kHold;   // recorded states: a player shows the latest one
+  return trajectory;
 }
 
 }  // namespace urdfsnap::motion

@@ -10,7 +10,8 @@
 namespace urdfsnap::motion {
 
 // Reads the JointStates on `topic` (see bag::ReadJointStates) into a trajectory whose times count
-// from the first message's header.stamp. When that stamp is zero (a publisher that does not stamp
+// from the first message's header.stamp, each position holding until the joint's next message
+// (Between::kHold). When that stamp is zero (a publisher that does not stamp
 // its messages) every message is timed by its log time instead, with a warning. Throws Error for
 // every problem of the bag and for messages JointStateTracks refuses, naming the message's number
 // on the topic and its log time.

@@ -107,7 +107,7 @@ std::vector<double> FramePoses::At(double t, Warnings& warnings) const {
   for (std::size_t i = 0; i < used_tracks_.size(); ++i) {
     const auto [lower, upper] = track_limits_[i];
     values[first_track_value_ + i].second =
-        std::clamp(PositionAt(trajectory_.tracks[used_tracks_[i]], t), lower, upper);
+        std::clamp(PositionAt(trajectory_.tracks[used_tracks_[i]], t, trajectory_.between), lower, upper);
   }
   return model::ResolveJointPositions(robot_, values, false, warnings);
 }

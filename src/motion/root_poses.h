@@ -3,6 +3,7 @@
 // robot drives across the grid as RViz shows it.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -16,16 +17,19 @@ class RootPoses {
  public:
   // `buffer`: the bag's transforms (tf::ReadBagTransforms of `bag`); `root`: the robot's root link;
   // `stamp_at_zero`: the stamp (seconds since 1970) of trajectory time 0. Throws urdfsnap::Error
-  // "--fixed-frame 'map': ..." when TF does not connect the fixed frame to the root.
-  RootPoses(tf::TfBuffer buffer, std::string fixed_frame, std::string root, double stamp_at_zero,
-            const std::string& bag);
+  // "--fixed-frame 'map': ..." (`option` naming the frame) when TF does not connect the fixed
+  // frame to the root. A camera's TF frame (animate's --camera-frame) is followed the same way.
+  RootPoses(std::shared_ptr<const tf::TfBuffer> buffer, std::string fixed_frame, std::string root, double stamp_at_zero,
+            const std::string& bag, const std::string& option = "--fixed-frame");
 
   // X_FR, the root's pose in the fixed frame at trajectory time `t` (seconds). Outside the
   // recorded transforms the nearest one holds, with one warning (the same for every frame).
   Eigen::Isometry3d At(double t, Warnings& warnings) const;
 
+  const std::string& root() const { return root_; }
+
  private:
-  tf::TfBuffer buffer_;
+  std::shared_ptr<const tf::TfBuffer> buffer_;
   std::string fixed_frame_, root_, bag_;
   double stamp_at_zero_;
 };

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "common/number_text.h"
+#include "common/internal/yaml_reader.h"
 #include "motion/joint_state_tracks.h"
 
 namespace urdfsnap::motion {
@@ -47,52 +47,11 @@ std::vector<Document> SplitDocuments(std::string_view text) {
   return documents;
 }
 
-// Reads nodes of one document with its lines counted in the whole file.
-class Reader {
+// Reads nodes of one document with its lines counted in the whole file (common's YamlReader), and
+// ROS times.
+class Reader : public YamlReader {
  public:
-  Reader(const std::string& path, int first_line) : path_(path), first_line_(first_line) {}
-
-  int Line(const YAML::Node& node) const { return first_line_ + node.Mark().line; }
-  SourceLocation Where(const YAML::Node& node) const { return {path_, Line(node)}; }
-
-  [[noreturn]] void Fail(const YAML::Node& node, const std::string& what) const {
-    throw Error(Where(node), what);
-  }
-
-  // `map[key]`, which must be there.
-  YAML::Node Field(const YAML::Node& map, const char* key, const char* of) const {
-    // (yaml-cpp throws for a key looked up in a scalar or list: found by fuzzing)
-    if (!map.IsMap()) Fail(map, std::string(of) + " is not a map");
-    const YAML::Node value = map[key];
-    if (!value) Fail(map, std::string(of) + " has no '" + key + "'");
-    return value;
-  }
-
-  double Number(const YAML::Node& node, const std::string& what) const {
-    double value = 0;
-    if (!node.IsScalar() || !ParseNumber(node.Scalar(), value)) {
-      const std::string text = node.IsScalar() ? "'" + node.Scalar() + "'" : "a list or map";
-      Fail(node, what + ": expected a finite number, got " + text);
-    }
-    return value;
-  }
-
-  std::vector<std::string> Names(const YAML::Node& list, const char* what) const {
-    if (!list.IsSequence()) Fail(list, std::string("'") + what + "' is not a list of names");
-    std::vector<std::string> names;
-    for (const YAML::Node& item : list) {
-      if (!item.IsScalar()) Fail(item, std::string("'") + what + "' holds something not a name");
-      names.push_back(item.Scalar());
-    }
-    return names;
-  }
-
-  std::vector<double> Numbers(const YAML::Node& list, const char* what) const {
-    if (!list.IsSequence()) Fail(list, std::string("'") + what + "' is not a list of numbers");
-    std::vector<double> numbers;
-    for (const YAML::Node& item : list) numbers.push_back(Number(item, what));
-    return numbers;
-  }
+  using YamlReader::YamlReader;
 
   // A builtin_interfaces/Time or Duration ({sec, nanosec}, or ROS 1's {secs, nsecs}), or seconds,
   // in nanoseconds.
@@ -114,10 +73,6 @@ class Reader {
     return static_cast<std::int64_t>(sec) * kNanosecondsPerSecond +
            static_cast<std::int64_t>(nanosec);
   }
-
- private:
-  const std::string& path_;
-  int first_line_;
 };
 
 enum class Kind { kNone, kTrajectory, kJointStates };
@@ -206,7 +161,7 @@ Trajectory ParseRosMessageTrajectory(std::string_view text, const std::string& p
     const Reader reader(path, document.first_line);
     // yaml-cpp's exceptions (bad syntax, and any a lookup throws) become located errors
     try {
-      const YAML::Node root = YAML::Load(std::string(document.text));
+      const YAML::Node root = reader.Load(std::string(document.text));
       if (!root || root.IsNull()) continue;
       if (root.IsSequence()) {
         for (const YAML::Node& message : root) add_message(reader, message);

@@ -2,7 +2,7 @@
 // time, read from a CSV table, a JointTrajectory (MoveIt's plans), a stream of JointState messages
 // or a bag. Joints keep their own sample times, so messages that name different joints (an arm's
 // and a gripper's publisher on one topic) make one trajectory. Positions between samples are
-// interpolated linearly.
+// interpolated linearly, or, for a recording, hold until the next sample.
 #pragma once
 
 #include <optional>
@@ -15,6 +15,12 @@ namespace urdfsnap::motion {
 enum class TimeBase {
   kSeconds,  // seconds from the trajectory's start
   kRows,     // row numbers 0, 1, 2, ... of a table without a time column: one row per frame
+};
+
+// What a position between two samples is.
+enum class Between {
+  kLinear,  // interpolated linearly: a plan's waypoints, a table
+  kHold,    // the earlier sample's: a recording, as a player shows the latest message at or before t
 };
 
 // The samples of one joint; times strictly increase, positions are finite.
@@ -34,13 +40,15 @@ struct Trajectory {
   // for messages timed by their stamps (JointState streams, bags): the stamp of time 0, in
   // seconds since 1970
   std::optional<double> stamp_at_zero;
+  Between between = Between::kLinear;
 
   // The latest sample time over all tracks (0 for a trajectory of one instant).
   double EndTime() const;
 };
 
-// The position of `track` at time `t`: linear between the two samples around t, the first
-// sample's position before it and the last sample's after it. `track` must have samples.
-double PositionAt(const JointTrack& track, double t);
+// The position of `track` at time `t`: between the two samples around t as `between` says (a
+// sample within a nanosecond after t counts as at t), the first sample's position before it and
+// the last sample's after it. `track` must have samples.
+double PositionAt(const JointTrack& track, double t, Between between = Between::kLinear);
 
 }  // namespace urdfsnap::motion

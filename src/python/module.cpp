@@ -65,8 +65,10 @@ void Warn(const Warnings& warnings) {
 }
 
 // An H×W×3 uint8 array (or a PNG file's path) as an image; throws urdfsnap::Error naming `role`.
+bool IsPath(const py::object& value) { return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__"); }
+
 image::Image ImageFrom(const py::object& value, const char* role) {
-  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) return image::ReadPng(PathText(value));
+  if (IsPath(value)) return image::ReadPng(PathText(value));
   const auto array = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(value);
   if (!array || array.ndim() != 3 || array.shape(2) != 3) {
     throw Error(std::string(role) + ": expected an H×W×3 uint8 array (or a PNG file's path)");
@@ -90,9 +92,10 @@ py::bytes PngBytes(const image::Image& image) {
   return py::bytes(reinterpret_cast<const char*>(png.data()), png.size());
 }
 
-// Robot.render's result with depth or labels: the arrays, and label index → link name.
+// Robot.render's result with depth, labels, mask or keypoints: the arrays, label index → link
+// name, and the keypoints file's contents.
 struct RenderResult {
-  py::object color, depth, labels;
+  py::object color, depth, labels, mask, keypoints;
   py::list label_names;
 };
 
@@ -183,7 +186,7 @@ class Robot {
                     std::vector<py::ssize_t> batch, py::object out, Warnings& warnings) {
     const render::RenderSettings settings = session_->Settings(call, warnings);
     const std::optional<gl::Backend> backend = BackendKeyword(call.gl_backend);
-    const bool depth = call.depth, labels = call.labels;
+    const bool depth = call.depth, labels = call.labels, mask = call.extras.mask, keypoints = call.extras.keypoints;
     const py::ssize_t h = settings.size.height, w = settings.size.width;
     const auto shape = [&](std::vector<py::ssize_t> image) {
       image.insert(image.begin(), batch.begin(), batch.end());
@@ -201,21 +204,28 @@ class Robot {
     py::array_t<std::uint8_t> color = out.is_none() ? py::array_t<std::uint8_t>(shape({h, w, 3})) : checked_out();
     py::array_t<float> depths(depth ? shape({h, w}) : std::vector<py::ssize_t>{0});
     py::array_t<std::uint16_t> label_image(labels ? shape({h, w}) : std::vector<py::ssize_t>{0});
+    py::array_t<std::uint8_t> masks(mask ? shape({h, w}) : std::vector<py::ssize_t>{0});
     std::uint8_t* color_data = color.mutable_data();
     float* depth_data = depths.mutable_data();
     std::uint16_t* label_data = label_image.mutable_data();
+    std::uint8_t* mask_data = masks.mutable_data();
+    std::vector<std::string> keypoint_files(poses.size());
     image::Frame one;
     {
       py::gil_scoped_release released;
       std::lock_guard lock(session_->mutex());
-      session_->Render(settings, backend, poses, {true, depth, labels}, [&](size_t k, image::Frame&& frame) {
+      session_->Render(settings, backend, poses, {true, depth, labels}, call.extras,
+                       [&](size_t k, image::Frame&& frame, dataset::FrameExtras&& extras) {
+        keypoint_files[k] = std::move(extras.keypoints);
         if (single) {
           one = std::move(frame);
+          if (mask) std::memcpy(mask_data, extras.mask.values.data(), h * w);
           return;
         }
         std::memcpy(color_data + k * h * w * 3, frame.colour.rgb.data(), frame.colour.rgb.size());
         if (depth) std::memcpy(depth_data + k * h * w, frame.depth.metres.data(), h * w * sizeof(float));
         if (labels) std::memcpy(label_data + k * h * w, frame.labels.labels.data(), h * w * sizeof(std::uint16_t));
+        if (mask) std::memcpy(mask_data + k * h * w, extras.mask.values.data(), h * w);
       }, warnings);
     }
     if (single) {
@@ -223,9 +233,17 @@ class Robot {
       if (depth) depths = ArrayOf(std::move(one.depth.metres), {h, w});
       if (labels) label_image = ArrayOf(std::move(one.labels.labels), {h, w});
     }
-    if (!depth && !labels) return color;
+    if (!depth && !labels && !mask && !keypoints) return color;
+    // the keypoints file's contents, as json.load reads `render --keypoints`'s file
+    py::object keypoint_dicts = py::none();
+    if (keypoints) {
+      const py::object loads = py::module_::import("json").attr("loads");
+      py::list dicts;
+      for (const std::string& text : keypoint_files) dicts.append(loads(text));
+      keypoint_dicts = single ? dicts[0] : py::object(dicts);
+    }
     RenderResult result{color, depth ? py::object(depths) : py::none(), labels ? py::object(label_image) : py::none(),
-                        py::list()};
+                        mask ? py::object(masks) : py::none(), keypoint_dicts, py::list()};
     result.label_names.append("");
     for (const model::Link& link : session_->robot().links()) result.label_names.append(link.name);
     return py::cast(std::move(result));
@@ -270,14 +288,18 @@ RenderCall CallFrom(const py::kwargs& kwargs, const char* function) {
   std::map<std::string, std::string request::RenderRequest::*> numbers{
       {"yaw", &request::RenderRequest::yaw}, {"pitch", &request::RenderRequest::pitch},
       {"distance", &request::RenderRequest::distance}, {"fov", &request::RenderRequest::fov},
-      {"alpha", &request::RenderRequest::alpha}, {"tf_scale", &request::RenderRequest::tf_scale}};
+      {"alpha", &request::RenderRequest::alpha}, {"tf_scale", &request::RenderRequest::tf_scale},
+      {"near", &request::RenderRequest::near}, {"far", &request::RenderRequest::far},
+      {"underlay_alpha", &request::RenderRequest::underlay_alpha}};
   std::map<std::string, bool*> flags{{"fit", &r.fit}, {"tf", &r.tf}, {"collision", &r.collision},
                                      {"allow_missing_meshes", &r.allow_missing_meshes},
-                                     {"depth", &call.depth}, {"labels", &call.labels}};
+                                     {"depth", &call.depth}, {"labels", &call.labels}, {"distort", &r.distort},
+                                     {"mask", &call.extras.mask}, {"keypoints", &call.extras.keypoints}};
   std::map<std::string, bool*> negated{{"grid", &r.no_grid}, {"visual", &r.no_visual}, {"antialias", &r.no_aa},
                                        {"clamp", &r.no_clamp}};
-  for (const auto& [key, value] : kwargs) {
+  for (const auto& [key, item] : kwargs) {
     const std::string name = py::str(key);
+    const py::object value = py::reinterpret_borrow<py::object>(item);
     if (numbers.count(name)) r.*numbers[name] = FormatNumber(value.cast<double>());
     else if (flags.count(name)) *flags[name] = value.cast<bool>();
     else if (negated.count(name)) *negated[name] = !value.cast<bool>();
@@ -286,6 +308,17 @@ RenderCall CallFrom(const py::kwargs& kwargs, const char* function) {
     // R, G, B from 0 to 255, or a colour as --background takes it ("white", "#RRGGBB")
     else if (name == "background") r.background = py::isinstance<py::str>(value) ? value.cast<std::string>() : NumbersText(value, ",");
     else if (name == "fixed_frame") r.fixed_frame = value.cast<std::string>();
+    else if (name == "camera_info") r.camera_info = PathText(value);
+    else if (name == "camera_frame") r.camera_frame = value.cast<std::string>();
+    else if (name == "camera_pose") r.camera_pose = NumbersText(value, ",");
+    // a PNG file's path, or the image itself as an H×W×3 array
+    else if (name == "underlay") {
+      if (IsPath(value)) r.underlay = PathText(value);
+      else call.underlay = ImageFrom(value, "underlay");
+    } else if (name == "mask_dilate") {
+      call.extras.mask_dilate = value.cast<int>();
+      dataset::CheckMaskDilate(call.extras.mask_dilate, "mask_dilate");
+    }
     else if (name == "gl_backend") call.gl_backend = value.cast<std::string>();
     else throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
   }
@@ -337,6 +370,10 @@ PYBIND11_MODULE(_urdfsnap, m) {
                     "H×W float32, metres along the viewing axis, NaN off the robot; None unless depth=True")
       .def_readonly("labels", &RenderResult::labels,
                     "H×W uint16, 1 + the index of the link seen (Robot.links order), 0 off the robot; None unless labels=True")
+      .def_readonly("mask", &RenderResult::mask,
+                    "H×W uint8, 255 on the robot (grown by mask_dilate pixels), 0 elsewhere; None unless mask=True")
+      .def_readonly("keypoints", &RenderResult::keypoints,
+                    "the keypoints file's contents as a dict (a list of them from render_many); None unless keypoints=True")
       .def_readonly("label_names", &RenderResult::label_names, "label value → link name ('' for 0)")
       .def("_repr_png_", [](const RenderResult& r) -> py::object {
         if (py::array(r.color).ndim() != 3) return py::none();

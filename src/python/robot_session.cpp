@@ -2,6 +2,9 @@
 // once, the robot prepared once per display setting, one GL renderer per multisampling mode and backend.
 #include "python/robot_session.h"
 
+#include <algorithm>
+
+#include "common/error.h"
 #include "request/settings_parsing.h"
 
 namespace urdfsnap::python {
@@ -16,7 +19,19 @@ std::optional<gl::Backend> BackendKeyword(const std::string& name) {
 render::RenderSettings RobotSession::Settings(const RenderCall& call, Warnings& warnings) const {
   request::RenderRequest request = call.request;
   request.model = model_;
-  return request::ParseRenderSettings(request, [](std::string_view keyword) { return std::string(keyword); }, warnings);
+  // the keyword's name: tf_scale for --tf-scale
+  const request::OptionLabel keyword = [](std::string_view option) {
+    std::string name(option);
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+  };
+  render::RenderSettings settings = request::ParseRenderSettings(request, keyword, warnings);
+  if (call.underlay) {
+    if (!settings.camera) throw Error("underlay needs a camera: camera_info, camera_frame or camera_pose");
+    settings.camera->underlay = std::make_shared<const image::Image>(*call.underlay);
+    settings.camera->underlay_file = "underlay";
+  }
+  return settings;
 }
 
 RobotSession::RobotSession(request::ModelRequest model)

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common/warnings.h"
+#include "dataset/frame_extras.h"
 #include "gl/backend.h"
 #include "gl/scene_renderer.h"
 #include "image/image.h"
@@ -36,6 +37,8 @@ namespace urdfsnap::python {
 struct RenderCall {
   request::RenderRequest request;   // its model is filled in by RobotSession::Settings
   bool depth = false, labels = false;
+  dataset::ExtrasWanted extras;     // mask, keypoints
+  std::optional<image::Image> underlay;   // a camera image given as an array (else request.underlay's file)
   std::string gl_backend = "auto";
 };
 
@@ -56,21 +59,24 @@ class RobotSession {
   const std::vector<std::string>& movable_joints() const { return movable_joints_; }
 
   // The settings `call` asks for, for this robot, as `urdfsnap render` parses its options (RViz's
-  // defaults, an .rviz file, the options given). Throws urdfsnap::Error naming the keyword
-  // ("distance '0': expected a value from 0.01 to 1000000"); warnings go to `warnings`.
+  // defaults, an .rviz file, the options given), with call.underlay as the camera's image. Throws
+  // urdfsnap::Error naming the keyword ("distance '0': expected a value from 0.01 to 1000000");
+  // warnings go to `warnings`.
   render::RenderSettings Settings(const RenderCall& call, Warnings& warnings) const;
 
   // One position per robot().joints() for the values `given` (names checked, limits clamped
   // unless `clamp` is false, mimic joints following), as `urdfsnap render -j` resolves them.
   std::vector<double> Positions(const model::NamedValues& given, bool clamp, Warnings& warnings) const;
 
-  // Draws each of `poses` (from Positions) with `settings`; `fit` frames all poses with one
-  // camera, as animate does. `deliver(k, frame)` receives each frame. Does no file I/O after the
-  // first call for a display setting (meshes are loaded once).
+  // Draws each of `poses` (from Positions) with `settings`: through settings.camera when set, else
+  // the orbit view, `fit` framing all poses with one camera, as animate does. `deliver(k, frame,
+  // extras)` receives each frame with the mask and keypoints `extras` asks for (the keypoints
+  // through the orbit view as a camera when no camera is set). Does no file I/O after the first
+  // call for a display setting (meshes are loaded once).
   template <typename Deliver>
   void Render(const render::RenderSettings& settings, std::optional<gl::Backend> backend,
               const std::vector<std::vector<double>>& poses, const image::FrameOutputs& outputs,
-              Deliver&& deliver, Warnings& warnings);
+              const dataset::ExtrasWanted& extras, Deliver&& deliver, Warnings& warnings);
 
   std::mutex& mutex() { return mutex_; }
 
@@ -94,17 +100,26 @@ class RobotSession {
 template <typename Deliver>
 void RobotSession::Render(const render::RenderSettings& settings, std::optional<gl::Backend> backend,
                           const std::vector<std::vector<double>>& poses, const image::FrameOutputs& outputs,
-                          Deliver&& deliver, Warnings& warnings) {
+                          const dataset::ExtrasWanted& extras, Deliver&& deliver, Warnings& warnings) {
   const render::RobotRenderer& renderer = RendererFor(settings.scene, warnings);
-  const scene::OrbitView view = renderer.FitView(settings.fit, settings.fit_margin, settings.view, settings.size,
-                                                 static_cast<int>(poses.size()), [&](int k) { return poses[k]; });
+  render::RenderSettings drawn = settings;
+  drawn.view = renderer.FitView(settings.fit, settings.fit_margin, settings.view, settings.size,
+                                static_cast<int>(poses.size()), [&](int k) { return poses[k]; });
+  drawn.fit = render::Fit::kNone;
+  const render::CameraSettings camera =
+      drawn.camera ? *drawn.camera : render::OrbitCamera(drawn.view, drawn.size.width, drawn.size.height);
+  const image::FrameOutputs needed = dataset::OutputsFor(outputs, extras);
   gl::SceneRenderer& gl = GlFor(settings.samples, backend);
   // the next call, or the destructor, may come from another thread
   struct Release {
     gl::SceneRenderer& gl;
     ~Release() { gl.ReleaseContext(); }
   } release{gl};
-  for (size_t k = 0; k < poses.size(); ++k) deliver(k, renderer.Render(gl, poses[k], view, settings.size, outputs));
+  for (size_t k = 0; k < poses.size(); ++k) {
+    image::Frame frame = renderer.Render(gl, poses[k], drawn, needed);
+    dataset::FrameExtras made = dataset::MakeFrameExtras(extras, renderer, poses[k], camera, frame);
+    deliver(k, std::move(frame), std::move(made));
+  }
 }
 
 }  // namespace urdfsnap::python

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
+#include "display/display_settings.h"
 #include "render/camera_settings.h"
 #include "scene/orbit_view.h"
 #include "scene/scene_options.h"
@@ -40,11 +42,17 @@ struct FitMargin {
 struct RenderSettings {
   scene::SceneOptions scene;   // displays, fixed frame, background, where files are found
   scene::OrbitView view;       // the camera
+  // the frame whose origin the view's focal point is relative to (RViz's Target Frame); "" for the
+  // fixed frame
+  std::string target_frame;
   ImageSize size;
   int samples = 4;             // multisampling per pixel, 4 as RViz requests; 0 = off
   Fit fit = Fit::kNone;
   FitMargin fit_margin;
   std::optional<CameraSettings> camera;   // when set, seen through it instead of `view`, at its size
+  // the message displays (Marker, Path, ...) of the .rviz file and --display, drawn from a bag's
+  // or a message file's messages (display/display_set.h)
+  std::vector<display::DisplaySettings> displays;
 };
 
 }  // namespace urdfsnap::render

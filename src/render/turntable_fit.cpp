@@ -1,7 +1,9 @@
-// FitTurntable: the bounds' centre for the focal point, one fit per yaw for the distance.
+// FitTurntable: the bounds' centre for the focal point, then the distance from every yaw, each pose
+// placed once for the frames that show it.
 #include "render/turntable_fit.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "scene/view_fitting.h"
 
@@ -20,15 +22,18 @@ scene::OrbitView FitTurntable(const RobotRenderer& robot, Fit fit, const FitMarg
     if (!centre) return view;
     fitted.focal = *centre;
   }
+  // frames showing the same pose at the same place (all of a still turntable) share one scene
+  const double aspect = static_cast<double>(size.width) / size.height;
   double distance = 0;
-  for (int k = 0; k < count; ++k) {
+  for (int k = 0; k < count;) {
     const std::vector<double> positions = pose(k);
     const Eigen::Isometry3d placed = X_SF(k);
-    scene::OrbitView side = fitted;
-    side.yaw = yaw(k);
-    side = robot.FitView(Fit::kKeepFocal, margin, side, size, 1, [&](int) { return positions; },
-                         [&](int) { return placed; });
-    distance = std::max(distance, side.distance);
+    std::vector<double> yaws{yaw(k)};
+    for (++k; k < count && pose(k) == positions && (!place || place(k).matrix() == placed.matrix()); ++k) {
+      yaws.push_back(yaw(k));
+    }
+    distance =
+        std::max(distance, scene::FitDistance(robot.Pose(positions, placed), fitted, yaws, aspect, margin.For(size)));
   }
   if (distance > 0) fitted.distance = distance;
   return fitted;

@@ -1,4 +1,5 @@
-// ParseCameraSettings: camera options to a camera::CameraModel, a pose and an underlay image.
+// ReadCameraFiles and ParseCameraSettings: camera options to a camera::CameraModel, a pose and an
+// underlay image.
 #include "request/camera_parsing.h"
 
 #include <algorithm>
@@ -33,8 +34,17 @@ Eigen::Isometry3d ParsePose(const std::string& text, const std::string& option) 
 
 }  // namespace
 
-std::optional<render::CameraSettings> ParseCameraSettings(const RenderRequest& r, const OptionLabel& label,
-                                                          render::RenderSettings& settings) {
+CameraFiles ReadCameraFiles(const RenderRequest& r) {
+  CameraFiles files;
+  // without a camera an underlay is an error of the options (ParseCameraSettings), not a file to read
+  if (r.camera_info.empty() && r.camera_frame.empty() && r.camera_pose.empty()) return files;
+  if (!r.camera_info.empty()) files.info = camera::ReadCameraInfo(r.camera_info);
+  if (!r.underlay.empty()) files.underlay = std::make_shared<const image::Image>(image::ReadPng(r.underlay));
+  return files;
+}
+
+std::optional<render::CameraSettings> ParseCameraSettings(const RenderRequest& r, const CameraFiles& files,
+                                                          const OptionLabel& label, render::RenderSettings& settings) {
   if (r.camera_info.empty() && r.camera_frame.empty() && r.camera_pose.empty()) {
     for (const auto& [given, name] : {std::pair{!r.near.empty(), "near"}, {!r.far.empty(), "far"},
                                       {r.distort, "distort"}, {!r.underlay.empty(), "underlay"},
@@ -58,18 +68,17 @@ std::optional<render::CameraSettings> ParseCameraSettings(const RenderRequest& r
   }
 
   render::CameraSettings camera;
-  if (!r.camera_info.empty()) {
-    const camera::CameraInfo info = camera::ReadCameraInfo(r.camera_info);
-    camera.model = std::make_shared<const camera::CameraModel>(info, r.distort, clipping);
-    settings.size = {info.width, info.height};
+  if (files.info) {
+    camera.model = std::make_shared<const camera::CameraModel>(*files.info, r.distort, clipping);
+    settings.size = {files.info->width, files.info->height};
   } else {
     camera.model = std::make_shared<const camera::CameraModel>(settings.view.fov_y, settings.size.width,
                                                                settings.size.height, clipping);
   }
   camera.frame = r.camera_frame;
   if (!r.camera_pose.empty()) camera.pose = ParsePose(r.camera_pose, label("camera-pose"));
-  if (!r.underlay.empty()) {
-    camera.underlay = std::make_shared<const image::Image>(image::ReadPng(r.underlay));
+  if (files.underlay) {
+    camera.underlay = files.underlay;
     camera.underlay_file = r.underlay;
   }
   if (!r.underlay_alpha.empty()) camera.overlay_alpha = ParseInRange(r.underlay_alpha, label("underlay-alpha"), 0, 1);

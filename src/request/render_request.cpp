@@ -32,6 +32,12 @@ const std::array kTextOptions{
                "link whose frame the scene is shown in (RViz default 'map', which a URDF has not: "
                "here the root link)",
                &R::fixed_frame, false},
+    TextOption{"follow",
+               "frame the orbit view's focal point follows (RViz's Target Frame): the focal point is "
+               "taken relative to the frame's origin (not its rotation), which animate and render "
+               "--bag move over time; a link, or with a bag any frame its TF names (default: the "
+               "fixed frame)",
+               &R::follow, false},
     TextOption{"background", "background colour: R,G,B 0-255, #RRGGBB or a name such as white (RViz default 48,48,48)", &R::background,
                false},
     TextOption{"alpha", "RobotModel alpha, 0 to 1 (RViz default 1)", &R::alpha, false},

@@ -21,6 +21,7 @@ struct RenderRequest {
   std::string rviz;
   std::string yaw, pitch, distance, focal, fov;
   std::string fixed_frame, background, alpha, tf_scale;
+  std::string follow;   // the orbit view's Target Frame
   bool fit = false;
   std::string fit_margin;
   bool collision = false, no_visual = false, no_grid = false;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "common/error.h"
+#include "model/forward_kinematics.h"
 #include "model/joint_values.h"
 
 namespace urdfsnap::request {
@@ -65,6 +66,27 @@ gl::SceneRenderer& RenderSession::GlRenderer(int samples) {
   return *renderer;
 }
 
+namespace {
+
+// The view's Target Frame (--follow, an .rviz view's): the focal point relative to that link's
+// origin in this pose. A frame the robot lacks is an error given on the command line, and from
+// an .rviz file a warning (RViz would look it up in TF, which a still without a bag has not).
+void FollowTargetFrame(const ResolvedRequest& r, const render::RobotRenderer& renderer,
+                       const std::vector<double>& positions, render::RenderSettings& settings, Warnings& warnings) {
+  if (settings.target_frame.empty()) return;
+  const model::Robot& robot = renderer.robot();
+  const int link = robot.FindLink(settings.target_frame);
+  if (link < 0) {
+    const std::string problem = "'" + settings.target_frame + "' is not a link of robot '" + robot.name() + "'";
+    if (r.target_frame_given) throw Error("--follow " + problem + " (frames outside it are followed with --bag)");
+    warnings.Add(r.rviz + ": the view's Target Frame " + problem + "; the view orbits in the fixed frame");
+    return;
+  }
+  settings.view.focal += renderer.scene().LinkPoses(model::ComputeLinkPoses(robot, positions))[link].translation();
+}
+
+}  // namespace
+
 Prepared RenderSession::Prepare(const ResolvedRequest& r, Warnings& warnings) {
   const Model& model = LoadedModelFor(r.model);
   const model::Robot& robot = *model.loaded.robot;
@@ -80,6 +102,7 @@ Prepared RenderSession::Prepare(const ResolvedRequest& r, Warnings& warnings) {
   std::vector<double> positions = model::ResolveJointPositions(robot, r.joints, r.clamp, warnings);
   const Robot& prepared = RobotFor(r.model, model, settings.scene);
   AddAll(prepared.warnings, warnings);
+  FollowTargetFrame(r, *prepared.renderer, positions, settings, warnings);
   settings.view = prepared.renderer->FitView(settings.fit, settings.fit_margin, settings.view, settings.size, 1,
                                              [&](int) { return positions; });
   settings.fit = render::Fit::kNone;

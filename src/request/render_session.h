@@ -58,8 +58,8 @@ class RenderSession {
 
   // Prepares `request`: the model loaded (cached), an .rviz fixed frame outside the robot replaced
   // by the root link (with a warning), the joint values resolved (clamped unless asked not to),
-  // the robot prepared for the displays (cached), and settings.fit applied to the view for these
-  // positions. Warnings (the model's, clamped joints, ...) go to `warnings`. Throws
+  // the robot prepared for the displays (cached), the focal point moved to the target frame's
+  // origin (a link; settings.target_frame) and settings.fit applied to the view for these positions. Warnings (the model's, clamped joints, ...) go to `warnings`. Throws
   // urdfsnap::Error for an unreadable model or mesh file, an unknown joint, ...
   Prepared Prepare(const ResolvedRequest& request, Warnings& warnings);
 

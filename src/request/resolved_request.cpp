@@ -7,6 +7,7 @@ RequestFiles ReadRequestFiles(const RenderRequest& r, Warnings& warnings) {
   RequestFiles files;
   files.base = ReadBaseSettings(r, warnings);
   if (!r.joint_file.empty()) files.joint_file = model::ReadJointFile(r.joint_file);
+  files.camera = ReadCameraFiles(r);
   return files;
 }
 
@@ -20,11 +21,12 @@ ResolvedRequest ResolveRequest(const RenderRequest& r, const RequestFiles& files
   ResolvedRequest resolved;
   resolved.model = r.model;
   resolved.settings = files.base;
-  ApplyOptions(r, label, resolved.settings);
+  ApplyOptions(r, files.camera, label, resolved.settings);
   resolved.joints = GivenJoints(files.joint_file, r);
   resolved.clamp = !r.no_clamp;
   resolved.rviz = r.rviz;
   resolved.fixed_frame_given = !r.fixed_frame.empty();
+  resolved.target_frame_given = !r.follow.empty();
   return resolved;
 }
 

@@ -1,7 +1,7 @@
 // A request with its text resolved into types: the model to load, the render settings (the .rviz
 // file and the options applied, --fit not yet done: that needs the robot), and the joint values
-// given (the joint file's, then -j's). Resolving reads the request's own files (.rviz, joint file)
-// once; RequestFiles keeps them so that many requests over the same files (the live view's
+// given (the joint file's, then -j's). Resolving reads the request's own files (.rviz, joint file,
+// camera info, underlay) once; RequestFiles keeps them so that many requests over the same files (the live view's
 // queries) read none.
 #pragma once
 
@@ -10,6 +10,7 @@
 #include "common/warnings.h"
 #include "model/joint_values.h"
 #include "render/render_settings.h"
+#include "request/camera_parsing.h"
 #include "request/model_request.h"
 #include "request/render_request.h"
 #include "request/settings_parsing.h"
@@ -23,15 +24,18 @@ struct ResolvedRequest {
   bool clamp = true;                // joint values beyond a joint's limits are clamped (not --no-clamp)
   std::string rviz;                 // the .rviz file the settings came from, for its warnings
   bool fixed_frame_given = false;   // --fixed-frame was given (an .rviz frame is only a default)
+  bool target_frame_given = false;  // --follow was given (likewise)
 };
 
 // What a request's files say, read once.
 struct RequestFiles {
   render::RenderSettings base;   // RViz's defaults with the .rviz file applied
   model::NamedValues joint_file; // the joint file's values (none without a joint file)
+  CameraFiles camera;            // --camera-info's calibration, --underlay's image
 };
 
-// Reads the request's .rviz and joint files. Throws urdfsnap::Error for an unreadable one.
+// Reads the request's .rviz, joint, camera info and underlay files. Throws urdfsnap::Error for an
+// unreadable or bad one.
 RequestFiles ReadRequestFiles(const RenderRequest& request, Warnings& warnings);
 
 // The joint values a request gives: the joint file's (`joint_file`), then -j's, in that order so

@@ -9,7 +9,7 @@
 namespace urdfsnap::request {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, DisplayClass>, 8> kDisplayClasses = {{
+constexpr std::array<std::pair<std::string_view, DisplayClass>, 22> kDisplayClasses = {{
     {"rviz/Grid", DisplayClass::kGrid},
     {"rviz_default_plugins/Grid", DisplayClass::kGrid},
     {"rviz/RobotModel", DisplayClass::kRobotModel},
@@ -18,6 +18,20 @@ constexpr std::array<std::pair<std::string_view, DisplayClass>, 8> kDisplayClass
     {"rviz_default_plugins/TF", DisplayClass::kTf},
     {"rviz/Group", DisplayClass::kGroup},
     {"rviz_common/Group", DisplayClass::kGroup},
+    {"rviz/Marker", DisplayClass::kMarker},
+    {"rviz_default_plugins/Marker", DisplayClass::kMarker},
+    {"rviz/MarkerArray", DisplayClass::kMarkerArray},
+    {"rviz_default_plugins/MarkerArray", DisplayClass::kMarkerArray},
+    {"rviz/Path", DisplayClass::kPath},
+    {"rviz_default_plugins/Path", DisplayClass::kPath},
+    {"rviz/PoseArray", DisplayClass::kPoseArray},
+    {"rviz_default_plugins/PoseArray", DisplayClass::kPoseArray},
+    {"rviz/Axes", DisplayClass::kAxes},
+    {"rviz_default_plugins/Axes", DisplayClass::kAxes},
+    {"rviz/PointCloud2", DisplayClass::kPointCloud2},
+    {"rviz_default_plugins/PointCloud2", DisplayClass::kPointCloud2},
+    {"rviz/LaserScan", DisplayClass::kLaserScan},
+    {"rviz_default_plugins/LaserScan", DisplayClass::kLaserScan},
 }};
 
 }  // namespace

@@ -14,6 +14,13 @@ enum class DisplayClass {
   kRobotModel,  // rviz/RobotModel, rviz_default_plugins/RobotModel
   kTf,          // rviz/TF, rviz_default_plugins/TF
   kGroup,       // rviz/Group, rviz_common/Group: holds further displays
+  kMarker,      // rviz/Marker, rviz_default_plugins/Marker
+  kMarkerArray, // rviz/MarkerArray, rviz_default_plugins/MarkerArray
+  kPath,        // rviz/Path, rviz_default_plugins/Path
+  kPoseArray,   // rviz/PoseArray, rviz_default_plugins/PoseArray
+  kAxes,        // rviz/Axes, rviz_default_plugins/Axes
+  kPointCloud2, // rviz/PointCloud2, rviz_default_plugins/PointCloud2
+  kLaserScan,   // rviz/LaserScan, rviz_default_plugins/LaserScan
   kOther,       // anything else: a display urdfsnap does not draw
 };
 

@@ -17,68 +17,13 @@
 #include "common/internal/yaml_section.h"
 #include "common/number_text.h"
 #include "request/rviz_class_names.h"
+#include "request/internal/rviz_displays.h"
+#include "request/internal/rviz_properties.h"
 
 namespace urdfsnap::request {
 namespace {
 
-// What a frame property holds when it follows the fixed frame
-// (TfFrameProperty::FIXED_FRAME_STRING, src/rviz/properties/tf_frame_property.cpp).
-constexpr const char* kFixedFrameString = "<Fixed Frame>";
-
 using Section = YamlSection;
-
-std::string_view Trimmed(std::string_view text) {
-  const size_t begin = text.find_first_not_of(' ');
-  if (begin == std::string_view::npos) return {};
-  return text.substr(begin, text.find_last_not_of(' ') - begin + 1);
-}
-
-// A section of the file: RViz saves a property with sub-properties as a map with its "Value".
-Section RvizSection(const std::string& path, const YAML::Node& map, const std::string& name) {
-  return Section(path, map, name, Section::Values::kRvizProperties);
-}
-
-// A TF frame name; RViz drops a leading '/' (TfFrameProperty::setValue, tf_frame_property.cpp).
-void ReadFrame(const Section& section, const char* key, std::string& out) {
-  section.ReadString(key, out);
-  if (!out.empty() && out.front() == '/') out.erase(0, 1);
-}
-
-// ColorProperty's "R; G; B" with each integer limited to 0..255 (parseColor, parse_color.cpp).
-void ReadColour(const Section& section, const char* key, Eigen::Vector3f& out) {
-  const YAML::Node node = section.Value(key);
-  if (!node.IsDefined()) return;
-  const char* expected = "a colour \"R; G; B\" (three integers)";
-  if (!node.IsScalar()) section.Fail(key, expected);
-  const std::string_view text = node.Scalar();
-  Eigen::Vector3f colour;
-  size_t begin = 0;
-  for (int i = 0; i < 3; ++i) {
-    const size_t end = i < 2 ? text.find(';', begin) : text.size();
-    int value = 0;
-    if (end == std::string_view::npos || !ParseInteger(Trimmed(text.substr(begin, end - begin)), value)) {
-      section.Fail(key, expected);
-    }
-    colour[i] = static_cast<float>(std::clamp(value, 0, 255)) / 255.f;
-    begin = end + 1;
-  }
-  out = colour;
-}
-
-// VectorProperty's map of X, Y and Z, all three or none (VectorProperty::load,
-// vector_property.cpp).
-void ReadVector(const Section& section, const char* key, Eigen::Vector3d& out) {
-  const YAML::Node node = section.Entry(key);
-  if (!node.IsDefined()) return;
-  const Section vector = RvizSection(section.path(), node, section.name() + ": '" + key + "'");
-  Eigen::Vector3d value;
-  const char* const axes[] = {"X", "Y", "Z"};
-  for (int i = 0; i < 3; ++i) {
-    if (!vector.Entry(axes[i]).IsDefined()) section.Fail(key, "a map of X, Y and Z");
-    vector.ReadNumber(axes[i], value[i]);
-  }
-  out = value;
-}
 
 // One entry of the file's display tree, and whether RViz would draw it.
 struct Display {
@@ -91,6 +36,7 @@ struct Displays {
   std::vector<Display> grids;
   std::vector<Display> robot_models;
   std::vector<Display> tfs;
+  std::vector<display::DisplaySettings> messages;  // the enabled message displays, in file order
   std::vector<std::string> skipped;  // classes urdfsnap does not draw, each once, in file order
 };
 
@@ -122,6 +68,13 @@ void CollectDisplays(const Section& parent, bool parent_enabled, Displays& displ
       case DisplayClass::kTf: displays.tfs.push_back(display); break;
       case DisplayClass::kGroup:
         CollectDisplays(section, display.enabled, displays, warnings);
+        break;
+      case DisplayClass::kMarker: case DisplayClass::kMarkerArray: case DisplayClass::kPath:
+      case DisplayClass::kPoseArray: case DisplayClass::kAxes: case DisplayClass::kPointCloud2:
+      case DisplayClass::kLaserScan:
+        if (display.enabled) {
+          displays.messages.push_back(ReadMessageDisplay(ClassifyDisplay(class_id), section, name, warnings));
+        }
         break;
       case DisplayClass::kOther:
         if (std::find(displays.skipped.begin(), displays.skipped.end(), class_id) ==
@@ -253,7 +206,7 @@ void ReadTf(const Display& display, scene::TfOptions& tf, Warnings& warnings) {
 // Views/Current (src/rviz/view_manager.cpp) when it is an Orbit view: its properties in
 // src/rviz/default_plugin/view_controllers/orbit_view_controller.cpp L58-88 and the near clip of
 // src/rviz/view_controller.cpp L58-62, with their limits. Returns whether the file has such a view.
-bool ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings) {
+bool ReadView(const Section& manager, scene::OrbitView& view, std::string& target_frame, Warnings& warnings) {
   const std::optional<Section> views = manager.Child("Views", "Views");
   if (!views) return false;
   const std::optional<Section> current = views->Child("Current", "Views/Current");
@@ -273,13 +226,11 @@ bool ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings
   current->ReadNumber("Field of View", view.fov_y, 0.001, std::numbers::pi / 2);
   current->ReadNumber("Near Clip Distance", view.near_clip, 0.001, 10000);
 
-  // what urdfsnap's orbit camera cannot follow
   std::string target = kFixedFrameString;
   ReadFrame(*current, "Target Frame", target);
-  if (target != kFixedFrameString) {
-    current->Warn("Target Frame", "is not <Fixed Frame>; urdfsnap orbits in the fixed frame",
-                  warnings);
-  }
+  target_frame = target == kFixedFrameString ? "" : target;
+
+  // what urdfsnap's orbit camera cannot follow
   bool invert_z = false;
   current->ReadBool("Invert Z Axis", invert_z);
   if (invert_z) current->Warn("Invert Z Axis", "is true; urdfsnap keeps +Z up", warnings);
@@ -290,7 +241,7 @@ bool ReadView(const Section& manager, scene::OrbitView& view, Warnings& warnings
 // urdfsnap can reproduce, so rendering its defaults would hide the mistake.
 void RequireSomethingUsable(const std::string& path, const Displays& displays, bool has_view) {
   if (has_view || !displays.grids.empty() || !displays.robot_models.empty() ||
-      !displays.tfs.empty()) {
+      !displays.tfs.empty() || !displays.messages.empty()) {
     return;
   }
   std::string skipped;
@@ -298,7 +249,7 @@ void RequireSomethingUsable(const std::string& path, const Displays& displays, b
     skipped += (skipped.empty() ? "'" : ", '") + class_id + "'";
   }
   throw Error(SourceLocation{path, 0},
-              "nothing urdfsnap can use: no Grid, RobotModel or TF display and no Orbit view" +
+              "nothing urdfsnap can use: no Grid, RobotModel, TF or message display and no Orbit view" +
                   (skipped.empty() ? std::string() : "; skipped display classes " + skipped));
 }
 
@@ -338,8 +289,9 @@ RvizConfig ParseRvizConfig(const std::string& text, const std::string& path,
   }
   if (const Display* tf = Chosen(displays.tfs, warnings)) ReadTf(*tf, config.scene.tf, warnings);
 
-  const bool has_view = ReadView(manager, config.view, warnings);
+  const bool has_view = ReadView(manager, config.view, config.target_frame, warnings);
   RequireSomethingUsable(path, displays, has_view);
+  config.displays = std::move(displays.messages);
   return config;
 }
 

@@ -53,22 +53,26 @@ render::Fit FitOf(const RenderRequest& r) {
 render::RenderSettings ReadBaseSettings(const RenderRequest& r, Warnings& warnings) {
   render::RenderSettings settings;
   if (!r.rviz.empty()) {
-    const RvizConfig config = ReadRvizConfig(r.rviz, {settings.scene, settings.view}, warnings);
+    const RvizConfig config = ReadRvizConfig(r.rviz, {settings.scene, settings.view, "", {}}, warnings);
     settings.scene = config.scene;
     settings.view = config.view;
+    settings.target_frame = config.target_frame;
+    settings.displays = config.displays;
   }
   return settings;
 }
 
-void ApplyOptions(const RenderRequest& r, const OptionLabel& label, render::RenderSettings& settings) {
+void ApplyOptions(const RenderRequest& r, const CameraFiles& camera_files, const OptionLabel& label,
+                  render::RenderSettings& settings) {
   settings.size = ParseImageSize(r.size, label("size"));
   ApplyView(r, label, settings.view);
   ApplyScene(r, label, settings.scene);
+  if (!r.follow.empty()) settings.target_frame = r.follow;
   settings.samples = r.no_aa ? 0 : 4;
   settings.fit = FitOf(r);
   if (!r.fit_margin.empty()) settings.fit_margin = ParseFitMargin(r.fit_margin, label("fit-margin"), settings.size);
-  // the calibrated camera, if any (reads --camera-info's file)
-  settings.camera = ParseCameraSettings(r, label, settings);
+  // the calibrated camera, if any
+  settings.camera = ParseCameraSettings(r, camera_files, label, settings);
 }
 
 void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
@@ -92,7 +96,7 @@ void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label
 render::RenderSettings ParseRenderSettings(const RenderRequest& r, const OptionLabel& label,
                                            Warnings& warnings) {
   render::RenderSettings settings = ReadBaseSettings(r, warnings);
-  ApplyOptions(r, label, settings);
+  ApplyOptions(r, ReadCameraFiles(r), label, settings);
   WarnOfOptionsWithoutEffect(r, label, warnings);
   return settings;
 }

@@ -1,7 +1,8 @@
 // Text to typed settings, once per request: RViz's defaults, then the request's .rviz file, then
-// the options given (checked: ranges, colours, sizes), as render::RenderSettings. The file is read
-// by ReadBaseSettings and the options applied by ApplyOptions, so that a caller who renders many
-// requests over one .rviz file (the live view) reads it once.
+// the options given (checked: ranges, colours, sizes), as render::RenderSettings. The files are
+// read by ReadBaseSettings (.rviz) and ReadCameraFiles (camera_parsing.h) and the options applied
+// by ApplyOptions, which reads none, so that a caller who renders many requests over the same
+// files (the live view) reads them once.
 #pragma once
 
 #include <functional>
@@ -13,6 +14,8 @@
 #include "request/render_request.h"
 
 namespace urdfsnap::request {
+
+struct CameraFiles;  // camera_parsing.h
 
 // How error messages name option `name` ("yaw"): "--yaw" on the command line, "suite.yaml:12: yaw"
 // for a suite case.
@@ -31,13 +34,16 @@ render::RenderSettings ReadBaseSettings(const RenderRequest& request, Warnings& 
 
 // Applies the request's option texts over `settings` (RViz's defaults or a .rviz file's): size,
 // view, displays, multisampling, --fit; the model file and packages become the scene's places to
-// find meshes. Reads no file. Throws urdfsnap::Error for a bad option value, named through `label`.
-void ApplyOptions(const RenderRequest& request, const OptionLabel& label, render::RenderSettings& settings);
+// find meshes; the camera options over `camera_files` (ReadCameraFiles of the same request). Reads
+// no file. Throws urdfsnap::Error for a bad option value, named through `label`.
+void ApplyOptions(const RenderRequest& request, const CameraFiles& camera_files, const OptionLabel& label,
+                  render::RenderSettings& settings);
 
 // Warns of options the request gives that have no effect (--distance with --fit).
 void WarnOfOptionsWithoutEffect(const RenderRequest& request, const OptionLabel& label, Warnings& warnings);
 
-// ReadBaseSettings, then ApplyOptions and WarnOfOptionsWithoutEffect: the settings `request` asks for.
+// ReadBaseSettings and ReadCameraFiles, then ApplyOptions and WarnOfOptionsWithoutEffect: the
+// settings `request` asks for.
 render::RenderSettings ParseRenderSettings(const RenderRequest& request, const OptionLabel& label,
                                            Warnings& warnings);
 

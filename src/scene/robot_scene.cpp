@@ -278,12 +278,21 @@ RobotScene::RobotScene(const model::Robot& robot, SceneOptions options, Warnings
   }
   files_ = files.TakeFiles();
   if (options_.tf.enabled && options_.tf.show_names) tf_names_ = MakeTfNameLabels(robot_, options_.tf);
+  if (options_.tf.enabled) tf_parents_ = robot_.ParentLinks();
 }
 
 std::size_t RobotScene::triangle_count() const {
   std::size_t triangles = 0;
   for (const LinkPart& part : parts_) triangles += part.mesh->indices.size() / 3;
   return triangles;
+}
+
+std::vector<Eigen::Isometry3d> RobotScene::LinkPoses(const std::vector<Eigen::Isometry3d>& X_RL,
+                                                     const Eigen::Isometry3d& X_SF) const {
+  const Eigen::Isometry3d X_SR = X_SF * X_RL[fixed_link_].inverse();
+  std::vector<Eigen::Isometry3d> X_SL(X_RL.size());
+  for (size_t i = 0; i < X_RL.size(); ++i) X_SL[i] = X_SR * X_RL[i];
+  return X_SL;
 }
 
 Scene RobotScene::Pose(const std::vector<Eigen::Isometry3d>& X_RL,
@@ -295,15 +304,13 @@ Scene RobotScene::Pose(const std::vector<Eigen::Isometry3d>& X_RL,
   Scene scene;
   scene.background = options_.background;
   // (X_FL below is in the scene's frame S, which is F's unless X_SF says otherwise)
-  const Eigen::Isometry3d X_FR = X_SF * X_RL[fixed_link_].inverse();
-  std::vector<Eigen::Isometry3d> X_FL(X_RL.size());
-  for (size_t i = 0; i < X_RL.size(); ++i) X_FL[i] = X_FR * X_RL[i];
+  const std::vector<Eigen::Isometry3d> X_FL = LinkPoses(X_RL, X_SF);
   scene.items.reserve(parts_.size());
   for (const LinkPart& part : parts_) {
     scene.items.push_back({part.mesh, X_FL[part.link] * part.X_LG, part.rgba, part.link, part.texture,
                            part.texture_units, part.emissive});
   }
-  if (options_.tf.enabled) AddTfMarkers(robot_, X_FL, options_.tf, tf_names_, scene);
+  if (options_.tf.enabled) AddTfFrames(X_FL, tf_parents_, options_.tf, tf_names_, scene);
   if (options_.grid.enabled) scene.lines.push_back(MakeGrid(options_.grid));
   return scene;
 }

@@ -54,6 +54,9 @@ class RobotScene {
   // pose TF gives the fixed link there. Does no I/O.
   Scene Pose(const std::vector<Eigen::Isometry3d>& X_RL,
              const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
+  // The link poses in the scene's frame that Pose draws them at.
+  std::vector<Eigen::Isometry3d> LinkPoses(const std::vector<Eigen::Isometry3d>& X_RL,
+                                           const Eigen::Isometry3d& X_SF = Eigen::Isometry3d::Identity()) const;
 
  private:
   const model::Robot& robot_;
@@ -61,6 +64,7 @@ class RobotScene {
   int fixed_link_ = 0;
   std::vector<LinkPart> parts_;
   std::vector<TextLabel> tf_names_;   // anchored at the origin; Pose() moves them to the frames
+  std::vector<int> tf_parents_;       // robot.ParentLinks(), for the TF display
   std::vector<std::string> files_;
 };
 

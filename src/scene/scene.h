@@ -29,10 +29,21 @@ struct DrawItem {
   Eigen::Vector3f emissive{0, 0, 0};    // self-illumination, added to the lit colour
 };
 
-// Unlit line segments (pairs of points), drawn 1 pixel wide.
+// Unlit line segments (pairs of points), drawn 1 pixel wide, or, with a width, as RViz's
+// BillboardLine draws marker lines and Path billboards (ogre_helpers/billboard_line.cpp): each
+// segment a ribbon `width` metres wide that turns about the segment to face the camera.
 struct LineSet {
   std::vector<Eigen::Vector3f> points;  // segment i runs from points[2i] to points[2i+1]
   Eigen::Vector4f rgba{1, 1, 1, 1};
+  std::vector<Eigen::Vector4f> colours;  // one per point, blended along the segment; empty: rgba
+  float width = 0;                       // metres; 0: 1-pixel GL lines
+};
+
+// Unlit triangles with a colour per corner, interpolated across, seen from both sides: RViz's
+// TRIANGLE_LIST marker (markers/triangle_list_marker.cpp). Blended where a colour's alpha is < 1.
+struct FlatTriangles {
+  std::vector<Eigen::Vector3f> positions;  // three per triangle, in the fixed frame
+  std::vector<Eigen::Vector4f> colours;    // one per position
 };
 
 // Unlit text that faces the camera (TF frame names): quads in the camera's image plane, x right and
@@ -56,6 +67,9 @@ struct PointSet {
   std::vector<Eigen::Vector3f> positions;  // in the fixed frame
   std::vector<Eigen::Vector4f> colours;    // one rgba per position
   Eigen::Vector3f size{0.01f, 0.01f, 0.01f};
+  // Boxes: the axes the boxes are aligned with, in the fixed frame (those of the cloud's or the
+  // marker's frame: RViz's box.geom builds them in the point cloud's scene node)
+  Eigen::Matrix3f box_axes = Eigen::Matrix3f::Identity();
 };
 
 struct Scene {
@@ -64,6 +78,7 @@ struct Scene {
   std::vector<LineSet> lines;           // transparent overlays such as the grid
   std::vector<TextLabel> labels;        // blended with the transparent geometry
   std::vector<PointSet> points;         // display points; opaque unless a colour's alpha is < 1
+  std::vector<FlatTriangles> triangles; // display surfaces; opaque unless a colour's alpha is < 1
 };
 
 }  // namespace urdfsnap::scene

@@ -71,30 +71,30 @@ Eigen::Vector4f NameColourOn(const Eigen::Vector3f& background) {
   return luma > 0.6f ? Eigen::Vector4f(0, 0, 0, 1) : Eigen::Vector4f::Ones();
 }
 
-std::vector<TextLabel> MakeTfNameLabels(const model::Robot& robot, const TfOptions& options) {
-  std::vector<std::string> names;
-  for (const auto& link : robot.links()) names.push_back(link.name);
-  const std::shared_ptr<const texture::GlyphAtlas> atlas = texture::BuildGlyphAtlas(texture::FindLiberationSans(), CodePointsOf(names));
+std::vector<TextLabel> MakeTfNameLabels(const std::vector<std::string>& frames, const TfOptions& options) {
+  const std::shared_ptr<const texture::GlyphAtlas> atlas = texture::BuildGlyphAtlas(texture::FindLiberationSans(), CodePointsOf(frames));
   std::vector<TextLabel> labels;
-  for (const std::string& name : names) {
+  for (const std::string& name : frames) {
     labels.push_back({atlas->texture, LayOutText(*atlas, name, kNameHeight * static_cast<float>(options.marker_scale)),
                       Eigen::Vector3d::Zero(), Eigen::Vector4f::Ones()});
   }
   return labels;
 }
 
-void AddTfMarkers(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_FL,
-                  const TfOptions& options, const std::vector<TextLabel>& names, Scene& scene) {
-  for (size_t i = 0; i < robot.links().size(); ++i) {
-    if (options.show_axes) AddAxes(X_FL[i], options.marker_scale, scene);
-    const int joint = robot.links()[i].parent_joint;
-    if (options.show_arrows && joint >= 0) {
-      const int parent = robot.joints()[joint].parent_link;
-      AddParentArrow(X_FL[i].translation(), X_FL[parent].translation(), options.marker_scale, scene);
+std::vector<TextLabel> MakeTfNameLabels(const model::Robot& robot, const TfOptions& options) {
+  return MakeTfNameLabels(robot.LinkNames(), options);
+}
+
+void AddTfFrames(const std::vector<Eigen::Isometry3d>& X_FT, const std::vector<int>& parents,
+                 const TfOptions& options, const std::vector<TextLabel>& names, Scene& scene) {
+  for (size_t i = 0; i < X_FT.size(); ++i) {
+    if (options.show_axes) AddAxes(X_FT[i], options.marker_scale, scene);
+    if (options.show_arrows && parents[i] >= 0) {
+      AddParentArrow(X_FT[i].translation(), X_FT[parents[i]].translation(), options.marker_scale, scene);
     }
     if (i < names.size()) {
       scene.labels.push_back(names[i]);
-      scene.labels.back().anchor = X_FL[i].translation();
+      scene.labels.back().anchor = X_FT[i].translation();
       scene.labels.back().rgba = options.name_colour;
     }
   }

@@ -3,6 +3,7 @@
 // ogre_helpers/movable_text.cpp).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -30,13 +31,16 @@ struct TfOptions {
 // brighter than mid-grey (Rec. 709 luma above 0.6), as documentation pictures on white have.
 Eigen::Vector4f NameColourOn(const Eigen::Vector3f& background);
 
-// The frame names as text labels (one per robot.links(), anchored at the origin), laid out once
-// with Liberation Sans at the marker scale. Throws urdfsnap::Error when the font is missing.
+// The names `frames` as text labels (one per name, anchored at the origin), laid out once with
+// Liberation Sans at the marker scale. Throws urdfsnap::Error when the font is missing.
+std::vector<TextLabel> MakeTfNameLabels(const std::vector<std::string>& frames, const TfOptions& options);
+// The link names of `robot` as MakeTfNameLabels lays them out.
 std::vector<TextLabel> MakeTfNameLabels(const model::Robot& robot, const TfOptions& options);
 
-// Adds the axes and parent arrows of every link frame as `options` ask, and `names` (from
-// MakeTfNameLabels, or empty) moved to the frames. X_FL: link poses in the fixed frame.
-void AddTfMarkers(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_FL,
-                  const TfOptions& options, const std::vector<TextLabel>& names, Scene& scene);
+// Adds the axes of every frame and its arrow to its parent as `options` ask, and `names` (from
+// MakeTfNameLabels, one per frame, or empty) moved to the frames. X_FT: frame poses in the fixed
+// frame; parents: per frame the index of its parent in X_FT, or -1 for none (no arrow).
+void AddTfFrames(const std::vector<Eigen::Isometry3d>& X_FT, const std::vector<int>& parents,
+                 const TfOptions& options, const std::vector<TextLabel>& names, Scene& scene);
 
 }  // namespace urdfsnap::scene

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -115,6 +116,19 @@ bool Collect(int count, const std::function<Scene(int)>& scene_of, const Eigen::
   return !across.corners.empty();
 }
 
+// The least distance from `view`'s focal point, along its own yaw, pitch and field of view, at
+// which every corner is inside the image shrunk by the margin (the axes' tan_half) and in front
+// of the near clip plane. `back` is the camera's back axis, across.corners' second coordinate.
+double KeptFocalDistance(const AxisHull& across, const AxisHull& upward, const OrbitView& view,
+                         const Eigen::Vector3d& right, const Eigen::Vector3d& up, const Eigen::Vector3d& back) {
+  double nearest = -std::numeric_limits<double>::infinity();
+  for (const auto& c : across.corners) nearest = std::max(nearest, c.y());
+  const double distance = std::max({across.DistanceAround(view.focal.dot(right), view.focal.dot(back)),
+                                    upward.DistanceAround(view.focal.dot(up), view.focal.dot(back)),
+                                    nearest - view.focal.dot(back) + view.near_clip});
+  return std::max(distance, view.near_clip * 2);
+}
+
 }  // namespace
 
 OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitView view, double aspect,
@@ -133,10 +147,7 @@ OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitVie
     farthest = std::min(farthest, c.y());
   }
   if (keep_focal) {
-    const double distance = std::max({across.DistanceAround(view.focal.dot(right), view.focal.dot(back)),
-                                      upward.DistanceAround(view.focal.dot(up), view.focal.dot(back)),
-                                      nearest - view.focal.dot(back) + view.near_clip});
-    view.distance = std::max(distance, view.near_clip * 2);
+    view.distance = KeptFocalDistance(across, upward, view, right, up, back);
     return view;
   }
   // the eye in the camera's axes: as far back as the binding axis needs, in front of the near plane
@@ -158,6 +169,51 @@ std::optional<Eigen::Vector3d> BoundsCentre(int count, const std::function<Scene
   for (int k = 0; k < count; ++k) scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) { box.extend(p); });
   if (box.isEmpty()) return std::nullopt;
   return box.center();
+}
+
+double FitDistance(const Scene& scene, const OrbitView& view, const std::vector<double>& yaws, double aspect,
+                   FitMargin margin) {
+  // each vertex placed once (the same point of a mesh once per placement), not once per yaw
+  std::vector<Eigen::Vector3d> points;
+  for (const auto& item : scene.items) {
+    // equal bit for bit: a total order even with NaNs in a hostile mesh
+    std::vector<Eigen::Vector3f> local = item.mesh->positions;
+    std::sort(local.begin(), local.end(), [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+      return std::memcmp(a.data(), b.data(), sizeof(float) * 3) < 0;
+    });
+    local.erase(std::unique(local.begin(), local.end(),
+                            [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+                              return std::memcmp(a.data(), b.data(), sizeof(float) * 3) == 0;
+                            }),
+                local.end());
+    for (const auto& p : local) points.push_back(item.X_FG * p.cast<double>());
+  }
+  if (points.empty()) return 0;
+  double fitted = 0;
+  std::vector<Eigen::Vector2d> x, y;
+  for (const double yaw : yaws) {
+    // FitView's keep_focal arithmetic on the same hulls, so the result is the same bit for bit
+    OrbitView side = view;
+    side.yaw = yaw;
+    const Eigen::Matrix4d V = ViewMatrix(side);
+    const Eigen::Vector3d right = V.block<1, 3>(0, 0).transpose();
+    const Eigen::Vector3d up = V.block<1, 3>(1, 0).transpose();
+    const Eigen::Vector3d back = V.block<1, 3>(2, 0).transpose();
+    AxisHull across, upward;
+    across.tan_half = std::tan(side.fov_y / 2) * aspect * (1 - 2 * margin.x);
+    upward.tan_half = std::tan(side.fov_y / 2) * (1 - 2 * margin.y);
+    x.clear();
+    y.clear();
+    for (const auto& p : points) {
+      const double depth = p.dot(back);
+      x.emplace_back(p.dot(right), depth);
+      y.emplace_back(p.dot(up), depth);
+    }
+    across.corners = ConvexHull2d(x);
+    upward.corners = ConvexHull2d(y);
+    fitted = std::max(fitted, KeptFocalDistance(across, upward, side, right, up, back));
+  }
+  return fitted;
 }
 
 }  // namespace urdfsnap::scene

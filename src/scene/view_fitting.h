@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "scene/orbit_view.h"
 #include "scene/scene.h"
@@ -36,5 +37,10 @@ OrbitView FitView(const Scene& scene, OrbitView view, double aspect, bool keep_f
 // The centre of the bounding box of every vertex of every scene (none: nullopt), the point a
 // turntable turns about.
 std::optional<Eigen::Vector3d> BoundsCentre(int count, const std::function<Scene(int)>& scene_of);
+
+// The largest of the distances FitView(scene, view with each of `yaws`, aspect, true, margin) gives,
+// exactly, with the scene's vertices placed once for all yaws (a turntable's frames). No vertices: 0.
+double FitDistance(const Scene& scene, const OrbitView& view, const std::vector<double>& yaws, double aspect,
+                   FitMargin margin = {});
 
 }  // namespace urdfsnap::scene

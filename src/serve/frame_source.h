@@ -15,6 +15,7 @@
 #include "render/render_settings.h"
 #include "request/render_request.h"
 #include "request/resolved_request.h"
+#include "scene/orbit_view.h"
 
 namespace urdfsnap::request {
 class RenderSession;
@@ -55,6 +56,14 @@ class FrameSource {
   // Option errors name the option as render's command line does ("--yaw 'x': ..."). Throws
   // urdfsnap::Error.
   std::string RenderPng(const request::RenderRequest& request, Warnings& warnings);
+
+  // The orbit view that frames the robot as `request` shows it (its pose, displays, size and view
+  // direction, not its focal point): the view `render --fit` draws without --focal; or, for a
+  // `link`, that link's geometry (the links below it when it has none of its own; for a frame
+  // with nothing below it either, such as a tool point, the nearest link above it with some), the
+  // focal point at its centre. Throws urdfsnap::Error for an option, an unknown link or a robot
+  // with nothing shown to frame.
+  scene::OrbitView FitView(const request::RenderRequest& request, const std::string& link, Warnings& warnings);
 
   // Where the page starts for the base of the last Reload. Throws urdfsnap::Error.
   StartingView Start(Warnings& warnings);

@@ -1,4 +1,4 @@
-// The joint table of /api/robot, built with nlohmann::json.
+// The joint table and link names of /api/robot, built with nlohmann::json.
 #include "serve/robot_json.h"
 
 #include <numbers>
@@ -33,7 +33,7 @@ std::string RobotJson(const model::Robot& robot, const std::vector<std::string>&
                       {"mimic", mimic}});
   }
   const nlohmann::json robot_json = {
-      {"name", robot.name()}, {"joints", joints}, {"warnings", warnings}};
+      {"name", robot.name()}, {"joints", joints}, {"links", robot.LinkNames()}, {"warnings", warnings}};
   // names come from the URDF: replace invalid UTF-8 rather than throw
   return robot_json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }

@@ -9,7 +9,7 @@
 namespace urdfsnap::serve {
 
 // {"name": ROBOT, "joints": [{"name", "type", "lower", "upper", "default", "mimic"}, ...],
-//  "warnings": [...]} with joint_state_publisher_gui's rules (joint_state_publisher.py): only
+//  "links": [NAME, ...] (tree order: what the page's focus list offers), "warnings": [...]} with joint_state_publisher_gui's rules (joint_state_publisher.py): only
 // revolute, continuous and prismatic joints; the range is the URDF limits, ±π for continuous
 // joints; the default is the value it starts at (0, or the middle of the limits when 0 is
 // outside them); a mimic joint has "mimic": {"joint", "multiplier", "offset"} and gets no slider

@@ -22,6 +22,7 @@
 #include "serve/initial_view.h"
 #include "serve/query_request.h"
 #include "serve/robot_json.h"
+#include "request/resolved_request.h"
 #include "request/value_parsing.h"
 
 namespace urdfsnap::serve {
@@ -51,7 +52,7 @@ void SetJson(httplib::Response& res, int status, const nlohmann::json& json) {
 std::string Reason(int status) {
   switch (status) {
     case 400: return "bad request";
-    case 404: return "not found (this server has its page, /render.png and /api/{robot,view,status})";
+    case 404: return "not found (this server has its page, /render.png and /api/{robot,view,status,fit})";
     case 405: return "method not allowed";
     case 413: return "request body too large";
     case 414: return "URI too long";
@@ -104,6 +105,15 @@ class GuardedHttpServer : public httplib::Server {
   StreamLimits stream_limits_;
 };
 
+// Throws urdfsnap::Error for an option value no edit of the model's files can mend (--yaw x): those
+// end `urdfsnap serve` at once, as `render` would; the .rviz and joint files are read with the
+// model, and like it served as an error until they load.
+void CheckOptionValues(request::RenderRequest base) {
+  base.rviz.clear();
+  base.joint_file.clear();
+  request::ResolveRequest(base, request::RequestFiles{}, request::CommandLineLabel);
+}
+
 }  // namespace
 
 bool IsLoopback(const std::string& address) {
@@ -117,16 +127,27 @@ struct Server::Impl {
 
   ServerOptions options;
   LiveModel live;
-  std::string initial_view;  // /api/view
+  // /api/view, made by the first load that succeeds ("" until then: a model broken at start-up is
+  // served as its error until it is fixed)
+  std::mutex initial_view_mutex;
+  std::string initial_view;
   GuardedHttpServer http{options.connection_limits, options.stream_limits};
 
   // one frame at a time, a bounded number waiting (last: it ends first, before what it uses)
   RenderThread renderer{static_cast<size_t>(options.max_waiting_renders), options.backend};
 
-  // (re)loads the model and checks that its initial view renders, between two frames
-  std::shared_ptr<const ModelState> Reload() {
+  // (re)loads the model and checks that its initial view renders, between two frames; the first
+  // good load also resolves the page's starting view (its warnings to `warnings`)
+  std::shared_ptr<const ModelState> Reload(Warnings& warnings) {
     std::shared_ptr<const ModelState> state;
-    renderer.Run([&](FrameSource& frames) { state = live.Load([&] { return frames.Reload(options.base); }); });
+    renderer.Run([&](FrameSource& frames) {
+      state = live.Load([&] {
+        WatchedModel model = frames.Reload(options.base);
+        const std::lock_guard lock(initial_view_mutex);
+        if (initial_view.empty()) initial_view = InitialViewJson(options.base, frames.Start(warnings));
+        return model;
+      });
+    });
     return state;
   }
 
@@ -138,7 +159,8 @@ struct Server::Impl {
       wake.wait_for(lock, stop, options.watch_interval, [] { return false; });
       if (stop.stop_requested()) return;
       if (!live.NeedsLoad()) continue;
-      const std::shared_ptr<const ModelState> state = Reload();
+      Warnings warnings;   // the starting view's, after a broken start: the model's are in the state
+      const std::shared_ptr<const ModelState> state = Reload(warnings);
       if (options.on_reload) options.on_reload(*state);
     }
   }
@@ -182,6 +204,40 @@ struct Server::Impl {
     res.set_header("X-Urdfsnap-Model", std::to_string(generation));
     res.set_header("X-Urdfsnap-Render-Ms", std::to_string(took.count()));
     res.set_content(std::move(png), "image/png");
+  }
+
+  // `GET /api/fit?...&link=NAME`: the orbit view (yaw, pitch, distance, focal) that frames the
+  // robot, or the link NAME, as the query's options and pose show it.
+  void Fit(const httplib::Request& req, httplib::Response& res) {
+    const std::shared_ptr<const ModelState> state = live.State();
+    if (!state->robot) return SetJson(res, 422, {{"error", kErrorPrefix + state->error}});
+    Query query = req.params;
+    std::string link;
+    if (const auto found = query.find("link"); found != query.end()) {
+      link = found->second;
+      query.erase(found);
+    }
+    try {
+      scene::OrbitView view;
+      const bool ran = renderer.TryRun([&](FrameSource& frames) {
+        Warnings warnings;
+        view = frames.FitView(RequestFromQuery(query, options.base), link, warnings);
+      });
+      if (!ran) {
+        res.set_header("Retry-After", "1");
+        return SetJson(res, 503, {{"error", "urdfsnap serve: busy rendering; try again"}});
+      }
+      SetJson(res, 200, {{"yaw", view.yaw}, {"pitch", view.pitch}, {"distance", view.distance},
+                         {"focal", {view.focal.x(), view.focal.y(), view.focal.z()}}});
+    } catch (const Error& e) {
+      SetJson(res, 400, {{"error", kErrorPrefix + std::string(e.what())}});
+    }
+  }
+
+  void View(httplib::Response& res) {
+    const std::lock_guard lock(initial_view_mutex);
+    if (!initial_view.empty()) return res.set_content(initial_view, "application/json");
+    SetJson(res, 422, {{"error", kErrorPrefix + live.State()->error}});
   }
 
   void Robot(httplib::Response& res) {
@@ -240,9 +296,8 @@ struct Server::Impl {
     http.Get("/render.png", [this](const httplib::Request& req, httplib::Response& res) { RenderFrame(req, res); });
     http.Get("/api/robot", [this](const httplib::Request&, httplib::Response& res) { Robot(res); });
     http.Get("/api/status", [this](const httplib::Request&, httplib::Response& res) { Status(res); });
-    http.Get("/api/view", [this](const httplib::Request&, httplib::Response& res) {
-      res.set_content(initial_view, "application/json");
-    });
+    http.Get("/api/view", [this](const httplib::Request&, httplib::Response& res) { View(res); });
+    http.Get("/api/fit", [this](const httplib::Request& req, httplib::Response& res) { Fit(req, res); });
     http.set_error_handler([](const httplib::Request&, httplib::Response& res) {
       if (res.body.empty()) {
         SetText(res, res.status, "urdfsnap serve: " + std::to_string(res.status) + " " + Reason(res.status));
@@ -263,12 +318,10 @@ struct Server::Impl {
 Server::Server(ServerOptions options, Warnings& warnings)
     : impl_(std::make_unique<Impl>(std::move(options))) {
   Impl& s = *impl_;
-  const std::shared_ptr<const ModelState> state = s.Reload();
+  CheckOptionValues(s.options.base);
+  const std::shared_ptr<const ModelState> state = s.Reload(warnings);
   for (const auto& warning : state->warnings) warnings.Add(warning);
-  if (!state->robot) throw Error(state->error);
-  s.renderer.Run([&](FrameSource& frames) {
-    s.initial_view = InitialViewJson(s.options.base, frames.Start(warnings));
-  });
+  if (!state->robot) warnings.Add(state->error + " (serving this error until the model loads)");
   s.Route();
 }
 

@@ -1,5 +1,6 @@
 // The live view's HTTP server (cpp-httplib): the embedded page, GET /render.png in render's
-// option words, /api/robot, /api/view and /api/status, with the model reloaded as its files change.
+// option words, /api/robot, /api/view, /api/status and /api/fit, with the model reloaded as its
+// files change.
 //
 // It answers nothing else: no URL names a file, every response is the page, a rendered image or
 // JSON/text made here. Limits: request bodies of 4 KiB (a GET has none), request lines and
@@ -51,7 +52,8 @@ class Server {
  public:
   // Loads the model and renders the initial view once (which checks the options and loads the
   // meshes); its warnings go to `warnings`. Throws urdfsnap::Error as `urdfsnap render` would for
-  // the same options.
+  // an option value. A model that does not load (its files, or the .rviz and joint files) is a
+  // warning: the server serves its error until an edit mends it.
   Server(ServerOptions options, Warnings& warnings);
   ~Server();
   Server(const Server&) = delete;

@@ -1,4 +1,4 @@
-// ReadSuite: yaml-cpp walks the suite file; every key of a case is checked where it stands, so an
+// ReadSuite: yaml-cpp walks the suite file (located by common's yaml_reader.h); every key of a case is checked where it stands, so an
 // error names the suite file and the line of the offending key.
 #include "snapshot/suite_file.h"
 
@@ -15,6 +15,7 @@
 #include "common/did_you_mean.h"
 #include "common/error.h"
 #include "common/file_reading.h"
+#include "common/internal/yaml_reader.h"
 #include "common/number_text.h"
 #include "common/stable_hash.h"
 #include "image/image_file_names.h"
@@ -24,8 +25,6 @@ namespace urdfsnap::snapshot {
 namespace {
 
 namespace fs = std::filesystem;
-
-int LineOf(const YAML::Node& node) { return node.Mark().line + 1; }
 
 class SuiteReader {
  public:
@@ -39,12 +38,7 @@ class SuiteReader {
     } catch (const FileReadError& e) {
       throw Error(SourceLocation{path_, 0}, std::string("cannot read the suite file: ") + e.what());
     }
-    YAML::Node root;
-    try {
-      root = YAML::Load(text);
-    } catch (const YAML::Exception& e) {
-      throw Error(SourceLocation{path_, e.mark.line + 1}, "bad YAML: " + e.msg);
-    }
+    YAML::Node root = LoadYaml(text, path_);
     if (!root.IsMap()) throw ErrorAt(root, "expected a map with 'cases:' (and optionally 'defaults:')");
     SnapshotCase defaults;
     YAML::Node cases;

@@ -1,5 +1,6 @@
 // CDR decoding of JointState (through the definition urdfsnap ships) from bytes made by hand:
-// alignment counted from after the encapsulation header, both byte orders, and malformed data.
+// alignment counted from after the encapsulation header, both byte orders, byte arrays kept as
+// bytes, and malformed data.
 #include "bag/cdr_reader.h"
 
 #include <gmock/gmock.h>
@@ -9,7 +10,9 @@
 #include <cstring>
 #include <vector>
 
+#include "bag/cdr_message.h"
 #include "bag/joint_state_message.h"
+#include "support/cdr_bytes.h"
 #include "support/error_text.h"
 
 namespace urdfsnap::bag {
@@ -18,39 +21,7 @@ namespace {
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-// Builds CDR bytes field by field the way the specification lays them out.
-class CdrBytes {
- public:
-  explicit CdrBytes(bool big_endian = false) : big_endian_(big_endian) {
-    bytes_ = {0x00, std::uint8_t(big_endian ? 0x00 : 0x01), 0x00, 0x00};
-  }
-  CdrBytes& U32(std::uint32_t value) { return Put(value); }
-  CdrBytes& F64(double value) { return Put(value); }
-  CdrBytes& Str(const std::string& text) {
-    U32(static_cast<std::uint32_t>(text.size() + 1));
-    bytes_.insert(bytes_.end(), text.begin(), text.end());
-    bytes_.push_back(0);
-    return *this;
-  }
-  CdrBytes& Raw(std::vector<std::uint8_t> raw) {
-    bytes_.insert(bytes_.end(), raw.begin(), raw.end());
-    return *this;
-  }
-  const std::vector<std::uint8_t>& bytes() const { return bytes_; }
-
- private:
-  template <typename T>
-  CdrBytes& Put(T value) {
-    while ((bytes_.size() - 4) % sizeof(T) != 0) bytes_.push_back(0xEE);  // padding
-    std::uint8_t raw[sizeof(T)];
-    std::memcpy(raw, &value, sizeof(T));
-    if (big_endian_) std::reverse(raw, raw + sizeof(T));
-    bytes_.insert(bytes_.end(), raw, raw + sizeof(T));
-    return *this;
-  }
-  bool big_endian_;
-  std::vector<std::uint8_t> bytes_;
-};
+using test::CdrBytes;
 
 const MessageSchema& JointStateSchema() {
   static const MessageSchema schema = *MessageSchema::Shipped("sensor_msgs/msg/JointState");
@@ -88,6 +59,21 @@ TEST(CdrReaderTest, AlignsFromThePayloadNotTheBuffer) {
   CdrReader reader(bytes);
   EXPECT_EQ(reader.Uint32(), 7u);
   EXPECT_EQ(reader.Float64(), 2.0);
+}
+
+// uint8[] and fixed uint8 arrays come out as raw bytes (a PointCloud2's data), the fields around
+// them still aligned as CDR lays them out; a byte count beyond the message is an error
+TEST(CdrReaderTest, KeepsByteArraysAsBytes) {
+  const MessageSchema schema = MessageSchema::Parse("test/Blob", "uint8[] data\nbyte[3] tag\nuint32 after\n");
+  const std::vector<std::uint8_t> bytes = CdrBytes().U32(5).Raw({1, 2, 3, 4, 255}).Raw({7, 8, 9}).U32(42).bytes();
+  const MessageValue message = DecodeMessage(schema, bytes);
+  EXPECT_THAT(message["data"].bytes, ElementsAre(1, 2, 3, 4, 255));
+  EXPECT_TRUE(message["data"].items.empty());
+  EXPECT_THAT(message["tag"].bytes, ElementsAre(7, 8, 9));
+  EXPECT_EQ(message["after"].number, 42);
+  const std::vector<std::uint8_t> short_data = CdrBytes().U32(1000).Raw({1, 2, 3}).bytes();
+  EXPECT_THAT(test::ErrorText<CdrError>([&] { DecodeMessage(schema, short_data); }),
+              HasSubstr("a sequence of 1000 elements"));
 }
 
 struct BadCdr {

@@ -1,9 +1,9 @@
 // `urdfsnap animate` against the binary, judged by other programs: PNG sequences byte for byte
 // against `urdfsnap render` of the interpolated pose, videos through the real FFmpeg tools (ffprobe
 // for frame count, size and rate; ffmpeg to decode every frame) and libwebp, trajectories in every
-// input format and bags written by the MCAP project's own writer (the test_bags fixture), depth and
-// label sequences, clamping, the one camera of --fit and turntables, --print-frame, and memory that
-// does not grow with the animation's length. Frames show a posed robot, never a blank picture.
+// input format and bags written by the MCAP project's own writer (the test_bags fixture), depth,
+// label, mask and keypoint sequences, clamping, the one camera of --fit and turntables,
+// --print-frame, and memory that does not grow with the animation's length. Frames show a posed robot, never a blank picture.
 #include <sys/stat.h>
 
 #include <cmath>
@@ -16,6 +16,7 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "bag/test_bags.h"
 #include "cli_fixture.h"
@@ -481,6 +482,34 @@ TEST_F(AnimateTest, AFixedFrameOutsideTheRobotPlacesItWhereTfSays) {
       << other.output;
 }
 
+TEST_F(AnimateTest, ACameraFrameOutsideTheRobotFollowsTheBagsTf) {
+  // a camera fixed in odom 6 m above the rover's loop centre (0, 1), looking down (x along +x, y
+  // along -y): 180° about x. f = 60 / tan(22.5°) at 160x120
+  const std::string camera = " --camera-frame odom --camera-pose 0,1,6,1,0,0,0 --size 160x120 --no-grid";
+  const std::string rover = test::TestBag("rover_loop.mcap");
+  Ok("animate " + rover + " --fps 1" + camera + " -o " + Path("c/%d.png") + " --keypoints " + Path("k/%d.json"));
+  const double f = 60 / std::tan(std::numbers::pi / 8);
+  for (const auto& [k, y] : {std::pair{0, 0.0}, std::pair{4, 2.0}}) {
+    // base_link at (0, y, 0) in odom: 6 m below the camera, 1 - y metres along the image's v
+    const nlohmann::json keypoints = nlohmann::json::parse(ReadBytes(Path("k/" + std::to_string(k) + ".json")));
+    const nlohmann::json& base = keypoints["frames"][0];
+    EXPECT_EQ(base["name"], "base_link");
+    EXPECT_NEAR(base["u"].get<double>(), 79.5, 1e-6) << k;
+    EXPECT_NEAR(base["v"].get<double>(), 59.5 + f * (1 - y) / 6, 1e-6) << k;
+    EXPECT_NEAR(base["depth"].get<double>(), 6, 1e-9) << k;
+    EXPECT_GT(RobotPixels(image::ReadPng(Path("c/" + std::to_string(k) + ".png"))), 100) << k;
+  }
+  EXPECT_GT(Apart(RobotCentre(image::ReadPng(Path("c/0.png"))), RobotCentre(image::ReadPng(Path("c/4.png")))), 35);
+  const Result words = RunUrdfsnap("animate " + rover + camera + " --print-frame 1");
+  EXPECT_EQ(words.output, "urdfsnap: error: --print-frame: the camera is placed by TF from 'odom', which `render` "
+                          "cannot do\n");
+  // a frame TF does not connect to the robot
+  const Result other = RunUrdfsnap("animate " + rover + " --camera-frame map -o " + Path("map/%d.png"));
+  EXPECT_EQ(other.status, 2);
+  EXPECT_NE(other.output.find("--camera-frame 'map': neither a link of the robot nor a frame"), std::string::npos)
+      << other.output;
+}
+
 TEST_F(AnimateTest, BagWithTwoPublishersMovesTheArmAndTheGripper) {
   const std::string arm = Write("arm.urdf", kBagArm);
   const std::string animation = arm + " --trajectory " + test::TestBag("two_publishers.mcap") + " --fps 10";
@@ -510,6 +539,44 @@ TEST_F(AnimateTest, DepthAndLabelSequencesAreRendersOfTheSameFrames) {
   // the link names once for the sequence, as render writes them beside its label image
   EXPECT_EQ(ReadBytes(Path("l/labels.json")), ReadBytes(Path("r_l.json")));
   EXPECT_FALSE(fs::exists(Path("l/0.json")));
+}
+
+TEST_F(AnimateTest, MaskAndKeypointSequencesAreWhatRenderWritesForEachFrame) {
+  // the orbit view fitted over the motion, and a calibrated camera with its lens
+  const std::string camera = " --camera-info " + (kSource / "tests/data/camera/ost.yaml").string() +
+                             " --camera-pose 5,0.05,1,-0.5,-0.5,0.5,0.5 --distort";
+  for (const std::string& view : {std::string(" --fit --size 240x180"), camera}) {
+    const std::string animation = mrm_ + " --trajectory " + csv_ + " --fps 2" + view;
+    Ok("animate " + animation + " -o " + Path("c/%d.png") + " --mask " + Path("m/%d.png") + " --mask-dilate 2" +
+       " --keypoints " + Path("k/%02d.json"));
+    EXPECT_FALSE(fs::exists(Path("m/5.png")));
+    for (int k : {1, 4}) {
+      // the words give the joints (and the orbit view); a camera is render's own option
+      const std::string words = (view == camera ? camera : " --size 240x180") + " " + FrameWords(animation, k);
+      Ok("render " + mrm_ + " " + words + " -o " + Path("r.png") + " --mask " + Path("r_m.png") +
+         " --mask-dilate 2 --keypoints " + Path("r_k.json"));
+      const std::string n = std::to_string(k);
+      EXPECT_EQ(ReadBytes(Path("c/" + n + ".png")), ReadBytes(Path("r.png"))) << view << k;
+      EXPECT_EQ(ReadBytes(Path("m/" + n + ".png")), ReadBytes(Path("r_m.png"))) << view << k;
+      EXPECT_EQ(ReadBytes(Path("k/0" + n + ".json")), ReadBytes(Path("r_k.json"))) << view << k;
+      EXPECT_GT(RobotPixels(image::ReadPng(Path("c/" + n + ".png"))), 500) << view << k;
+    }
+    fs::remove_all(Path("c"));
+    fs::remove_all(Path("m"));
+    fs::remove_all(Path("k"));
+  }
+  // the sequences' names are checked before anything is drawn
+  const Result bad = RunUrdfsnap("animate " + mrm_ + " --trajectory " + csv_ + " -o " + Path("c/%d.png") +
+                                 " --keypoints " + Path("k/%d.txt"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("--keypoints '" + Path("k/%d.txt") + "': expected .json files"), std::string::npos)
+      << bad.output;
+  const Result one = RunUrdfsnap("animate " + mrm_ + " --trajectory " + csv_ + " -o " + Path("c/%d.png") +
+                                 " --mask " + Path("mask.png"));
+  EXPECT_EQ(one.status, 2);
+  EXPECT_NE(one.output.find("expected a pattern with the frame number, such as frames/%05d.png"), std::string::npos)
+      << one.output;
+  EXPECT_FALSE(fs::exists(Path("c")));
 }
 
 TEST_F(AnimateTest, JointsBeyondTheirLimitsAreDrawnAsRecordedWithOneWarningPerJoint) {

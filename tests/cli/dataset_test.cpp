@@ -1,5 +1,5 @@
 // `urdfsnap dataset`: the same bytes for a seed, shards that add up to the whole, COCO annotations
-// that agree with the label images, and its errors.
+// that agree with the label images, cameras from a poses file, and its errors.
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -87,6 +87,37 @@ TEST_F(DatasetTest, AnnotationsAgreeWithTheLabelImages) {
   EXPECT_EQ(robots, 5);   // from 6 to 8 m the robot is in every image
 }
 
+TEST_F(DatasetTest, APosesFileGivesEachSampleItsCameraInTurn) {
+  URDFSNAP_REQUIRE_GL();
+  // a small calibration (off-centre, non-square pixels) and two cameras looking back at the arm
+  const std::string info = Write("cam.yaml", "width: 96\nheight: 72\nk: [80, 0, 45.5, 0, 84, 40.25, 0, 0, 1]\n"
+                                             "d: []\ndistortion_model: plumb_bob\n");
+  const std::string poses = Write("poses.txt", "# x y z qx qy qz qw\n5 0 1 -0.5 -0.5 0.5 0.5\n\n"
+                                              "0,5,1.2,0,-0.7071067811865476,0.7071067811865476,0\n");
+  Dataset("p", "--seed 3 --camera-info " + info + " --camera-poses " + poses);
+  const nlohmann::json coco = Coco("p/annotations.json");
+  ASSERT_EQ(coco["images"].size(), 5u);
+  const std::vector<std::string> pose_options = {"5,0,1,-0.5,-0.5,0.5,0.5",
+                                                 "0,5,1.2,0,-0.7071067811865476,0.7071067811865476,0"};
+  for (int k : {0, 1, 2}) {
+    const nlohmann::json& image = coco["images"][k];
+    EXPECT_EQ(image["width"], 96);
+    const double x = image["camera"]["pose"][0], y = image["camera"]["pose"][1];
+    EXPECT_NEAR(x, k % 2 ? 0 : 5, 1e-12) << k;
+    EXPECT_NEAR(y, k % 2 ? 5 : 0, 1e-12) << k;
+    // the sample is `render` of its joints through that camera
+    std::string joints;
+    for (const auto& [name, value] : image["joints"].items()) joints += " -j " + name + "=" + value.dump();
+    const Result r = RunUrdfsnap("render " + kMrm + " --no-grid --camera-info " + info + " --camera-pose " +
+                                 pose_options[k % 2] + joints + " -o " + Path("r.png"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(ReadBytes(Path("r.png")), ReadBytes(Path("p/images/00000" + std::to_string(k) + ".png"))) << k;
+  }
+  // a camera on a link: every sample from the link's frame, moved by the poses
+  Dataset("f", "--seed 3 --camera-frame link_02 --camera-poses " + Write("back.txt", "0 0 -3 0 0 0 1\n"));
+  EXPECT_NE(ReadBytes(Path("f/images/000000.png")), ReadBytes(Path("f/images/000001.png")));
+}
+
 TEST_F(DatasetTest, ErrorsAreOneLine) {
   const auto error = [&](const std::string& options) {
     const Result r = RunUrdfsnap("dataset " + kMrm + " -o " + Path("e") + " " + options);
@@ -99,6 +130,14 @@ TEST_F(DatasetTest, ErrorsAreOneLine) {
             "urdfsnap: error: --distance '4:2': expected MIN:MAX, MIN not above MAX, both from 0.001 to 1e+06\n");
   EXPECT_EQ(error("--count 3 --elevation 0:95"),
             "urdfsnap: error: --elevation '0:95': expected MIN:MAX, MIN not above MAX, both from -90 to 90\n");
+  const std::string poses = Write("poses.txt", "1 2 3 0 0 0 1\n1 2 3\n");
+  EXPECT_EQ(error("--count 3 --camera-poses " + poses),
+            "urdfsnap: error: " + poses + ":2: expected a camera pose: seven numbers X Y Z QX QY QZ QW\n");
+  EXPECT_EQ(error("--count 3 --camera-poses " + Write("one.txt", "1 2 3 0 0 0 1\n") + " --distance 2:3"),
+            "urdfsnap: error: --distance places random cameras around the robot; the cameras are given by "
+            "--camera-poses\n");
+  EXPECT_EQ(error("--count 3 --camera-frame nowhere"),
+            "urdfsnap: error: camera frame 'nowhere' is not a link of robot 'mrm'\n");
   EXPECT_FALSE(std::filesystem::exists(Path("e")));
 }
 

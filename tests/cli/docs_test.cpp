@@ -43,20 +43,25 @@ TEST_F(DocsTest, WritesThePageAndTwoRunsAreByteIdentical) {
   ASSERT_EQ(second.status, 0) << second.output;
   const auto files = Files(Path("page"));
   EXPECT_EQ(files, Files(Path("again")));
-  for (const char* name : {"README.md", "index.html", "images/robot.png", "images/tf.png",
-                           "joints/link_01__link_02/lower.png", "joints/link_01__link_02/default.png",
-                           "joints/link_01__link_02/upper.png"}) {
+  // pictures and animations as WebP by default
+  for (const char* name : {"README.md", "index.html", "images/robot.webp", "images/tf.webp",
+                           "images/turntable.webp", "joints/link_01__link_02/lower.webp",
+                           "joints/link_01__link_02/default.webp", "joints/link_01__link_02/upper.webp",
+                           "joints/link_01__link_02/sweep.webp"}) {
     EXPECT_TRUE(files.count(name)) << name;
   }
-  EXPECT_FALSE(files.count("images/collision.png")) << "mrm has no collision geometry";
-  for (const auto& [name, bytes] : files) {
+  EXPECT_FALSE(files.count("images/collision.webp")) << "mrm has no collision geometry";
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"again", "mrm.urdf", "page"}));  // no temporary folders
+  // as PNG on request: the views at --size, the joints' pictures three quarters of it
+  ASSERT_EQ(RunUrdfsnap("docs " + model_ + " --stills png --animations none -o " + Path("png")).status, 0);
+  for (const auto& [name, bytes] : Files(Path("png"))) {
     if (name.ends_with(".png")) {
       EXPECT_GT(image::DecodePng(bytes, name).width, 0) << name;
     }
   }
-  EXPECT_EQ(image::ReadPng(Path("page/images/robot.png")).width, 640);
-  EXPECT_EQ(image::ReadPng(Path("page/joints/link_01__link_02/upper.png")).width, 320);
-  EXPECT_EQ(Listing(), (std::vector<std::string>{"again", "mrm.urdf", "page"}));  // no temporary folders
+  EXPECT_EQ(image::ReadPng(Path("png/images/robot.png")).width, 640);
+  EXPECT_EQ(image::ReadPng(Path("png/joints/link_01__link_02/upper.png")).width, 480);
+  fs::remove_all(Path("png"));
   // missing parent folders are made
   ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("docs/robots/mrm")).status, 0);
   EXPECT_EQ(Files(Path("docs/robots/mrm")), files);
@@ -64,8 +69,8 @@ TEST_F(DocsTest, WritesThePageAndTwoRunsAreByteIdentical) {
 
 TEST_F(DocsTest, CheckPassesOnAFreshPageAndFailsAfterALimitChanges) {
   URDFSNAP_REQUIRE_GL();
-  ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);
-  const Result fresh = RunUrdfsnap("docs " + model_ + " --check " + Path("page"));
+  ASSERT_EQ(RunUrdfsnap("docs " + model_ + " --stills png -o " + Path("page")).status, 0);
+  const Result fresh = RunUrdfsnap("docs " + model_ + " --stills png --check " + Path("page"));
   EXPECT_EQ(fresh.status, 0) << fresh.output;
   EXPECT_NE(fresh.output.find(Path("page") + ": up to date"), std::string::npos) << fresh.output;
 
@@ -76,7 +81,7 @@ TEST_F(DocsTest, CheckPassesOnAFreshPageAndFailsAfterALimitChanges) {
   ASSERT_NE(upper, std::string::npos);
   urdf.replace(upper, urdf.find('"', upper + 7) - upper + 1, "upper=\"1\"");
   Write("mrm.urdf", urdf);
-  const Result stale = RunUrdfsnap("docs " + model_ + " --check " + Path("page"));
+  const Result stale = RunUrdfsnap("docs " + model_ + " --stills png --check " + Path("page"));
   EXPECT_EQ(stale.status, 1) << stale.output;
   EXPECT_NE(stale.output.find(Path("page") + ": stale, "), std::string::npos) << stale.output;
   EXPECT_TRUE(std::regex_search(stale.output, std::regex("\n  README.md: line [0-9]+ differs: committed '.*', now "
@@ -92,11 +97,11 @@ TEST_F(DocsTest, CheckPassesOnAFreshPageAndFailsAfterALimitChanges) {
 
 TEST_F(DocsTest, CheckFindsMissingExtraAndUndecodableFiles) {
   URDFSNAP_REQUIRE_GL();
-  ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);
+  ASSERT_EQ(RunUrdfsnap("docs " + model_ + " --stills png -o " + Path("page")).status, 0);
   fs::remove(Path("page/images/tf.png"));
   Write("page/notes.txt", "mine");
   Write("page/images/robot.png", "not a png");
-  const Result r = RunUrdfsnap("docs " + model_ + " --check " + Path("page"));
+  const Result r = RunUrdfsnap("docs " + model_ + " --stills png --check " + Path("page"));
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("  images/tf.png: missing from the committed page\n"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("  notes.txt: not in a fresh page\n"), std::string::npos) << r.output;
@@ -109,7 +114,7 @@ TEST_F(DocsTest, CheckFindsMissingExtraAndUndecodableFiles) {
   // a committed page is input: a link out of it is not followed (nor a pipe read)
   fs::remove(Path("page/images/robot.png"));
   fs::create_symlink("/etc/passwd", Path("page/images/robot.png"));
-  const Result linked = RunUrdfsnap("docs " + model_ + " --check " + Path("page"));
+  const Result linked = RunUrdfsnap("docs " + model_ + " --stills png --check " + Path("page"));
   EXPECT_EQ(linked.status, 2) << linked.output;
   EXPECT_NE(linked.output.find("the page's file 'images/robot.png': 'images/robot.png' leads outside"),
             std::string::npos) << linked.output;
@@ -140,7 +145,7 @@ TEST_F(DocsTest, CheckComparesAnimationsByTheirFrames) {
         << stale.output;
     EXPECT_NE(stale.output.find("  images/turntable." + format + ": "), std::string::npos) << stale.output;
     // a cut GIF holds its first frames; a cut WebP does not read at all
-    const std::string cut = format == "gif" ? " frames, now 48\n" : "not an animated WebP file";
+    const std::string cut = format == "gif" ? " frames, now 36\n" : "not an animated WebP file";
     EXPECT_NE(stale.output.find(cut), std::string::npos) << stale.output;
   }
 }
@@ -149,12 +154,12 @@ TEST_F(DocsTest, ReplacesAnOlderPageAsAWhole) {
   URDFSNAP_REQUIRE_GL();
   ASSERT_EQ(RunUrdfsnap("docs " + model_ + " -o " + Path("page")).status, 0);
   Write("page/joints/gone.png", "left over from an older robot");
-  const Result r = RunUrdfsnap("docs " + model_ + " -o " + Path("page") + " --joints 'link_01*'");
+  const Result r = RunUrdfsnap("docs " + model_ + " -o " + Path("page") + " --sections 'link_01*'");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_FALSE(fs::exists(Path("page/joints/gone.png")));
   EXPECT_FALSE(fs::exists(Path("page/joints/base_link__link_01")));
-  EXPECT_TRUE(fs::exists(Path("page/joints/link_01__link_02/upper.png")));
-  EXPECT_NE(ReadBytes(Path("page/README.md")).find("4 movable joints are left out of this page (--joints)."),
+  EXPECT_TRUE(fs::exists(Path("page/joints/link_01__link_02/upper.webp")));
+  EXPECT_NE(ReadBytes(Path("page/README.md")).find("4 movable joints are left out of this page (--sections)."),
             std::string::npos);
   EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf", "page"}));
 }
@@ -168,7 +173,16 @@ TEST_F(DocsTest, ErrorsAreOneLineWithStatus2AndWriteNothing) {
   Write("mine/thesis.tex", "precious");
   const std::vector<Case> cases = {
       {Path("broken.urdf") + " -o " + Path("page"), "broken.urdf:1: joint 'j'"},
-      {model_ + " -o " + Path("page") + " --joints 'elbow*'", "--joints 'elbow*' matches none of the movable joints"},
+      {model_ + " -o " + Path("page") + " --sections 'elbow*'", "--sections 'elbow*' matches none of the movable joints"},
+      // --joints was the section filter: now the page's pose, as in render
+      {model_ + " -o " + Path("page") + " --joints 'link_01*'",
+       "--joints 'link_01*': no such joint file (--joints is the page's pose as in render, a YAML/JSON joint "
+       "file; to give sections only to some joints use --sections 'link_01*')"},
+      {model_ + " -o " + Path("page") + " -j nothing=1", "nothing"},
+      // view options that cannot work on a page of fitted pictures say why
+      {model_ + " -o " + Path("page") + " --distance 3", "docs: --distance does not apply: each picture of the page "
+       "is fitted to what it shows (choose the direction with --yaw and --pitch, the point looked at with --focal)"},
+      {model_ + " -o " + Path("page") + " --camera-info cam.yaml", "docs: --camera-info does not apply"},
       {model_ + " -o " + Path("page") + " --yaw sideways", "--yaw"},
       {model_, "give -o DIR to write a page, or --check DIR"},
       {model_ + " -o " + Path("page") + " --check " + Path("page"), "give -o DIR to write a page, or --check DIR"},
@@ -187,6 +201,30 @@ TEST_F(DocsTest, ErrorsAreOneLineWithStatus2AndWriteNothing) {
   }
   EXPECT_EQ(Listing(), (std::vector<std::string>{"broken.urdf", "mine", "mrm.urdf"}));
   EXPECT_EQ(ReadBytes(Path("mine/thesis.tex")), "precious");
+}
+
+TEST_F(DocsTest, TheJointOptionsPoseThePage) {
+  URDFSNAP_REQUIRE_GL();
+  const std::string common = " --stills png --animations none --sections link_02__link_03";
+  ASSERT_EQ(RunUrdfsnap("docs " + model_ + common + " -o " + Path("zero")).status, 0);
+  const Result posed = RunUrdfsnap("docs " + model_ + common + " -j link_01__link_02=0.8 -o " + Path("posed"));
+  ASSERT_EQ(posed.status, 0) << posed.output;
+  Write("pose.yaml", "link_01__link_02: 0.8\n");
+  const Result filed = RunUrdfsnap("docs " + model_ + common + " --joints " + Path("pose.yaml") + " -o " + Path("filed"));
+  ASSERT_EQ(filed.status, 0) << filed.output;
+  // the robot, and the other joint's section, at the pose; the same from a joint file
+  const std::string section = "joints/link_02__link_03/default.png";
+  for (const std::string file : {std::string("images/robot.png"), section}) {
+    EXPECT_NE(ReadBytes(Path("posed/" + file)), ReadBytes(Path("zero/" + file))) << file;
+    EXPECT_EQ(ReadBytes(Path("posed/" + file)), ReadBytes(Path("filed/" + file))) << file;
+  }
+  EXPECT_NE(ReadBytes(Path("posed/README.md")).find("at the page's pose (given with -j or --joints"), std::string::npos);
+  EXPECT_NE(ReadBytes(Path("zero/README.md")).find("its default (joint_state_publisher's)"), std::string::npos);
+  // docs always fits: --fit changes nothing and says so
+  const Result fit = RunUrdfsnap("docs " + model_ + common + " --fit -o " + Path("fit"));
+  ASSERT_EQ(fit.status, 0) << fit.output;
+  EXPECT_NE(fit.output.find("warning: --fit: docs always fits each picture"), std::string::npos) << fit.output;
+  EXPECT_EQ(ReadBytes(Path("fit/images/robot.png")), ReadBytes(Path("zero/images/robot.png")));
 }
 
 }  // namespace

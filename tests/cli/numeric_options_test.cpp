@@ -49,18 +49,19 @@ void AddCameraOptions(std::vector<CommandOption>& options, const char* command, 
   options.push_back({command, "--distort", Kind::kFlag});
 }
 
-// render's view, display and pose options, which serve and docs have too (docs without -j);
-// `before` is what comes before the option on the command line
+// render's view, display and pose options, which serve and docs have too (docs without --distance,
+// --fit and the camera's: it refuses them with the reason, outside its --help); `before` is what
+// comes before the option on the command line
 void AddViewOptions(std::vector<CommandOption>& options, const char* command, const std::string& before,
-                    bool joint_values = true) {
+                    bool fitted_only = false) {
   const auto number = [&](const char* option, const std::string& use) {
     options.push_back({command, option, Kind::kNumber, before + " " + use});
   };
-  if (joint_values) number("--joint", "-j base_link__link_01={v}");
+  number("--joint", "-j base_link__link_01={v}");
   number("--size", "--size {v}x480");
   number("--yaw", "--yaw {v}");
   number("--pitch", "--pitch {v}");
-  number("--distance", "--distance {v}");
+  if (!fitted_only) number("--distance", "--distance {v}");
   number("--focal", "--focal 0,{v},0");
   number("--fov", "--fov {v}");
   number("--fit-margin", "--fit --fit-margin {v}");
@@ -72,9 +73,9 @@ void AddViewOptions(std::vector<CommandOption>& options, const char* command, co
   }
   for (const char* flag : {"--xacro-ns", "--no-clamp", "--fit", "--collision", "--no-visual", "--no-grid", "--tf",
                            "--no-tf-names", "--no-tf-axes", "--no-tf-arrows", "--no-aa", "--allow-missing-meshes"}) {
-    options.push_back({command, flag, Kind::kFlag});
+    if (!fitted_only || std::string(flag) != "--fit") options.push_back({command, flag, Kind::kFlag});
   }
-  AddCameraOptions(options, command, before);
+  if (!fitted_only) AddCameraOptions(options, command, before);
 }
 
 // every option --help lists, per command
@@ -128,6 +129,8 @@ const std::vector<CommandOption>& Options() {
         {"docs", "--output", Kind::kText},
         {"docs", "--check", Kind::kText},
         {"docs", "--animations", Kind::kText},
+        {"docs", "--stills", Kind::kText},
+        {"docs", "--sections", Kind::kText},
         {"docs", "--quiet", Kind::kFlag},
         {"docs", "--shard", Kind::kText},
         {"docs", "--no-shard", Kind::kFlag},
@@ -152,6 +155,11 @@ const std::vector<CommandOption>& Options() {
         {"render", "--mask", Kind::kText},
         {"render", "--keypoints", Kind::kText},
         {"render", "--mask-dilate", Kind::kNumber, "MRM -o OUT --mask M.png --mask-dilate {v}"},
+        {"animate", "--mask", Kind::kText},
+        {"animate", "--keypoints", Kind::kText},
+        {"animate", "--mask-dilate", Kind::kNumber, "MRM -o OUT.gif --turntable --mask M/%d.png --mask-dilate {v}"},
+        {"dataset", "--camera-poses", Kind::kText},
+        {"dataset", "--camera-frame", Kind::kText},
         {"dataset", "--output", Kind::kText},
         {"dataset", "--count", Kind::kNumber, "MRM -o OUT --count {v}"},
         {"dataset", "--seed", Kind::kNumber, "MRM -o OUT --count 1 --seed {v}"},
@@ -169,7 +177,7 @@ const std::vector<CommandOption>& Options() {
     AddViewOptions(o, "render", "MRM -o OUT");
     AddViewOptions(o, "serve", "MRM --port 0");
     AddViewOptions(o, "animate", "MRM -o OUT.gif --turntable");
-    AddViewOptions(o, "docs", "MRM -o OUT", false);  // its --joints are globs, text
+    AddViewOptions(o, "docs", "MRM -o OUT", true);
     // dataset: the display options and the camera's intrinsics; poses and cameras are drawn
     for (const char* text : {"--help", "--package", "--rviz", "--fixed-frame"}) {
       o.push_back({"dataset", text, std::string(text) == "--help" ? Kind::kFlag : Kind::kText});

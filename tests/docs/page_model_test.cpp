@@ -149,23 +149,23 @@ TEST_F(PageModelTest, SweepsLoopThroughTheRangeAtAnEvenSpeed) {
 
 TEST_F(PageModelTest, JointPatternsChooseSectionsAndMimicPatternsTheirLeader) {
   PageOptions options;
-  options.joint_globs = {"finger_r*", "t?rn"};
+  options.section_globs = {"finger_r*", "t?rn"};
   const RobotPage page = Page(options);
   ASSERT_EQ(page.sections.size(), 2u);
   EXPECT_EQ(page.sections[0].name, "turn");
   EXPECT_EQ(page.sections[1].name, "finger_left");
-  EXPECT_NE(page.sections_note.find("2 movable joints are left out of this page (--joints)."), std::string::npos);
+  EXPECT_NE(page.sections_note.find("2 movable joints are left out of this page (--sections)."), std::string::npos);
   EXPECT_EQ(page.joints[1].anchor, "");   // lift: no section, no link
 }
 
 TEST_F(PageModelTest, APatternMatchingNothingIsAnErrorListingTheJoints) {
   PageOptions options;
-  options.joint_globs = {"elbow*"};
+  options.section_globs = {"elbow*"};
   try {
     Page(options);
     FAIL() << "expected an error";
   } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "--joints 'elbow*' matches none of the movable joints of robot 'grip&bot': turn, lift, "
+    EXPECT_STREQ(e.what(), "--sections 'elbow*' matches none of the movable joints of robot 'grip&bot': turn, lift, "
                            "wrist, finger_left");
   }
 }

@@ -28,7 +28,7 @@ TEST_F(PageShardTest, PageImagesListEveryPictureAndAnimationInTheOrderTheyAreMad
   EXPECT_EQ(files[0].file, "images/robot.png");
   EXPECT_EQ(files[3].images, PageLook{}.turntable_frames);  // after the collision and TF views
   // 3 views, the turntable, and per joint section (turn, lift, wrist, finger_left) pictures and a sweep
-  const auto sweeps = std::count_if(files.begin(), files.end(), [](const PageImage& f) { return f.images == 36; });
+  const auto sweeps = std::count_if(files.begin(), files.end(), [](const PageImage& f) { return f.images == PageOptions{}.sweep_frames; });
   EXPECT_EQ(sweeps, 4);
 }
 

@@ -318,5 +318,24 @@ TEST_F(RendererTest, MisspeltShaderUniformIsAnError) {
   }
 }
 
+// The define switches the sources' #ifdef variants: only the textured surface program samples an
+// image, so only it has the uniforms for one.
+TEST_F(RendererTest, DefineSelectsTheShaderVariant) {
+  renderer_->Render(Scene{}, FrontView(), 8, 8);   // makes the renderer's context current
+  const ShaderProgram textured("lit.vert", "lit.frag", "TEXTURED");
+  textured.Use();
+  textured.Set("texture_units", 1);
+  textured.Set("image", 0);
+  const ShaderProgram plain("lit.vert", "lit.frag");
+  plain.Use();
+  plain.Set("diffuse", Eigen::Vector4f(1, 0, 0, 1));
+  try {
+    plain.Set("image", 0);
+    FAIL() << "the untextured program samples an image";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "shader program lit.vert + lit.frag has no active uniform 'image'");
+  }
+}
+
 }  // namespace
 }  // namespace urdfsnap::gl

@@ -13,6 +13,7 @@
 #include "image/image_file_names.h"
 #include "image/npy_writer.h"
 #include "image/png_reader.h"
+#include "support/error_text.h"
 #include "support/temp_folder.h"
 
 namespace urdfsnap::image {
@@ -85,11 +86,13 @@ TEST(DepthLabelFiles, TheExtensionChoosesTheDepthEncoding) {
   const DepthImage depth{2, 1, {kNone, 1.5f}};
   for (const std::string extension : {".png", ".npy"}) {
     WriteDepthFile(depth, folder.Path("depth" + extension));
-    EXPECT_EQ(EncodeDepth(depth, extension), Contents(folder.Path("depth" + extension))) << extension;
+    EXPECT_EQ(EncodeDepthFile(depth, folder.Path("depth" + extension)), Contents(folder.Path("depth" + extension))) << extension;
   }
-  EXPECT_EQ(EncodeDepth(depth, ".npy").substr(0, 6), "\x93NUMPY");
-  EXPECT_EQ(EncodeDepth(depth, ".png").substr(1, 3), "PNG");
-  EXPECT_THROW(EncodeDepth(depth, ".tiff"), Error);
+  EXPECT_EQ(EncodeDepthFile(depth, "d.npy").substr(0, 6), "\x93NUMPY");
+  EXPECT_EQ(EncodeDepthFile(depth, "depth/%05d.png").substr(1, 3), "PNG");
+  EXPECT_EQ(test::ErrorText([&] { EncodeDepthFile(depth, "d.tiff"); }),
+            "depth file 'd.tiff': expected a .png (16-bit millimetres) or .npy (float32 metres) file; urdfsnap "
+            "does not write .tiff images");
 }
 
 TEST(DepthLabelFiles, LabelNamesGoBesideTheLabelImage) {

@@ -5,14 +5,14 @@ parents and children), and the schema is not vacuous (a damaged description fail
 
 usage: check_info_schema.py URDFSNAP SCHEMA MODELS_DIR
 """
-import copy
 import json
 import os
 import subprocess
 import sys
 import xml.etree.ElementTree as ElementTree
 
-import jsonschema
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from json_schema import load_validator, refuse_damages  # noqa: E402
 
 
 def info(urdfsnap, model):
@@ -54,10 +54,7 @@ def check_against_urdf(description, urdf, model):
 
 def main():
     urdfsnap, schema_path, models = (os.path.abspath(p) for p in sys.argv[1:4])
-    with open(schema_path) as f:
-        schema = json.load(f)
-    jsonschema.Draft7Validator.check_schema(schema)
-    validator = jsonschema.Draft7Validator(schema)
+    validator = load_validator(schema_path)
     cases = [os.path.join(models, p) for p in ("mrm_description/urdf/mrm.urdf",
                                                "mrm_description/urdf/mrm.xacro",
                                                "meshbot_description/urdf/meshbot.urdf")]
@@ -72,11 +69,7 @@ def main():
                lambda d: d["joints"][0]["origin"].update(xyz=[1, 2]),
                lambda d: d["links"][0].update(mass="heavy"),
                lambda d: d["tree"][0].update(depth=-1)]
-    for damage in damages:
-        broken = copy.deepcopy(description)
-        damage(broken)
-        if validator.is_valid(broken):
-            sys.exit("the schema accepts a damaged description")
+    refuse_damages(validator, description, damages, "a robot description")
     print(f"info_schema: {len(cases)} robots valid, {len(damages)} damaged descriptions refused")
 
 

@@ -15,11 +15,11 @@ using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
 // odom -> base_link moving 1 m along +x from stamp 100 s to 101 s
-tf::TfBuffer Drive() {
-  tf::TfBuffer buffer;
-  buffer.Add({"odom", "base_link", 100'000'000'000, {0, 0, 0}, Eigen::Quaterniond::Identity()},
+std::shared_ptr<const tf::TfBuffer> Drive() {
+  auto buffer = std::make_shared<tf::TfBuffer>();
+  buffer->Add({"odom", "base_link", 100'000'000'000, {0, 0, 0}, Eigen::Quaterniond::Identity()},
              false, "drive");
-  buffer.Add({"odom", "base_link", 101'000'000'000, {1, 0, 0}, Eigen::Quaterniond::Identity()},
+  buffer->Add({"odom", "base_link", 101'000'000'000, {1, 0, 0}, Eigen::Quaterniond::Identity()},
              false, "drive");
   return buffer;
 }

@@ -14,12 +14,12 @@ import { execFileSync } from "node:child_process";
 import { mkdirSync, writeFileSync, readFileSync, rmSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
-import { McapWriter } from "@mcap/core";
 import { CdrWriter, EncapsulationKind } from "@foxglove/cdr";
 import { ros2humble } from "@foxglove/rosmsg-msgs-common";
 import { MessageWriter } from "@foxglove/rosmsg2-serialization";
 import zstd from "@foxglove/wasm-zstd";
-import lz4 from "lz4js";
+import { nanos, writeBag } from "./bag_writing.mjs";
+import { kJointStateSchema, kStringSchema, kTfMessageSchema } from "./ros2_schemas.mjs";
 
 const out = process.argv[2];
 if (!out) throw new Error("usage: node make_test_bags.mjs OUT_DIR [--large]");
@@ -30,25 +30,6 @@ await zstd.isLoaded;
 
 const kStartSec = 1700000000;
 const kJoints = ["shoulder", "elbow", "wrist"];
-
-// the schema texts rosbag2 stores (ros2msg: the type's .msg, then each type it uses after a line
-// of '=' and "MSG: pkg/Name")
-const kSeparator = "=".repeat(80);
-const kHeaderSections = `${kSeparator}
-MSG: std_msgs/Header
-builtin_interfaces/Time stamp
-string frame_id
-${kSeparator}
-MSG: builtin_interfaces/Time
-int32 sec
-uint32 nanosec
-`;
-const kJointStateSchema = `std_msgs/Header header
-string[] name
-float64[] position
-float64[] velocity
-float64[] effort
-${kHeaderSections}`;
 
 const jointStateWriter = new MessageWriter([
   ros2humble["sensor_msgs/JointState"],
@@ -81,62 +62,6 @@ function bigEndianJointState(message) {
   writer.float64Array(message.position, true);
   writer.float64Array([], true).float64Array([], true);
   return writer.data;
-}
-
-function nanos({ sec, nanosec }) {
-  return BigInt(sec) * 1_000_000_000n + BigInt(nanosec);
-}
-
-class BufferWritable {
-  chunks = [];
-  size = 0n;
-  async write(buffer) {
-    this.chunks.push(Buffer.from(buffer));
-    this.size += BigInt(buffer.byteLength);
-  }
-  position() {
-    return this.size;
-  }
-  bytes() {
-    return Buffer.concat(this.chunks);
-  }
-}
-
-const compressors = {
-  none: undefined,
-  zstd: (data) => ({ compression: "zstd", compressedData: zstd.compress(data, 3) }),
-  lz4: (data) => ({ compression: "lz4", compressedData: lz4.compress(data) }),
-};
-
-// Writes a bag from `channels` ({topic, schema: {name, encoding, data}|null, encoding}) and
-// `messages` ([channelIndex, logTime (bigint), data]) and returns its bytes.
-async function writeBag({ channels, messages, compression = "zstd", chunkSize = 4096, useChunks = true }) {
-  const writable = new BufferWritable();
-  const writer = new McapWriter({
-    writable,
-    useChunks,
-    chunkSize,
-    compressChunk: compressors[compression],
-  });
-  await writer.start({ profile: "ros2", library: "urdfsnap test bags (@mcap/core)" });
-  const ids = [];
-  for (const channel of channels) {
-    const schemaId = channel.schema ? await writer.registerSchema(channel.schema) : 0;
-    ids.push(
-      await writer.registerChannel({
-        schemaId,
-        topic: channel.topic,
-        messageEncoding: channel.encoding ?? "cdr",
-        metadata: new Map([["offered_qos_profiles", ""]]),
-      }),
-    );
-  }
-  let sequence = 0;
-  for (const [channel, logTime, data] of messages) {
-    await writer.addMessage({ channelId: ids[channel], sequence: sequence++, logTime, publishTime: logTime, data });
-  }
-  await writer.end();
-  return writable.bytes();
 }
 
 const jointStateChannel = {
@@ -355,28 +280,6 @@ writeFileSync(join(out, "bad_not_sqlite.db3"), "SQLite format 3\0but nothing els
 // transforms: a base driving +x while turning on /tf (odom -> base_link every 100 ms, x = 0.1 i m,
 // yaw = 0.1 i rad, i = 0 .. 10) with its laser on /tf_static (base_link -> laser at 0.1, 0, 0.3),
 // as MCAP with definitions and as SQLite without; and broken trees
-const kTfMessageSchema = `geometry_msgs/TransformStamped[] transforms
-${kSeparator}
-MSG: geometry_msgs/TransformStamped
-std_msgs/Header header
-string child_frame_id
-Transform transform
-${kHeaderSections}${kSeparator}
-MSG: geometry_msgs/Transform
-Vector3 translation
-Quaternion rotation
-${kSeparator}
-MSG: geometry_msgs/Vector3
-float64 x
-float64 y
-float64 z
-${kSeparator}
-MSG: geometry_msgs/Quaternion
-float64 x 0
-float64 y 0
-float64 z 0
-float64 w 1
-`;
 const tfWriter = new MessageWriter([
   ros2humble["tf2_msgs/TFMessage"], ros2humble["geometry_msgs/TransformStamped"], ros2humble["std_msgs/Header"],
   ros2humble["builtin_interfaces/Time"], ros2humble["geometry_msgs/Transform"], ros2humble["geometry_msgs/Vector3"],
@@ -416,11 +319,12 @@ for (const [name, messages] of Object.entries(tfBags)) {
 }
 // the rover sample (models/rover_description) driving a loop of 1 m radius anticlockwise in
 // `seconds` at `hz`: its wheels on /joint_states (each turning by the distance it rolls over its
-// 0.1 m radius), its head panning, odom -> base_link on /tf, its description on /robot_description
+// 0.1 m radius), its head panning, odom -> base_link on /tf, its description on /robot_description;
+// `tf(i, base)` gives the transforms of message i (a hostile bag's change), `description` the bytes
+// of the /robot_description message
 const roverUrdf = readFileSync(join(dirname(fileURLToPath(import.meta.url)), "../../models/rover_description/urdf/rover.urdf"), "utf8");
 const stringWriter = new MessageWriter([ros2humble["std_msgs/String"]]);
-const kStringSchema = "string data\n";
-function roverLoop(seconds, hz) {
+function roverLoop(seconds, hz, { tf = (i, base) => [base], description = stringWriter.writeMessage({ data: roverUrdf }) } = {}) {
   const radius = 1, track = 0.46, wheel = 0.1;
   const channels = [
     jointStateChannel,
@@ -428,7 +332,7 @@ function roverLoop(seconds, hz) {
     { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } },
   ];
   const start = { sec: kStartSec, nanosec: 0 };
-  const messages = [[2, nanos(start), stringWriter.writeMessage({ data: roverUrdf })]];
+  const messages = [[2, nanos(start), description]];
   const count = Math.round(seconds * hz);
   for (let i = 0; i <= count; ++i) {
     const t = i / hz;
@@ -441,11 +345,29 @@ function roverLoop(seconds, hz) {
     const state = { header: { stamp, frame_id: "" }, name: names, position: [left, left, right, right, Math.sin(heading * 2)], velocity: [], effort: [] };
     const base = transform("odom", "base_link", stamp, [radius * Math.sin(heading), radius * (1 - Math.cos(heading)), 0], heading);
     messages.push([0, nanos(stamp), jointStateWriter.writeMessage(state)]);
-    messages.push([1, nanos(stamp), tfWriter.writeMessage({ transforms: [base] })]);
+    messages.push([1, nanos(stamp), tfWriter.writeMessage({ transforms: tf(i, base) })]);
   }
   return writeBag({ channels, messages, chunkSize: 1 << 20 });
 }
 writeFileSync(join(out, "rover_loop.mcap"), await roverLoop(8, 20));
+// hostile rover bags: each is the loop with one thing wrong at message 3 (or in its description)
+const atThree = (change) => ({ tf: (i, base) => (i === 3 ? change(base) : [base]) });
+// a description whose CDR string claims 100 MB (the length after the 4-byte encapsulation header)
+const hugeDescription = stringWriter.writeMessage({ data: "<robot/>" });
+new DataView(hugeDescription.buffer, hugeDescription.byteOffset).setUint32(4, 100_000_000, true);
+const hostileRovers = {
+  "rover_tf_nan.mcap": atThree((t) => [{ ...t, transform: { ...t.transform, rotation: { x: NaN, y: 0, z: 0, w: 1 } } }]),
+  "rover_tf_loop.mcap": atThree((t) => [t, transform("base_link", "odom", t.header.stamp, [0, 0, 0], 0)]),
+  "rover_tf_two_parents.mcap": atThree((t) => [{ ...t, header: { ...t.header, frame_id: "map" } }]),
+  "rover_tf_backwards.mcap": atThree((t) => [{ ...t, header: { ...t.header, stamp: { sec: kStartSec, nanosec: 0 } } }]),
+  "rover_description_huge.mcap": { description: hugeDescription },
+};
+for (const [name, options] of Object.entries(hostileRovers)) {
+  writeFileSync(join(out, name), await roverLoop(1, 10, options));
+}
+// a description whose body is a mesh named relative to it: found next to the bag
+const relativeMeshUrdf = roverUrdf.replace('<geometry><box size="0.6 0.4 0.14"/></geometry>', '<geometry><mesh filename="meshes/base_plate.stl"/></geometry>');
+writeFileSync(join(out, "rover_relative_mesh.mcap"), await roverLoop(1, 10, { description: stringWriter.writeMessage({ data: relativeMeshUrdf }) }));
 // a description that is no URDF
 writeFileSync(join(out, "description_junk.mcap"), await writeBag({
   channels: [jointStateChannel, { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } }],

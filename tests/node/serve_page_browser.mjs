@@ -1,14 +1,15 @@
-// urdfsnap serve's page in a real browser (Debian's chromium, driven by playwright-core): the
-// frame appears, a dragged slider, an orbit drag, the wheel and a toggle change the picture, the
-// model broken and fixed on disk shows in the page, and no console error is logged. Writes what
+// urdfsnap serve's page in a real browser (Debian's chromium, driven by playwright-core): a model
+// broken at start-up shows its error until the good one is written, then the frame appears, a
+// dragged slider, an orbit drag, the wheel, a toggle, fit and the focus list change the picture,
+// the model broken and fixed on disk shows in the page, and no console error is logged. Writes what
 // the shell test checks next with urdfsnap itself: the suite case and pose the page copies, the
 // frame it shows, and a screenshot.
-// usage: node serve_page_browser.mjs URL MODEL_FILE OUT_DIR
+// usage: node serve_page_browser.mjs URL MODEL_FILE GOOD_MODEL_FILE OUT_DIR
 import { makeChecker, openBrowserPage } from './browser_check.mjs';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 
-const [url, modelFile, out] = process.argv.slice(2);
+const [url, modelFile, goodFile, out] = process.argv.slice(2);
 const {check, failures} = makeChecker();
 const {browser, page, errors} = await openBrowserPage({width: 1180, height: 640});
 
@@ -30,7 +31,14 @@ async function settledFrame() {
 }
 const status = () => page.textContent('#status');
 
+// broken at start-up: the page shows the error and waits; the good model written, it starts
 await page.goto(url);
+await page.waitForSelector('#error:not([hidden])', {timeout: 15000}).catch(() => {});
+const atStart = await page.textContent('#error');
+check(/urdfsnap: error: .*mrm\.urdf:\d+: link 'base_link' is defined twice/.test(atStart), `a model broken at start-up shows its error (${atStart.trim()})`);
+writeFileSync(modelFile, readFileSync(goodFile, 'utf8'));
+await page.waitForSelector('#error[hidden]', {state: 'attached', timeout: 15000}).catch(() => {});
+check(await page.$eval('#error', (e) => e.hidden), 'the mended model clears the error');
 const first = await settledFrame();
 check(first.length > 1000, 'the first frame is shown');
 check((await page.textContent('#robot-name')) === 'mrm', 'the robot\'s name is the title');
@@ -73,8 +81,20 @@ writeFileSync(join(out, 'pose.yaml'), await page.inputValue('#copy-text'));
 await page.click('#copy-close');
 writeFileSync(join(out, 'frame.png'), Buffer.from(gridless, 'base64'));
 await page.check('#grid');
-await settledFrame();
+const gridded = await settledFrame();
 await page.screenshot({path: join(out, 'page.png')});
+
+// fit frames the robot from where the camera looks now; the focus list frames one link
+const distanceOf = (text) => Number(/distance ([\d.]+)/.exec(text)[1]);
+const zoomedIn = await status();
+await page.click('#fit-view');
+const fitted = await settledFrame();
+const fittedStatus = await status();
+check(fitted !== gridded && distanceOf(fittedStatus) !== distanceOf(zoomedIn) && !/focal 0,0,0 /.test(fittedStatus),
+      `fit frames the robot, looking at its middle (${fittedStatus})`);
+await page.selectOption('#focus', 'link_05');
+const focused = await settledFrame();
+check(focused !== fitted && distanceOf(await status()) < distanceOf(fittedStatus), `the focus list frames one link (${await status()})`);
 
 // break the model on disk: the page shows the located error by itself; fix it: it recovers
 const good = readFileSync(modelFile, 'utf8');

@@ -64,5 +64,23 @@ TEST(ResolvedRequest, FilesAreReadOnceAndRequestsOverThemReadNone) {
   EXPECT_FALSE(resolved.fixed_frame_given);
 }
 
+TEST(ResolvedRequest, TheCameraInfoFileIsReadWithTheOtherFilesNotPerRequest) {
+  const test::TempFolder folder("resolved_request_camera");
+  RenderRequest base;
+  base.model.path = "arm.urdf";
+  base.camera_info = folder.Write("info.yaml", "width: 64\nheight: 48\nk: [50, 0, 32, 0, 50, 24, 0, 0, 1]\n");
+  Warnings warnings;
+  const RequestFiles files = ReadRequestFiles(base, warnings);
+  ASSERT_TRUE(files.camera.info.has_value());
+  std::filesystem::remove(base.camera_info);
+
+  RenderRequest query = base;
+  query.near = "0.5";
+  const ResolvedRequest resolved = ResolveRequest(query, files, CommandLineLabel);
+  ASSERT_TRUE(resolved.settings.camera.has_value());
+  EXPECT_EQ(resolved.settings.size.width, 64);
+  EXPECT_EQ(resolved.settings.size.height, 48);
+}
+
 }  // namespace
 }  // namespace urdfsnap::request

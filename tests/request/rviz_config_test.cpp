@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <variant>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -201,9 +202,9 @@ TEST_F(RvizConfigTest, ReadsEveryPropertyOfAFileRvizWrote) {
   EXPECT_EQ(view.near_clip, 0.05);
   EXPECT_EQ(view.far_clip, scene::OrbitView{}.far_clip);
 
-  EXPECT_THAT(warnings.messages(),
-              ElementsAre(path + ": skipped display class 'rviz/MarkerArray', which urdfsnap "
-                                 "does not draw"));
+  EXPECT_TRUE(warnings.empty());
+  ASSERT_EQ(config.displays.size(), 1u);   // the MarkerArray display, read by rviz_displays
+  EXPECT_TRUE(std::holds_alternative<display::MarkerSettings>(config.displays[0].kind));
 }
 
 TEST_F(RvizConfigTest, MrmSampleIsTheCloseView) {
@@ -226,7 +227,8 @@ TEST_F(RvizConfigTest, MrmSampleIsTheCloseView) {
   EXPECT_TRUE(config.scene.show_visual);
   EXPECT_FALSE(config.scene.show_collision);
   EXPECT_FALSE(config.scene.tf.enabled);
-  EXPECT_EQ(warnings.messages().size(), 1u);  // the MarkerArray display
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(config.displays.size(), 1u);  // the MarkerArray display
 }
 
 TEST_F(RvizConfigTest, MissingKeysKeepTheDefaults) {
@@ -405,13 +407,13 @@ TEST_F(RvizConfigTest, MissingFileIsAnError) {
 TEST_F(RvizConfigTest, UnknownDisplayClassesWarnOncePerClass) {
   const RvizConfig config = Read(R"(Visualization Manager:
   Displays:
-    - Class: rviz/MarkerArray
+    - Class: rviz/Map
       Enabled: true
-      Name: Markers A
-    - Class: rviz/MarkerArray
+      Name: Map A
+    - Class: rviz/Map
       Enabled: true
-      Name: Markers B
-    - Class: rviz/PointCloud2
+      Name: Map B
+    - Class: rviz/Image
       Enabled: true
       Name: Cloud
   Views:
@@ -419,9 +421,9 @@ TEST_F(RvizConfigTest, UnknownDisplayClassesWarnOncePerClass) {
       Class: rviz/Orbit
 )");
   EXPECT_THAT(warnings.messages(),
-              ElementsAre(path + ": skipped display class 'rviz/MarkerArray', which urdfsnap "
+              ElementsAre(path + ": skipped display class 'rviz/Map', which urdfsnap "
                                  "does not draw",
-                          path + ": skipped display class 'rviz/PointCloud2', which urdfsnap "
+                          path + ": skipped display class 'rviz/Image', which urdfsnap "
                                  "does not draw"));
   EXPECT_FALSE(config.scene.grid.enabled);
 }
@@ -445,7 +447,7 @@ TEST_F(RvizConfigTest, OtherViewsKeepTheDefaultViewWithAWarning) {
 }
 
 TEST_F(RvizConfigTest, PropertiesUrdfsnapCannotFollowAreWarnings) {
-  Read(R"(Visualization Manager:
+  const RvizConfig config = Read(R"(Visualization Manager:
   Global Options:
     Fixed Frame: base_link
   Displays:
@@ -482,9 +484,9 @@ TEST_F(RvizConfigTest, PropertiesUrdfsnapCannotFollowAreWarnings) {
                          "draws 1-pixel lines",
                   path + ":19: rviz/TF display 'TF': 'Marker Alpha' is not 1; urdfsnap draws "
                          "opaque TF markers",
-                  path + ":24: Views/Current: 'Target Frame' is not <Fixed Frame>; urdfsnap "
-                         "orbits in the fixed frame",
                   path + ":23: Views/Current: 'Invert Z Axis' is true; urdfsnap keeps +Z up"));
+  // the view's Target Frame is followed (--follow)
+  EXPECT_EQ(config.target_frame, "link_01");
 }
 
 // Laid out as RViz 2 (Humble) saves a package's view_robot.rviz, as ur_description ships one, with
@@ -565,7 +567,7 @@ Visualization Manager:
             {}
       Update Interval: 0
       Value: true
-    - Class: rviz_default_plugins/LaserScan
+    - Class: rviz_default_plugins/Image
       Enabled: true
       Name: LaserScan
   Enabled: true
@@ -627,14 +629,14 @@ TEST_F(RvizConfigTest, ReadsRviz2ConfigsAsRviz1Ones) {
   EXPECT_TRUE(config.view.focal.isApprox(Eigen::Vector3d(-0.0457618, -0.0705851, 0.4973494), 1e-6));
   EXPECT_NEAR(config.view.near_clip, 0.01, 1e-9);
   EXPECT_THAT(warnings.messages(),
-              ElementsAre(path + ": skipped display class 'rviz_default_plugins/LaserScan', which "
+              ElementsAre(path + ": skipped display class 'rviz_default_plugins/Image', which "
                                  "urdfsnap does not draw"));
 }
 
 TEST_F(RvizConfigTest, NothingUsableIsAnErrorNamingWhatWasSkipped) {
   EXPECT_EQ(ErrorFor(R"(Visualization Manager:
   Displays:
-    - Class: rviz_default_plugins/LaserScan
+    - Class: rviz_default_plugins/Image
       Name: Scan
     - Class: rviz_default_plugins/Map
       Name: Map
@@ -642,12 +644,12 @@ TEST_F(RvizConfigTest, NothingUsableIsAnErrorNamingWhatWasSkipped) {
     Current:
       Class: rviz_default_plugins/TopDownOrtho
 )"),
-            path + ": nothing urdfsnap can use: no Grid, RobotModel or TF display and no Orbit "
-                   "view; skipped display classes 'rviz_default_plugins/LaserScan', "
+            path + ": nothing urdfsnap can use: no Grid, RobotModel, TF or message display and "
+                   "no Orbit view; skipped display classes 'rviz_default_plugins/Image', "
                    "'rviz_default_plugins/Map'");
   EXPECT_EQ(ErrorFor("Visualization Manager:\n  Displays: []\n"),
-            path + ": nothing urdfsnap can use: no Grid, RobotModel or TF display and no Orbit "
-                   "view");
+            path + ": nothing urdfsnap can use: no Grid, RobotModel, TF or message display and "
+                   "no Orbit view");
 }
 
 TEST_F(RvizConfigTest, Rviz2PropertiesUrdfsnapCannotFollowAreWarnings) {

@@ -130,5 +130,38 @@ TEST(FitView, RepeatedScenesFitAsOnce) {
   EXPECT_EQ(still.distance, one.distance);
 }
 
+// A turntable's distance: the largest of the per-yaw fits with the focal point kept, exactly (the
+// same hulls, the same arithmetic), with a mesh's repeated corners counted once; no vertices, 0.
+TEST(FitDistance, IsTheLargestFitOverTheYaws) {
+  Scene scene = CubeAt(Moved(1, 0.5, 0));
+  auto repeated = std::make_shared<geometry::TriangleMesh>(*scene.items[0].mesh);
+  repeated->positions.insert(repeated->positions.end(), repeated->positions.begin(), repeated->positions.end());
+  scene.items.push_back(scene.items[0]);
+  scene.items[1].mesh = repeated;
+  scene.items[1].X_FG = Moved(-1, 0, 0.25);
+  OrbitView view;
+  view.focal = {0.2, 0, 0};
+  const std::vector<double> yaws = {0, 0.7, 1.9, 3.1, 4.4};
+  // with a margin of its own on each axis (--fit-margin) too
+  for (const FitMargin margin : {FitMargin{}, FitMargin{0.1, 0.2}}) {
+    double widest = 0;
+    for (const double yaw : yaws) {
+      OrbitView side = view;
+      side.yaw = yaw;
+      widest = std::max(widest, FitView(scene, side, 4.0 / 3, true, margin).distance);
+    }
+    EXPECT_EQ(FitDistance(scene, view, yaws, 4.0 / 3, margin), widest);
+  }
+  double largest = 0;
+  for (const double yaw : yaws) {
+    OrbitView side = view;
+    side.yaw = yaw;
+    largest = std::max(largest, FitView(scene, side, 4.0 / 3, true).distance);
+  }
+  EXPECT_EQ(FitDistance(scene, view, yaws, 4.0 / 3), largest);
+  EXPECT_GT(largest, FitView(scene, view, 4.0 / 3, true).distance);   // some yaw needs more room
+  EXPECT_EQ(FitDistance(Scene{}, view, yaws, 4.0 / 3), 0);
+}
+
 }  // namespace
 }  // namespace urdfsnap::scene

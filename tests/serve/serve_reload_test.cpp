@@ -135,5 +135,41 @@ TEST_F(ServeReloadTest, EditBreakAndFixWhileServing) {
   EXPECT_EQ(server.Stop(SIGINT), 0);
 }
 
+TEST_F(ServeReloadTest, BrokenAtStartIsServedAsItsErrorUntilFixed) {
+  folder_.Write("params.xacro", "<robot xmlns:xacro='http://www.ros.org/wiki/xacro'>\n  <xacro:property name='tilt_upper'\n</robot>\n");
+  folder_.Write("head.stl", Tetrahedron(0.2));
+  const std::string error = RenderError();
+  ServeProcess server(robot_ + " --port 0");
+  ASSERT_TRUE(server.started()) << server.Stderr();
+  // said once on stderr, and by every part of the API the page asks
+  const std::string prefix = "urdfsnap: error: ";
+  ASSERT_EQ(error.rfind(prefix, 0), 0u) << error;
+  const std::string message = error.substr(prefix.size(), error.find('\n') - prefix.size());
+  EXPECT_NE(server.Stderr().find("urdfsnap: warning: " + message), std::string::npos) << server.Stderr();
+  auto client = server.Client();
+  auto status = nlohmann::json::parse(client->Get("/api/status")->body);
+  EXPECT_EQ(status["error"].get<std::string>() + "\n", error);
+  for (const char* path : {"/api/view", "/api/robot", "/render.png", "/api/fit"}) {
+    const auto response = client->Get(path);
+    EXPECT_EQ(response->status, 422) << path;
+    EXPECT_NE(response->body.find(error.substr(0, error.find('\n'))), std::string::npos) << path << response->body;
+  }
+  EXPECT_EQ(client->Get("/")->status, 200);
+  // fixed: the page's start, its robot and frames
+  folder_.Write("params.xacro", Params(1.0, 0.5));
+  status = WaitForGeneration(*client, status["model"]);
+  EXPECT_TRUE(status["error"].is_null());
+  const auto view = client->Get("/api/view");
+  ASSERT_EQ(view->status, 200);
+  EXPECT_EQ(nlohmann::json::parse(view->body)["case"]["model"], robot_);
+  EXPECT_EQ(client->Get("/api/robot")->status, 200);
+  EXPECT_EQ(client->Get("/render.png")->status, 200);
+  EXPECT_EQ(server.Stop(SIGINT), 0);
+  // option values no edit can mend still end it at once, as render does
+  const test::ProcessResult bad = test::RunUrdfsnap("serve " + robot_ + " --port 0 --pitch steep");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.err, "urdfsnap: error: --pitch 'steep': expected a finite number\n");
+}
+
 }  // namespace
 }  // namespace urdfsnap::serve_test

@@ -1,8 +1,7 @@
-// The located-YAML reader every YAML input goes through (.rviz files; the model for suite, joint
-// and trajectory files): a document loaded with its parse error at a line, and a map read key by
-// key into typed values, each bad value an urdfsnap::Error at the line of the value that is wrong
-// ("view.rviz:12: Grid display 'Grid': 'Alpha': expected a number, got 'x'"). Private to the
-// build (not installed): it names yaml-cpp's types.
+// A map of a located YAML document (yaml_reader.h) read key by key into typed values, each bad
+// value an urdfsnap::Error at the line of the value that is wrong ("view.rviz:12: Grid display
+// 'Grid': 'Alpha': expected a number, got 'x'"): .rviz files and joint files. Private to the build
+// (not installed): it names yaml-cpp's types.
 #pragma once
 
 #include <limits>
@@ -11,18 +10,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "common/internal/yaml_reader.h"
 #include "common/warnings.h"
 
 namespace urdfsnap {
-
-// Parses `text`; throws urdfsnap::Error "PATH:LINE: bad YAML: ..." at the parser's line.
-YAML::Node LoadYaml(const std::string& text, const std::string& path);
-
-// A node's 1-based line; 0 (the whole file) when the node has none.
-int LineOf(const YAML::Node& node);
-
-// What a node is, for messages: "'text'", "a map", "a list" or "nothing".
-std::string DescribeYaml(const YAML::Node& node);
 
 // One map of a file and the name messages give it. The Read functions leave `out` alone when
 // `key` is missing and throw urdfsnap::Error at the value's line when it cannot be read.

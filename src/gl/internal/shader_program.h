@@ -11,9 +11,10 @@ namespace urdfsnap::gl {
 
 class ShaderProgram {
  public:
-  // Compiles shaders/<vertex_name> and shaders/<fragment_name> and links them. Throws
-  // urdfsnap::Error with the shader's name and GL's info log when either step fails.
-  ShaderProgram(const std::string& vertex_name, const std::string& fragment_name);
+  // Compiles shaders/<vertex_name> and shaders/<fragment_name> and links them; `define`, when not
+  // empty, is #define'd in both (after their #version line), for the sources' #ifdef variants.
+  // Throws urdfsnap::Error with the shader's name and GL's info log when either step fails.
+  ShaderProgram(const std::string& vertex_name, const std::string& fragment_name, const std::string& define = "");
   ~ShaderProgram();
   ShaderProgram(const ShaderProgram&) = delete;
   ShaderProgram& operator=(const ShaderProgram&) = delete;
@@ -25,12 +26,13 @@ class ShaderProgram {
   void Set(const char* name, const Eigen::Matrix3f& value) const;
   void Set(const char* name, const Eigen::Vector4f& value) const;
   void Set(const char* name, const Eigen::Vector3f& value) const;
+  void Set(const char* name, float value) const;
   void Set(const char* name, int value) const;        // also a sampler's texture unit
   void Set(const char* name, unsigned value) const;
 
  private:
   int Location(const char* name) const;
-  std::string name_;                    // "lit.vert + lit.frag", for messages
+  std::string name_;                    // "lit.vert + lit.frag" (with " TEXTURED"), for messages
   unsigned id_ = 0;
   std::map<std::string, int, std::less<>> locations_;   // the active uniforms, read after linking
 };

@@ -132,6 +132,8 @@ function wireControls() {
     showControls();
     requestFrame();
   });
+  $('fit-view').addEventListener('click', fitView);
+  $('focus').addEventListener('change', fitView);
   $('save-png').addEventListener('click', savePng);
   $('copy-pose').addEventListener('click', () => copyText(poseYaml(), 'A joint file: urdfsnap render MODEL --joints FILE'));
   $('copy-case').addEventListener('click', () => copyText(suiteCaseYaml(), 'A case for the cases: list of a snapshot suite (urdfsnap snapshot check)'));
@@ -205,6 +207,38 @@ function wireOrbit() {
     else zoom(units * ZOOM_PER_WHEEL_UNIT * page.view.distance);
     requestFrame();
   }, {passive: false});
+}
+
+// The view the server fits to the robot, or to the link the focus list names, for the frame as
+// it is now (pose, displays, size, direction); the camera keeps its yaw and pitch.
+async function fitView() {
+  const query = new URLSearchParams(frameQuery());
+  const link = $('focus').value;
+  if (link) query.set('link', link);
+  try {
+    const response = await fetch('api/fit?' + query.toString(), {cache: 'no-store'});
+    const body = await response.json();
+    if (!response.ok) {
+      page.frameError = body.error;
+      showError();
+      return;
+    }
+    page.view = {yaw: body.yaw, pitch: body.pitch, distance: body.distance, focal: body.focal};
+    requestFrame();
+  } catch (error) {
+    page.frameError = 'urdfsnap serve does not answer (' + error.message + ')';
+    showError();
+  }
+}
+
+// The focus list: the whole robot, then each link; the choice is kept across reloads while the
+// link exists.
+function buildFocusList() {
+  const select = $('focus');
+  const chosen = select.value;
+  while (select.options.length > 1) select.remove(1);
+  for (const link of page.robot.links) select.add(new Option(link, link));
+  select.value = page.robot.links.includes(chosen) ? chosen : '';
 }
 
 // ---- joints ------------------------------------------------------------------------------
@@ -390,6 +424,7 @@ async function loadRobot() {
   $('robot-name').textContent = body.name;
   document.title = body.name + ' · urdfsnap serve';
   buildSliders();
+  buildFocusList();
   showError();
   return true;
 }
@@ -474,9 +509,28 @@ async function copyText(text, note) {
 
 // ---- start -------------------------------------------------------------------------------
 
+// /api/view, once /api/status says the model has loaded (a model broken at start-up is served as
+// its error until an edit mends it; asking /api/status first keeps 422s out of the console).
+async function initialView() {
+  for (;;) {
+    try {
+      const status = await (await fetch('api/status', {cache: 'no-store'})).json();
+      page.modelError = status.error ?? '';
+      if (!status.error) {
+        const response = await fetch('api/view', {cache: 'no-store'});
+        if (response.ok) return response.json();
+      }
+    } catch (error) {
+      page.modelError = 'urdfsnap serve does not answer (' + error.message + '); retrying';
+    }
+    showError();
+    $('status').textContent = 'waiting for the model to load';
+    await new Promise((resolve) => setTimeout(resolve, STATUS_POLL_MS));
+  }
+}
+
 async function start() {
-  const response = await fetch('api/view', {cache: 'no-store'});
-  page.initial = await response.json();
+  page.initial = await initialView();
   page.view = viewFromOptions(page.initial.options);
   page.options = optionsFromInitial(page.initial.options);
   wireControls();

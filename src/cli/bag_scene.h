@@ -1,0 +1,45 @@
+// A robot drawn as RViz draws a recording: the fixed frame (--fixed-frame, else the .rviz file's
+// Fixed Frame) resolved through the bag's TF when it is not a link of the robot (odom, map: the
+// robot is then placed where TF puts its root at each moment), the TF display showing the bag's
+// frames, robot and others, and the view's Target Frame (--follow) followed through the motion.
+// Shared by `animate` (with or without a bag) and `render --bag`.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "animation/animation_frames.h"
+#include "animation/followed_frame.h"
+#include "animation/tf_display.h"
+#include "common/warnings.h"
+#include "motion/root_poses.h"
+#include "request/render_session.h"
+#include "request/resolved_request.h"
+#include "tf/tf_buffer.h"
+
+namespace urdfsnap::cli {
+
+struct BagScene {
+  request::Prepared robot;    // prepared with the fixed frame when it is a link, else from the root
+  std::shared_ptr<const tf::TfBuffer> transforms;   // the bag's /tf and /tf_static
+  std::optional<motion::RootPoses> root;   // set for a fixed frame outside the robot
+  std::optional<animation::TfDisplay> tf;  // set when the TF display is on
+  std::optional<animation::FollowedFrame> follow;   // set for a target frame
+
+  // What the scene adds to each frame, for animation::AnimationFrames.
+  animation::SceneAdditions Additions() const;
+};
+
+// Prepares `resolved` (its fit left to the caller) for the recording `bag` ("" for none: no TF,
+// the robot's links alone in the TF display), whose trajectory time 0 is the stamp `stamp_at_zero`
+// (seconds since 1970), into `out`. With `model_from_bag` (the description the bag recorded), mesh
+// file names relative to the description are found from the folder that holds the bag (a file's
+// folder, a rosbag2 folder's parent), as they would be from a URDF file saved beside it. A fixed frame that is neither a link nor connected to the root
+// by the bag's TF is an error when --fixed-frame gave it, and when an .rviz file gave it a warning,
+// the root link then fixed as `render` does without a bag. Throws urdfsnap::Error as
+// RenderSession::Prepare, tf::ReadBagTransforms and animation::FollowedFrame do.
+void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,
+                     double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out);
+
+}  // namespace urdfsnap::cli

@@ -1,0 +1,80 @@
+// BagStill: the bag's trajectory read, a one-frame plan at --at, the robot prepared through
+// PrepareBagScene and fitted by AnimationFrames, drawn with its TF display.
+#include "cli/bag_still.h"
+
+#include <cmath>
+#include <utility>
+
+#include "common/error.h"
+#include "common/number_text.h"
+#include "motion/trajectory_file.h"
+#include "request/value_parsing.h"
+
+namespace urdfsnap::cli {
+
+void BagStillOptions::AddOptions(CLI::App& command) {
+  command.add_option("--bag", bag,
+                     "draw one moment of a recording (.mcap or .db3 file, or a rosbag2 folder): the "
+                     "joints' latest /joint_states values at or before --at and TF at --at; the robot "
+                     "is MODEL, or without one the bag's robot description. A MODEL that is a bag is "
+                     "taken for --bag (default: no bag)");
+  command.add_option("--at", at,
+                     "with --bag, the moment drawn: seconds from the first /joint_states stamp (as "
+                     "`animate --start` counts), or a stamp (seconds since 1970, from 1e9 up) "
+                     "(default 0)");
+  command.add_option("--topic", topic, "with --bag, its sensor_msgs/msg/JointState topic (default /joint_states)");
+  command.add_option("--description-topic", description_topic,
+                     "with --bag and no MODEL, the std_msgs/msg/String topic whose first message is "
+                     "the robot description (default /robot_description)");
+}
+
+BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
+                   bool model_from_bag, Warnings& warnings) {
+  request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
+  const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
+  const model::NamedValues joints = resolved.joints;   // -j and --joints: for joints the bag does not name
+  const motion::JointRules rules{resolved.clamp};
+  trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
+  const double at = o.at.empty() ? 0 : request::ParseFinite(o.at, "--at");
+  plan_.trajectory_start = motion::TrajectorySeconds(trajectory_, at, "--at");
+  if (plan_.trajectory_start < 0 || plan_.trajectory_start > trajectory_.EndTime()) {
+    throw Error("--at " + FormatNumber(at) + " is outside " + o.bag + ", whose '" + o.topic + "' lasts " +
+                FormatNumber(trajectory_.EndTime()) + " s from its first message");
+  }
+  PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), model_from_bag,
+                  warnings, scene_);
+  request::Prepared& prepared = scene_.robot;
+  poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);
+  const render::RenderSettings& s = prepared.settings;
+  frames_.emplace(*prepared.renderer, plan_, *poses_, animation::CameraRequest{s.view, s.size, fit, s.fit_margin, false, s.camera},
+                  warnings, scene_.Additions());
+  prepared.positions = frames_->Positions(0, warnings);
+  prepared.settings.view = frames_->View(0);
+}
+
+std::int64_t BagStill::StampNanoseconds() const {
+  return static_cast<std::int64_t>(std::llround((trajectory_.stamp_at_zero.value_or(0) + plan_.trajectory_start) * 1e9));
+}
+
+display::FrameLookup BagStill::Frames() const {
+  const std::shared_ptr<const tf::TfBuffer> transforms = scene_.transforms;
+  if (!transforms) return {};
+  const request::Prepared& p = scene_.robot;
+  const std::string fixed = p.settings.scene.fixed_frame.empty() ? p.robot->links().front().name : p.settings.scene.fixed_frame;
+  return [transforms, fixed](const std::string& frame, std::int64_t time_ns) -> std::optional<Eigen::Isometry3d> {
+    const std::optional<tf::Lookup> found = transforms->Find(fixed, frame, time_ns);
+    if (!found) return std::nullopt;
+    return found->X_TS;
+  };
+}
+
+image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameOutputs& outputs,
+                            Warnings& warnings) const {
+  const request::Prepared& p = scene_.robot;
+  if (p.settings.camera) return session.Draw(p, outputs);
+  return session.GlRenderer(p.settings.samples)
+      .Render(frames_->Scene(*p.renderer, 0, warnings), p.settings.view, p.settings.size.width,
+              p.settings.size.height, outputs);
+}
+
+}  // namespace urdfsnap::cli

@@ -1,0 +1,70 @@
+// `render --bag FILE --at SECONDS`: one still of a recording as a player shows it at that moment.
+// The robot is the bag's /robot_description when no MODEL is given; its joints take the latest
+// /joint_states value at or before the time, and TF (the fixed frame, the TF display) is looked up
+// as tf2 does at that time. The still is frame 0 of a one-frame animation (animation::
+// AnimationFrames), so that it is exactly what `animate --start SECONDS` draws first.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "animation/animation_frames.h"
+#include "bag/joint_state_bag.h"
+#include "bag/robot_description.h"
+#include "cli/bag_scene.h"
+#include "common/warnings.h"
+#include "display/display.h"
+#include "image/image.h"
+#include "motion/frame_plan.h"
+#include "motion/frame_poses.h"
+#include "motion/trajectory.h"
+#include "request/render_request.h"
+#include "request/render_session.h"
+
+namespace urdfsnap::cli {
+
+struct BagStillOptions {
+  std::string bag;   // --bag; "" for a render without a bag
+  std::string at;    // --at, checked as a number when the still is made
+  std::string topic = bag::kDefaultJointStateTopic;
+  std::string description_topic = bag::kDefaultDescriptionTopic;
+
+  // Adds --bag, --at, --topic and --description-topic to `command`.
+  void AddOptions(CLI::App& command);
+};
+
+class BagStill {
+ public:
+  // Reads the bag's joint states and TF and prepares `request` (whose model is the robot to show)
+  // at the time --at names: seconds from the first /joint_states stamp (as `animate --start`
+  // counts), or a stamp (seconds since 1970, from 1e9 up). Throws urdfsnap::Error for a bad --at
+  // (also one outside the recording) and as the bag's readers and RenderSession::Prepare do.
+  // `model_from_bag`: the request's model is the description the bag recorded (see PrepareBagScene).
+  BagStill(const BagStillOptions& options, request::RenderSession& session, const request::RenderRequest& request,
+           bool model_from_bag, Warnings& warnings);
+  BagStill(const BagStill&) = delete;
+  BagStill& operator=(const BagStill&) = delete;
+
+  // The robot as drawn: the moment's joint positions and the view (--fit applied to this moment).
+  const request::Prepared& prepared() const { return scene_.robot; }
+
+  // The moment drawn as a stamp, nanoseconds since 1970.
+  std::int64_t StampNanoseconds() const;
+  // Frames of the bag's TF in the fixed frame (the root link when none is set), for message
+  // displays; nothing for frames TF does not connect to it.
+  display::FrameLookup Frames() const;
+
+  // Draws the still through `session`'s GL renderer into the images `outputs` asks for.
+  image::Frame Draw(request::RenderSession& session, const image::FrameOutputs& outputs, Warnings& warnings) const;
+
+ private:
+  motion::Trajectory trajectory_;
+  motion::FramePlan plan_;
+  BagScene scene_;
+  std::optional<motion::FramePoses> poses_;
+  std::optional<animation::AnimationFrames> frames_;
+};
+
+}  // namespace urdfsnap::cli

@@ -1,0 +1,51 @@
+// The displays of one render: made from their settings, fed the messages of their topics (from a
+// bag, or a message file), drawn together into a scene. What a command uses:
+//
+//   display::DisplaySet displays(config.displays, fixed_frame, resources);
+//   display::ReadBagDisplayMessages(bag, until_ns, displays, warnings);
+//   scene::Scene scene = robot.Pose(positions);
+//   displays.Draw(until_ns, lookup, scene, warnings);
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "display/display.h"
+#include "display/display_settings.h"
+#include "display/marker_shapes.h"
+
+namespace urdfsnap::display {
+
+class DisplaySet {
+ public:
+  DisplaySet(const std::vector<DisplaySettings>& settings, const std::string& fixed_frame,
+             const MarkerResources& resources);
+
+  // Whether any display subscribes to `topic`.
+  bool Subscribes(const std::string& topic) const;
+
+  // Gives a decoded message of `type` on `topic`, received at `time_ns`, to every display of that
+  // topic that reads the type; one that does not is warned of (as RViz's display status says),
+  // once per topic. `where` names the message in warnings and errors. Throws urdfsnap::Error
+  // "WHERE: ..." when the message lacks a field a display reads.
+  void Receive(const std::string& topic, const std::string& type, const bag::MessageValue& message,
+               std::int64_t time_ns, const std::string& where, Warnings& warnings);
+
+  // Every display's scene items at `time_ns`, in the displays' order.
+  void Draw(std::int64_t time_ns, const FrameLookup& lookup, scene::Scene& scene, Warnings& warnings) const;
+
+  bool empty() const { return displays_.empty(); }
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<std::unique_ptr<Display>> displays_;
+};
+
+// Feeds `displays` every message of the bag at `path` on a topic they subscribe to, logged at or
+// before `until_ns`, decoded by the bag's definitions (or those urdfsnap ships). Throws
+// urdfsnap::Error for an unreadable bag or a message that does not decode, naming it.
+void ReadBagDisplayMessages(const std::string& path, std::int64_t until_ns, DisplaySet& displays,
+                            Warnings& warnings);
+
+}  // namespace urdfsnap::display

@@ -1,0 +1,133 @@
+// Batches of points into GL vertices: position and 8-bit rgba, repeated per corner.
+#include "gl/internal/point_set_drawing.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "gl/internal/gl_api.h"
+
+namespace urdfsnap::gl {
+
+namespace {
+
+// One vertex: position in the fixed frame and colour, 16 bytes.
+struct PointVertex {
+  float position[3];
+  std::uint8_t rgba[4];
+};
+static_assert(sizeof(PointVertex) == 16);
+
+// Squares per draw call: the index buffer holds this many (4 vertices, 6 indices each), and a
+// batch streams at most 4 * kBatchSquares vertices (4 MiB).
+constexpr size_t kBatchSquares = 65536;
+
+std::uint8_t Channel(float value) {
+  return static_cast<std::uint8_t>(std::clamp(value, 0.f, 1.f) * 255.f + 0.5f);
+}
+
+}  // namespace
+
+PointSetDrawing::PointSetDrawing()
+    : point_("point.vert", "point.frag"), quad_("point_quad.vert", "point.frag"), box_("point_box.vert", "point.frag") {
+  glGenVertexArrays(1, &vertex_array_);
+  glBindVertexArray(vertex_array_);
+  glGenBuffers(2, buffers_);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(PointVertex), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(PointVertex),
+                        reinterpret_cast<const void*>(offsetof(PointVertex, rgba)));
+  // each square is two triangles of its strip-ordered corners: (0, 1, 2) and (2, 1, 3)
+  std::vector<std::uint32_t> indices;
+  indices.reserve(kBatchSquares * 6);
+  for (std::uint32_t q = 0; q < kBatchSquares; ++q) {
+    for (std::uint32_t i : {0u, 1u, 2u, 2u, 1u, 3u}) indices.push_back(4 * q + i);
+  }
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[1]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
+               indices.data(), GL_STATIC_DRAW);
+  glBindVertexArray(0);
+}
+
+PointSetDrawing::~PointSetDrawing() {
+  glDeleteBuffers(2, buffers_);
+  glDeleteVertexArrays(1, &vertex_array_);
+}
+
+// Streams points [first, first + count) as `copies` identical vertices each.
+void PointSetDrawing::Upload(const scene::PointSet& points, size_t first, size_t count, int copies) {
+  staging_.resize(count * copies * sizeof(PointVertex));
+  auto* out = reinterpret_cast<PointVertex*>(staging_.data());
+  for (size_t i = first; i < first + count; ++i) {
+    const Eigen::Vector3f& p = points.positions[i];
+    const Eigen::Vector4f& c = points.colours[i];
+    const PointVertex vertex{{p.x(), p.y(), p.z()}, {Channel(c[0]), Channel(c[1]), Channel(c[2]), Channel(c[3])}};
+    for (int k = 0; k < copies; ++k) *out++ = vertex;
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(staging_.size()), staging_.data(), GL_STREAM_DRAW);
+}
+
+void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
+  using Style = scene::PointSet::Style;
+  const size_t n = std::min(points.positions.size(), points.colours.size());
+  if (n == 0) return;
+  const Eigen::Matrix4f MVP = (P * V).cast<float>();
+  const ShaderProgram* program = &quad_;
+  int copies = 4;                  // vertices per point
+  int shape = 0;                   // point.frag's: 0 flat, 1 outlined square, 2 shaded disc
+  switch (points.style) {
+    case Style::kPoints:
+      program = &point_;
+      copies = 1;
+      break;
+    case Style::kSquares: shape = 1; break;
+    case Style::kFlatSquares: break;
+    case Style::kSpheres: shape = 2; break;
+    case Style::kBoxes:
+      program = &box_;
+      copies = 24;
+      shape = 1;
+      break;
+  }
+  program->Use();
+  if (program != &point_) program->Set("shape", shape);   // points: 0, the default (flat)
+  if (program == &point_) {
+    point_.Set("model_view_projection", MVP);
+    point_.Set("point_size", std::max(points.size.x(), 1.f));
+    glEnable(GL_PROGRAM_POINT_SIZE);
+  } else if (program == &quad_) {
+    quad_.Set("model_view", Eigen::Matrix4f(V.cast<float>()));
+    quad_.Set("projection", Eigen::Matrix4f(P.cast<float>()));
+    quad_.Set("size", points.size.x());
+  } else {
+    box_.Set("model_view_projection", MVP);
+    box_.Set("size", points.size);
+    box_.Set("axes", points.box_axes);
+  }
+  // boxes wind counter-clockwise seen from outside and lose their far faces to culling, as Ogre's
+  // default culling does; a camera-facing square needs none
+  if (points.style == Style::kBoxes) {
+    glFrontFace(GL_CCW);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
+  glBindVertexArray(vertex_array_);
+  const size_t batch = copies == 1 ? 4 * kBatchSquares : 4 * kBatchSquares / copies;
+  for (size_t first = 0; first < n; first += batch) {
+    const size_t count = std::min(batch, n - first);
+    Upload(points, first, count, copies);
+    if (copies == 1) {
+      glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
+    } else {
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * copies / 4 * 6), GL_UNSIGNED_INT, nullptr);
+    }
+  }
+  glDisable(GL_PROGRAM_POINT_SIZE);
+  glEnable(GL_CULL_FACE);
+}
+
+}  // namespace urdfsnap::gl

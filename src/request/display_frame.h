@@ -1,0 +1,35 @@
+// A prepared robot drawn with message displays (display/display_set.h): the robot posed, the
+// displays' items added in the fixed frame, one frame drawn. Frames the displays name are found
+// through the recording's TF when there is one, else among the robot's links posed as drawn (a
+// message file's markers on a link follow the link).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "display/display_set.h"
+#include "display/marker_shapes.h"
+#include "request/render_session.h"
+
+namespace urdfsnap::request {
+
+// MESH_RESOURCE files found as the robot's mesh URIs are (package://, file://, paths; the packages
+// and model file of `options`) and loaded as robot meshes are.
+display::MarkerResources MarkerResourcesFor(const scene::SceneOptions& options);
+
+// Each link of `robot` in the fixed frame (link `fixed_link`) for link poses X_RL; other frames
+// unknown. The pose is the same at every time.
+display::FrameLookup RobotFrames(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_RL,
+                                 int fixed_link);
+
+// Draws `prepared` (through its orbit view; a calibrated camera is an urdfsnap::Error) with what
+// `displays` show at `time_ns`; frames looked up through `tf` when it is set and knows them, else
+// among the robot's links. Display problems are warnings.
+image::Frame DrawWithDisplays(RenderSession& session, const Prepared& prepared,
+                              const display::DisplaySet& displays, std::int64_t time_ns,
+                              const display::FrameLookup& tf, Warnings& warnings,
+                              const image::FrameOutputs& outputs = {});
+
+}  // namespace urdfsnap::request

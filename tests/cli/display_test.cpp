@@ -1,0 +1,95 @@
+// `render --message` and `--display`: a MarkerArray with one marker of each type drawn on mrm and
+// compared with its golden image (tests/golden/every_marker.png); bad message files and options
+// are errors naming the file and line, broken markers warnings naming the marker.
+//
+// The golden image, after an intended change (look at it before committing):
+//   build/urdfsnap render models/mrm_description/urdf/mrm.urdf --package
+//     meshbot_description=models/meshbot_description --message
+//     tests/data/markers/every_marker.yaml:visualization_msgs/msg/MarkerArray --yaw 0.3 --pitch 0.6
+//     --distance 5.5 --focal 0.6,0,0.4 -o tests/golden/every_marker.png
+#include <cstdlib>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "cli/cli_fixture.h"
+#include "image/png_reader.h"
+
+namespace urdfsnap::cli_test {
+namespace {
+
+const std::string kEveryMarker =
+    (kSource / "tests/data/markers/every_marker.yaml").string() + ":visualization_msgs/msg/MarkerArray";
+const std::string kView = " --yaw 0.3 --pitch 0.6 --distance 5.5 --focal 0.6,0,0.4";
+
+// Pixels whose channels differ by more than 24 (antialiased edges move a little between Mesa
+// builds), as a share of the image.
+double ChangedShare(const image::Image& a, const image::Image& b) {
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
+  size_t changed = 0;
+  const size_t channels = a.rgb.size() / (static_cast<size_t>(a.width) * a.height);
+  for (size_t i = 0; i + channels <= a.rgb.size(); i += channels) {
+    for (size_t c = 0; c < channels; ++c) {
+      if (std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])) > 24) {
+        ++changed;
+        break;
+      }
+    }
+  }
+  return static_cast<double>(changed) / (static_cast<double>(a.width) * a.height);
+}
+
+class DisplayCliTest : public CliTest {};
+
+TEST_F(DisplayCliTest, EveryMarkerTypeMatchesItsGolden) {
+  URDFSNAP_REQUIRE_GL();
+  const Result r = RunUrdfsnap("render " + kMrm + " --package meshbot_description=" +
+                               (kSource / "models/meshbot_description").string() + " --message " + kEveryMarker + kView + " -o " +
+                               Path("every.png"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output, "");   // every marker drawn, no warning
+  const image::Image golden = image::ReadPng((kSource / "tests/golden/every_marker.png").string());
+  const image::Image actual = image::ReadPng(Path("every.png"));
+  EXPECT_LT(ChangedShare(actual, golden), 0.005);
+  // the markers are there at all: the robot alone differs from it in many pixels
+  ASSERT_EQ(RunUrdfsnap("render " + kMrm + kView + " -o " + Path("robot.png")).status, 0);
+  EXPECT_GT(ChangedShare(actual, image::ReadPng(Path("robot.png"))), 0.05);
+}
+
+TEST_F(DisplayCliTest, BadMessageFilesAreErrorsAtTheirLine) {
+  const std::string bad = Write("bad.yaml", "markers:\n  - ns: a\n    colour: {r: 1}\n");
+  Result r = RunUrdfsnap("render " + kMrm + " --message " + bad + ":visualization_msgs/msg/MarkerArray -o " +
+                         Path("x.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "urdfsnap: error: " + bad + ":3: 'colour' is not a field of visualization_msgs/Marker\n");
+  r = RunUrdfsnap("render " + kMrm + " --message " + bad + ":sensor_msgs/msg/Image -o " + Path("x.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("no display draws messages of type 'sensor_msgs/msg/Image'"), std::string::npos) << r.output;
+  r = RunUrdfsnap("render " + kMrm + " --display Map:/map -o " + Path("x.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("unknown display class 'Map'"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(Path("x.png")));
+}
+
+TEST_F(DisplayCliTest, BrokenMarkersAreWarningsNamingThemAndTheRestIsDrawn) {
+  URDFSNAP_REQUIRE_GL();
+  const std::string markers = Write("m.yaml", R"(markers:
+  - {ns: nan, id: 1, type: 1, pose: {position: {x: .nan}}, scale: {x: 1, y: 1, z: 1}}
+  - {ns: mesh, id: 2, type: 10, mesh_resource: "package://nowhere/m.stl", scale: {x: 1, y: 1, z: 1}}
+  - {ns: lost, id: 3, type: 1, header: {frame_id: nowhere}, scale: {x: 1, y: 1, z: 1}}
+  - {ns: ok, id: 4, type: 2, header: {frame_id: base_link}, scale: {x: 1, y: 1, z: 1}, color: {g: 1, a: 1}}
+)");
+  const Result r = RunUrdfsnap("render " + kMrm + " --message " + markers +
+                               ":visualization_msgs/msg/MarkerArray -o " + Path("m.png"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: " + markers + ": marker 'nan/1': contains invalid floating point values"),
+            std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("warning: " + markers + ": marker 'mesh/2': "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("warning: " + markers + ": marker 'lost/3': no transform from frame 'nowhere'"),
+            std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(Path("m.png")));
+}
+
+}  // namespace
+}  // namespace urdfsnap::cli_test
