@@ -9,6 +9,7 @@
 #include "common/number_text.h"
 #include "motion/trajectory_file.h"
 #include "request/value_parsing.h"
+#include "tf/bag_transforms.h"
 
 namespace urdfsnap::cli {
 
@@ -29,7 +30,8 @@ void BagStillOptions::AddOptions(CLI::App& command) {
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
-                   bool model_from_bag, Warnings& warnings) {
+                   bool model_from_bag, Warnings& warnings)
+    : bag_(o.bag) {
   request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
   const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
   const model::NamedValues joints = resolved.joints;   // -j and --joints: for joints the bag does not name
@@ -57,8 +59,11 @@ std::int64_t BagStill::StampNanoseconds() const {
 }
 
 display::FrameLookup BagStill::Frames() const {
-  const std::shared_ptr<const tf::TfBuffer> transforms = scene_.transforms;
-  if (!transforms) return {};
+  // the scene reads the bag's TF only when it shows it; the displays' frames need it anyway
+  const std::shared_ptr<const tf::TfBuffer> transforms =
+      scene_.transforms && !scene_.transforms->frames().empty()
+          ? scene_.transforms
+          : std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(bag_));
   const request::Prepared& p = scene_.robot;
   const std::string fixed = p.settings.scene.fixed_frame.empty() ? p.robot->links().front().name : p.settings.scene.fixed_frame;
   return [transforms, fixed](const std::string& frame, std::int64_t time_ns) -> std::optional<Eigen::Isometry3d> {

@@ -60,6 +60,7 @@ class BagStill {
   image::Frame Draw(request::RenderSession& session, const image::FrameOutputs& outputs, Warnings& warnings) const;
 
  private:
+  std::string bag_;
   motion::Trajectory trajectory_;
   motion::FramePlan plan_;
   BagScene scene_;

@@ -18,6 +18,9 @@ template <class... Ts>
 struct Overloaded : Ts... {
   using Ts::operator()...;
 };
+// (clang 14, the sanitizer build's compiler, deduces an aggregate's arguments only with a guide)
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
 // RViz's display class names (without the rviz/ or rviz_default_plugins/ prefix), the message
 // type each draws and its default settings.
 struct Known {

@@ -27,6 +27,7 @@ class PointCloudReader {
   // or when rows overlap (row_step < width * point_step with more than one row). RViz ignores
   // row_step; a one-row cloud is read without it here too.
   explicit PointCloudReader(const PointCloud2& cloud);
+  PointCloudReader(PointCloud2&&) = delete;   // the cloud is kept by reference
 
   std::size_t size() const { return count_; }
 

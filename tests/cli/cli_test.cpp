@@ -147,8 +147,9 @@ TEST_F(CliTest, UnknownOrMissingCommandsAreNamed) {
     EXPECT_EQ(r.status, 2) << arguments;
     EXPECT_EQ(r.output, message + "\n") << arguments;
   }
-  // the other usage errors keep CLI11's words
-  EXPECT_EQ(RunUrdfsnap("render").output, "urdfsnap: error: MODEL is required (see 'urdfsnap --help')\n");
+  // the other usage errors keep CLI11's words; render takes its robot from a MODEL or a bag
+  EXPECT_EQ(RunUrdfsnap("animate").output, "urdfsnap: error: MODEL is required (see 'urdfsnap --help')\n");
+  EXPECT_EQ(RunUrdfsnap("render").output, "urdfsnap: error: render: give MODEL (a URDF or xacro file) or --bag\n");
 }
 
 TEST_F(CliTest, MissingModelIsAnError) {

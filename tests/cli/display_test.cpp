@@ -54,7 +54,7 @@ TEST_F(DisplayCliTest, EveryMarkerTypeMatchesItsGolden) {
   EXPECT_LT(ChangedShare(actual, golden), 0.005);
   // the markers are there at all: the robot alone differs from it in many pixels
   ASSERT_EQ(RunUrdfsnap("render " + kMrm + kView + " -o " + Path("robot.png")).status, 0);
-  EXPECT_GT(ChangedShare(actual, image::ReadPng(Path("robot.png"))), 0.05);
+  EXPECT_GT(ChangedShare(actual, image::ReadPng(Path("robot.png"))), 0.03);
 }
 
 TEST_F(DisplayCliTest, BadMessageFilesAreErrorsAtTheirLine) {

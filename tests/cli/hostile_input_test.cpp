@@ -245,7 +245,7 @@ std::vector<HostileCase> Cases() {
       {"entity_bomb_urdf", robot(EntityBomb(false)), kRender, "robot.urdf:2: <!DOCTYPE>"},
       {"deep_nesting", robot(Nested("link", 100000)), kRender, "robot.urdf"},
       {"missing_model", {}, kRender, "robot.urdf: cannot read the model file"},
-      {"model_is_a_folder", {}, "render {dir} -o {out}", "cannot read the model file: Is a directory"},
+      {"model_is_a_folder", {}, "render {dir} -o {out}", "a folder without metadata.yaml, .mcap or .db3 files: not a ROS 2 bag"},
       {"endless_model", {}, "render /dev/zero -o {out}", "/dev/zero: cannot read the model file"},
       // xacro
       {"exponential_macros", xacro(ExponentialXacro()), render_xacro,

@@ -68,7 +68,7 @@ void AddViewOptions(std::vector<CommandOption>& options, const char* command, co
   number("--background", "--background {v},0,0");
   number("--alpha", "--alpha {v}");
   number("--tf-scale", "--tf-scale {v}");
-  for (const char* text : {"--help", "--package", "--joints", "--rviz", "--fixed-frame"}) {
+  for (const char* text : {"--help", "--package", "--joints", "--rviz", "--fixed-frame", "--follow"}) {
     options.push_back({command, text, std::string(text) == "--help" ? Kind::kFlag : Kind::kText});
   }
   for (const char* flag : {"--xacro-ns", "--no-clamp", "--fit", "--collision", "--no-visual", "--no-grid", "--tf",
@@ -153,6 +153,14 @@ const std::vector<CommandOption>& Options() {
         {"animate", "--shard", Kind::kText},
         {"animate", "--no-shard", Kind::kFlag},
         {"render", "--mask", Kind::kText},
+        {"render", "--display", Kind::kText},
+        {"render", "--message", Kind::kText},
+        {"render", "--bag", Kind::kText},
+        // a number or an absolute stamp, read once the bag is; its NaN and infinities are refused
+        // in hostile_input_test, which has the bags
+        {"render", "--at", Kind::kText},
+        {"render", "--topic", Kind::kText},
+        {"render", "--description-topic", Kind::kText},
         {"render", "--keypoints", Kind::kText},
         {"render", "--mask-dilate", Kind::kNumber, "MRM -o OUT --mask M.png --mask-dilate {v}"},
         {"animate", "--mask", Kind::kText},
@@ -179,7 +187,7 @@ const std::vector<CommandOption>& Options() {
     AddViewOptions(o, "animate", "MRM -o OUT.gif --turntable");
     AddViewOptions(o, "docs", "MRM -o OUT", true);
     // dataset: the display options and the camera's intrinsics; poses and cameras are drawn
-    for (const char* text : {"--help", "--package", "--rviz", "--fixed-frame"}) {
+    for (const char* text : {"--help", "--package", "--rviz", "--fixed-frame", "--follow"}) {
       o.push_back({"dataset", text, std::string(text) == "--help" ? Kind::kFlag : Kind::kText});
     }
     for (const char* flag : {"--xacro-ns", "--no-clamp", "--collision", "--no-visual", "--no-grid", "--tf",
@@ -232,6 +240,7 @@ const std::vector<SuiteKey>& SuiteKeys() {
       {"fov", Kind::kNumber, "{v}"},
       {"fit-margin", Kind::kNumber, "{v}"},
       {"fixed-frame", Kind::kText},
+      {"follow", Kind::kText},
       {"background", Kind::kNumber, "{v},0,0"},
       {"alpha", Kind::kNumber, "{v}"},
       {"tf-scale", Kind::kNumber, "{v}"},

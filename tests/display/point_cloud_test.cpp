@@ -146,7 +146,8 @@ TEST(PointCloudTest, FlatColorAndPointsSize) {
 TEST(PointCloudTest, AskedTransformerTheCloudCannotUseFallsBackToRViz) {
   PointCloudSettings settings;
   settings.colour = Colour::kRgb8;
-  const PointCloudReader reader(FloatCloud({"x", "y", "z"}, {{0, 0, 0}}));
+  const PointCloud2 cloud = FloatCloud({"x", "y", "z"}, {{0, 0, 0}});
+  const PointCloudReader reader(cloud);
   EXPECT_EQ(ChooseColour(reader, settings), Colour::kIntensity);
 }
 
