@@ -64,12 +64,7 @@ void Run(RenderCommandOptions& o) {
   if (bag_model) o.render.request.model.path = bag_model->path();
   o.render.ParseJointWords();
   const std::string output = o.output.empty() ? DefaultOutput(bag_model ? o.bag.bag : o.model.path) : o.output;
-  image::CheckImageFileName(output, image::ImageKind::kColour, "-o");
-  if (!o.depth.empty()) image::CheckImageFileName(o.depth, image::ImageKind::kDepth, "--depth");
-  if (!o.labels.empty()) image::CheckImageFileName(o.labels, image::ImageKind::kLabels, "--labels");
-  if (!o.mask.empty()) image::CheckImageFileName(o.mask, image::ImageKind::kMask, "--mask");
   dataset::CheckMaskDilate(o.mask_dilate, "--mask-dilate");
-  if (!o.keypoints.empty()) CheckJsonExtension(o.keypoints, "--keypoints");
   // every output checked, and its folder made, before drawing; all written, or none
   OutputPlan plan;
   request::AddRequestInputs(plan, o.render.request);
@@ -84,6 +79,13 @@ void Run(RenderCommandOptions& o) {
   if (!o.mask.empty()) plan.AddFile(o.mask, "--mask", false);
   if (!o.keypoints.empty()) plan.AddFile(o.keypoints, "--keypoints", false);
   plan.Prepare();
+  // the extensions after the plan's checks, whose errors say more (a folder, the model itself, one
+  // output twice); Prepare made no folder for these (only the default output/, always .png)
+  image::CheckImageFileName(output, image::ImageKind::kColour, "-o");
+  if (!o.depth.empty()) image::CheckImageFileName(o.depth, image::ImageKind::kDepth, "--depth");
+  if (!o.labels.empty()) image::CheckImageFileName(o.labels, image::ImageKind::kLabels, "--labels");
+  if (!o.mask.empty()) image::CheckImageFileName(o.mask, image::ImageKind::kMask, "--mask");
+  if (!o.keypoints.empty()) CheckJsonExtension(o.keypoints, "--keypoints");
   Warnings warnings;
   request::RenderSession session(backend);
   image::Frame frame;

@@ -1,5 +1,6 @@
 // PlanFrames and PlanStill: argument checks and the frame count, with a small tolerance so that
-// T * fps landing a rounding error below a whole number still counts that frame.
+// T * fps landing a rounding error below a whole number still counts that frame. Times the user
+// typed and stamps are echoed exactly (FormatNumber); counts and durations rounded for people.
 #include "motion/frame_plan.h"
 
 #include <cmath>
@@ -53,12 +54,12 @@ FramePlan PlanFrames(const Trajectory& trajectory, double fps, double speed,
   const double end = window.end.value_or(trajectory.EndTime());
   const double start = window.start.value_or(0);
   if (start < 0 || start > trajectory.EndTime()) {
-    throw Error("--start " + FormatForPeople(start, "s") + " is outside " + trajectory.source + ", which lasts " +
-                FormatForPeople(trajectory.EndTime(), "s") + " (--start from 0 to " +
-                FormatForPeople(trajectory.EndTime()) + ")");
+    throw Error("--start " + FormatNumber(start) + " s is outside " + trajectory.source + ", which lasts " +
+                FormatNumber(trajectory.EndTime()) + " s (--start from 0 to " + FormatNumber(trajectory.EndTime()) +
+                ")");
   }
   if (window.end && end <= start) {
-    throw Error("--end " + FormatForPeople(end, "s") + " is not after the start at " + FormatForPeople(start, "s"));
+    throw Error("--end " + FormatNumber(end) + " s is not after the start at " + FormatNumber(start) + " s");
   }
   // a table without times shows row k at frame k (at speed 1)
   const double end_seconds = rows ? trajectory.EndTime() / fps : end - start;
@@ -71,7 +72,7 @@ double TrajectorySeconds(const Trajectory& trajectory, double value, const char*
   constexpr double kFirstStamp = 1e9;
   if (value < kFirstStamp) return value;
   if (!trajectory.stamp_at_zero) {
-    throw Error(std::string(option) + " " + FormatForPeople(value) + " is a stamp (seconds since 1970), and " +
+    throw Error(std::string(option) + " " + FormatNumber(value) + " is a stamp (seconds since 1970), and " +
                 trajectory.source + " has no stamps; give seconds from its start");
   }
   return value - *trajectory.stamp_at_zero;

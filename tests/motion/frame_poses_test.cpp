@@ -126,8 +126,8 @@ TEST_F(FramePosesTest, DefaultsAreClampedAsRenderClampsThemUnlessTold) {
   Warnings warnings;
   const FramePoses clamped(robot_, wave, {{"shoulder", 5.0}}, {}, warnings);
   EXPECT_EQ(clamped.At(0, warnings)[0], 1.0);
-  EXPECT_THAT(warnings.messages(), ElementsAre(HasSubstr("joint 'shoulder': 5 is outside its "
-                                                         "limits [-1, 1]; clamped to 1")));
+  EXPECT_THAT(warnings.messages(), ElementsAre(HasSubstr("joint 'shoulder': 5 rad is outside its "
+                                                         "limits, -1 to 1 rad; clamped to 1 rad")));
   Warnings unclamped_warnings;
   const FramePoses unclamped(robot_, wave, {{"shoulder", 5.0}}, {.clamp_defaults = false},
                              unclamped_warnings);
