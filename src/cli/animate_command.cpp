@@ -23,6 +23,7 @@
 #include "cli/bag_scene.h"
 #include "cli/command.h"
 #include "cli/gl_options.h"
+#include "cli/ignored_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "cli/shard_options.h"
@@ -301,6 +302,14 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
   }
 
   Warnings warnings;
+  WarnOfUnusedBagTopics(o.topic, o.description_topic, !o.trajectory.empty() && motion::IsBag(o.trajectory),
+                        o.model_from_bag, "--trajectory", warnings);
+  WarnOfUnusedMaskDilate(o.mask_dilate, o.mask, warnings);
+  for (const auto& [given, option] : {std::pair{o.clamp, "--clamp"}, {o.strict_joints, "--strict-joints"}}) {
+    if (given && o.trajectory.empty()) {
+      WarnIgnored(warnings, option, "it decides how --trajectory's joints are drawn, and there is no --trajectory");
+    }
+  }
   try {
     PreparedAnimation animation;
     PrepareAnimation(o, session, animation, warnings);

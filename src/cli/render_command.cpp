@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "cli/display_options.h"
 #include "cli/gl_options.h"
+#include "cli/ignored_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "common/error.h"
@@ -87,6 +88,9 @@ void Run(RenderCommandOptions& o) {
   if (!o.mask.empty()) image::CheckImageFileName(o.mask, image::ImageKind::kMask, "--mask");
   if (!o.keypoints.empty()) CheckJsonExtension(o.keypoints, "--keypoints");
   Warnings warnings;
+  WarnOfUnusedBagTopics(o.bag.topic, o.bag.description_topic, !o.bag.bag.empty(), bag_model.has_value(), "--bag",
+                        warnings);
+  WarnOfUnusedMaskDilate(o.mask_dilate, o.mask, warnings);
   request::RenderSession session(backend);
   image::Frame frame;
   std::shared_ptr<const model::Robot> robot;

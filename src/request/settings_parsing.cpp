@@ -80,16 +80,28 @@ void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label
   if (!r.tf && r.rviz.empty()) {
     for (const auto& [given, name] : {std::pair{!r.tf_scale.empty(), "tf-scale"}, {r.no_tf_names, "no-tf-names"},
                                       {r.no_tf_axes, "no-tf-axes"}, {r.no_tf_arrows, "no-tf-arrows"}}) {
-      if (given) warnings.Add(label(name) + " is ignored: the TF display is off (" + label("tf") + " shows it)");
+      if (given) WarnIgnored(warnings, label(name), "the TF display is off (" + label("tf") + " shows it)");
     }
   }
   if (!r.fit && !r.fit_margin.empty()) {
-    warnings.Add(label("fit-margin") + " " + r.fit_margin + " is ignored: it is the border " + label("fit") +
-                 " leaves, and " + label("fit") + " is not given");
+    WarnIgnored(warnings, label("fit-margin") + " " + r.fit_margin,
+                "it is the border " + label("fit") + " leaves, and " + label("fit") + " is not given");
   }
   if (r.fit && !r.distance.empty()) {
-    warnings.Add(label("distance") + " " + r.distance + " is ignored: " + label("fit") +
-                 " chooses the distance that frames the robot");
+    WarnIgnored(warnings, label("distance") + " " + r.distance,
+                label("fit") + " chooses the distance that frames the robot");
+  }
+  // a camera replaces the orbit view (and --camera-info its field of view); --fit is an error there
+  if (r.camera_info.empty() && r.camera_frame.empty() && r.camera_pose.empty()) return;
+  for (const auto& [given, name] : {std::pair{!r.yaw.empty(), "yaw"}, {!r.pitch.empty(), "pitch"},
+                                    {!r.distance.empty(), "distance"}, {!r.focal.empty(), "focal"},
+                                    {!r.follow.empty(), "follow"}, {!r.fov.empty() && !r.camera_info.empty(), "fov"}}) {
+    if (given) {
+      WarnIgnored(warnings, label(name), std::string("the camera (") + label("camera-info") + ", " +
+                                             label("camera-frame") + ", " + label("camera-pose") +
+                                             ") replaces the orbit view" +
+                                             (name == std::string("fov") ? " and its field of view" : ""));
+    }
   }
 }
 

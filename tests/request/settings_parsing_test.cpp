@@ -2,6 +2,7 @@
 // for every option (the joint values' too); errors named by the caller's label (unit).
 #include "request/settings_parsing.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -12,6 +13,8 @@
 
 namespace urdfsnap::request {
 namespace {
+
+using ::testing::ElementsAre;
 
 render::RenderSettings Parse(const RenderRequest& request) {
   Warnings warnings;
@@ -60,6 +63,23 @@ TEST(SettingsParsing, OptionsWithoutEffectAreWarnedOf) {
   Warnings none;
   ParseRenderSettings(r, CommandLineLabel, none);
   EXPECT_TRUE(none.messages().empty());
+}
+
+// A camera replaces the orbit view: its options say so; --fov still sets a posed camera's field of
+// view when there is no --camera-info to give one.
+TEST(SettingsParsing, OrbitOptionsBesideACameraAreWarnedOf) {
+  RenderRequest r;
+  r.camera_pose = "0,0,5,1,0,0,0";
+  r.yaw = "1";
+  r.focal = "0,0,1";
+  r.fov = "30";
+  Warnings warnings;
+  ParseRenderSettings(r, CommandLineLabel, warnings);
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre("--yaw is ignored: the camera (--camera-info, --camera-frame, --camera-pose) replaces the "
+                          "orbit view",
+                          "--focal is ignored: the camera (--camera-info, --camera-frame, --camera-pose) replaces the "
+                          "orbit view"));
 }
 
 TEST(SettingsParsing, NothingGivenIsRvizsDefaults) {
