@@ -98,6 +98,21 @@ struct AxisHull {
   }
 };
 
+// The camera's right, up and back directions (rows of the view matrix) and the two image axes'
+// empty hulls, their half-angle tangents narrowed by the margin.
+struct FitStart {
+  Eigen::Vector3d right, up, back;
+  AxisHull across, upward;
+};
+
+FitStart StartFit(const OrbitView& view, double aspect, FitMargin margin) {
+  const Eigen::Matrix4d V = ViewMatrix(view);
+  FitStart start{V.block<1, 3>(0, 0).transpose(), V.block<1, 3>(1, 0).transpose(), V.block<1, 3>(2, 0).transpose(), {}, {}};
+  start.across.tan_half = std::tan(view.fov_y / 2) * aspect * (1 - 2 * margin.x);
+  start.upward.tan_half = std::tan(view.fov_y / 2) * (1 - 2 * margin.y);
+  return start;
+}
+
 // Adds the vertices of every distinct scene to the two axis hulls, re-hulling after each scene.
 bool Collect(int count, const std::function<Scene(int)>& scene_of, const Eigen::Vector3d& right,
              const Eigen::Vector3d& up, const Eigen::Vector3d& back, AxisHull& across, AxisHull& upward) {
@@ -133,13 +148,7 @@ double KeptFocalDistance(const AxisHull& across, const AxisHull& upward, const O
 
 OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitView view, double aspect,
                   bool keep_focal, FitMargin margin) {
-  const Eigen::Matrix4d V = ViewMatrix(view);
-  const Eigen::Vector3d right = V.block<1, 3>(0, 0).transpose();
-  const Eigen::Vector3d up = V.block<1, 3>(1, 0).transpose();
-  const Eigen::Vector3d back = V.block<1, 3>(2, 0).transpose();
-  AxisHull across, upward;
-  across.tan_half = std::tan(view.fov_y / 2) * aspect * (1 - 2 * margin.x);
-  upward.tan_half = std::tan(view.fov_y / 2) * (1 - 2 * margin.y);
+  auto [right, up, back, across, upward] = StartFit(view, aspect, margin);
   if (!Collect(count, scene_of, right, up, back, across, upward)) return view;
   double nearest = -std::numeric_limits<double>::infinity(), farthest = -nearest;
   for (const auto& c : across.corners) {
@@ -195,13 +204,7 @@ double FitDistance(const Scene& scene, const OrbitView& view, const std::vector<
     // FitView's keep_focal arithmetic on the same hulls, so the result is the same bit for bit
     OrbitView side = view;
     side.yaw = yaw;
-    const Eigen::Matrix4d V = ViewMatrix(side);
-    const Eigen::Vector3d right = V.block<1, 3>(0, 0).transpose();
-    const Eigen::Vector3d up = V.block<1, 3>(1, 0).transpose();
-    const Eigen::Vector3d back = V.block<1, 3>(2, 0).transpose();
-    AxisHull across, upward;
-    across.tan_half = std::tan(side.fov_y / 2) * aspect * (1 - 2 * margin.x);
-    upward.tan_half = std::tan(side.fov_y / 2) * (1 - 2 * margin.y);
+    auto [right, up, back, across, upward] = StartFit(side, aspect, margin);
     x.clear();
     y.clear();
     for (const auto& p : points) {
