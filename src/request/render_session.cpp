@@ -103,7 +103,7 @@ Prepared RenderSession::Prepare(const ResolvedRequest& r, Warnings& warnings) {
   const Robot& prepared = RobotFor(r.model, model, settings.scene);
   AddAll(prepared.warnings, warnings);
   FollowTargetFrame(r, *prepared.renderer, positions, settings, warnings);
-  settings.view = prepared.renderer->FitView(settings.fit, settings.view, settings.size, 1,
+  settings.view = prepared.renderer->FitView(settings.fit, settings.fit_margin, settings.view, settings.size, 1,
                                              [&](int) { return positions; });
   settings.fit = render::Fit::kNone;
   return {model.loaded.robot, std::move(settings), std::move(positions), prepared.renderer.get()};
