@@ -58,7 +58,7 @@ int Run(int argc, char** argv) {
   const std::vector<double> positions = model::ResolveJointPositions(*robot, {}, true, warnings);
   const render::ImageSize size{640, 480};
   const auto pose = [&](int) { return positions; };
-  const scene::OrbitView fitted = renderer.FitView(render::Fit::kFit, scene::OrbitView{}, size, 1, pose);
+  const scene::OrbitView fitted = renderer.FitView(render::Fit::kFit, {}, scene::OrbitView{}, size, 1, pose);
   gl::SceneRenderer gl(4);
   renderer.Render(gl, positions, fitted, size);   // uploads the meshes and compiles the shaders
   std::vector<double> times;

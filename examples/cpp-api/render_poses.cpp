@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
       }
       return us::model::ResolveJointPositions(*robot, values, true, warnings);
     };
-    const us::scene::OrbitView view = arm.FitView(us::render::Fit::kFit, settings.view, settings.size, 100, pose);
+    const us::scene::OrbitView view = arm.FitView(us::render::Fit::kFit, settings.fit_margin, settings.view, settings.size, 100, pose);
 
     std::filesystem::create_directories(out);
     for (int k = 0; k < 100; ++k) {

@@ -20,10 +20,10 @@ AnimationFrames::AnimationFrames(const render::RobotRenderer& robot, const motio
   const auto pose = [&](int k) { return Positions(k, warnings); };
   const auto place = [&](int k) { return Place(k, warnings); };
   if (!turntable_) {
-    view_ = robot.FitView(camera.fit, camera.view, size_, count, pose, place);
+    view_ = robot.FitView(camera.fit, camera.fit_margin, camera.view, size_, count, pose, place);
     return;
   }
-  view_ = render::FitTurntable(robot, camera.fit, camera.view, size_, count, pose,
+  view_ = render::FitTurntable(robot, camera.fit, camera.fit_margin, camera.view, size_, count, pose,
                                [&](int k) { return plan_.TurntableYaw(k, camera.view.yaw); }, place);
 }
 

@@ -25,6 +25,7 @@ struct CameraRequest {
   scene::OrbitView view;  // the view of frame 0 (before --fit)
   render::ImageSize size;
   render::Fit fit = render::Fit::kNone;
+  render::FitMargin fit_margin;
   bool turntable = false;  // the yaw turns once around over the animation
   std::optional<render::CameraSettings> camera;   // when set, every frame is seen through it instead
   // when set, camera->frame is a TF frame of the bag (not a link): its pose in the robot's root

@@ -6,7 +6,7 @@
 
 #include "common/error.h"
 #include "common/file_extension.h"
-#include "image/depth_label_files.h"
+#include "image/image_file_names.h"
 #include "video/frame_pattern.h"
 
 namespace urdfsnap::animation {
@@ -29,12 +29,12 @@ void CheckFramePattern(const std::string& pattern, const std::string& option, co
 
 void CheckDepthPattern(const std::string& pattern, const std::string& option) {
   CheckFramePattern(pattern, option, "depth/%05d.png");
-  image::CheckDepthPath(pattern, option);
+  image::CheckImageFileName(pattern, image::ImageKind::kDepth, option);
 }
 
 void CheckLabelsPattern(const std::string& pattern, const std::string& option) {
   CheckFramePattern(pattern, option, "labels/%05d.png");
-  image::CheckLabelsPath(pattern, option);
+  image::CheckImageFileName(pattern, image::ImageKind::kLabels, option);
 }
 
 void CheckPattern(const std::string& pattern, const std::string& extension, const std::string& option) {

@@ -24,6 +24,7 @@
 #include "cli/command.h"
 #include "cli/display_options.h"
 #include "cli/gl_options.h"
+#include "cli/ignored_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "cli/shard_options.h"
@@ -58,7 +59,7 @@ struct AnimateOptions {
   std::string trajectory;
   std::string topic = bag::kDefaultJointStateTopic;
   std::string description_topic = bag::kDefaultDescriptionTopic;  // MODEL given as a bag
-  std::string fps = "30", speed, duration;  // checked as render checks its numbers
+  std::string fps, speed, duration;  // checked as render checks its numbers; fps: the format's default
   std::string start, end;                   // the part of the trajectory played
   bool turntable = false;
   bool clamp = false, strict_joints = false;  // how the trajectory's joints meet the model's
@@ -205,7 +206,7 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
     }
   }
   a.frames.emplace(*robot.renderer, a.plan, *a.poses,
-                   animation::CameraRequest{settings.view, settings.size, fit, o.turntable, settings.camera,
+                   animation::CameraRequest{settings.view, settings.size, fit, settings.fit_margin, o.turntable, settings.camera,
                                             a.camera_tf ? &*a.camera_tf : nullptr},
                    warnings, a.scene.Additions());
 }
@@ -280,6 +281,11 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
     throw Error("animate: give the output with -o FILE: .mp4, .webm, .gif, .webp or a pattern such as "
                 "frames/%05d.png");
   }
+  // frame rate and size not given: the output format's (smaller for GIF)
+  const video::FormatDefaults defaults =
+      video::DefaultsFor(o.output.empty() ? video::OutputFormat::kMp4 : video::OutputFormatOf(o.output));
+  if (o.fps.empty()) o.fps = FormatNumber(defaults.fps);
+  if (r.size.empty()) r.size = defaults.size;
   const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
@@ -303,6 +309,14 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
   }
 
   Warnings warnings;
+  WarnOfUnusedBagTopics(o.topic, o.description_topic, !o.trajectory.empty() && motion::IsBag(o.trajectory),
+                        o.model_from_bag, "--trajectory", warnings);
+  WarnOfUnusedMaskDilate(o.mask_dilate, o.mask, warnings);
+  for (const auto& [given, option] : {std::pair{o.clamp, "--clamp"}, {o.strict_joints, "--strict-joints"}}) {
+    if (given && o.trajectory.empty()) {
+      WarnIgnored(warnings, option, "it decides how --trajectory's joints are drawn, and there is no --trajectory");
+    }
+  }
   try {
     PreparedAnimation animation;
     PrepareAnimation(o, session, animation, warnings);
@@ -394,7 +408,7 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_flag("--strict-joints", o->strict_joints,
                 "stop at a joint of the trajectory that the model does not have (default: such "
                 "joints are ignored with one warning, as robot_state_publisher ignores them)");
-  cmd->add_option("--fps", o->fps, "frames per second (default 30); frame k shows time k/fps");
+  cmd->add_option("--fps", o->fps, "frames per second (default 30; 15 for .gif); frame k shows time k/fps");
   cmd->add_option("--speed", o->speed,
                   "playback speed of the trajectory: 2 plays it twice as fast (default 1)");
   cmd->add_flag("--turntable", o->turntable,
@@ -431,6 +445,7 @@ void AddAnimateCommand(CLI::App& app) {
   o->sharding.AddOptions(*cmd, "frames of a frame sequence (a video is never split)");
   o->render.AddOptions(*cmd);
   o->displays.AddOptions(*cmd);
+  o->render.request.size.clear();   // not given: the output format's size (video::DefaultsFor)
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the encoder");
   cmd->callback([o] { Run(*o); });
 }

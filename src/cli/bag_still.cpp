@@ -47,7 +47,7 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   request::Prepared& prepared = scene_.robot;
   poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);
   const render::RenderSettings& s = prepared.settings;
-  frames_.emplace(*prepared.renderer, plan_, *poses_, animation::CameraRequest{s.view, s.size, fit, false, s.camera},
+  frames_.emplace(*prepared.renderer, plan_, *poses_, animation::CameraRequest{s.view, s.size, fit, s.fit_margin, false, s.camera},
                   warnings, scene_.Additions());
   prepared.positions = frames_->Positions(0, warnings);
   prepared.settings.view = frames_->View(0);

@@ -51,6 +51,9 @@ class BagStill {
 
   // The robot as drawn: the moment's joint positions and the view (--fit applied to this moment).
   const request::Prepared& prepared() const { return scene_.robot; }
+  // Its settings, for a caller that places the orbit view itself before Draw (snapshot's stored
+  // camera).
+  render::RenderSettings& settings() { return scene_.robot.settings; }
 
   // The still's scene in the orbit view (with its displays), for a renderer of the caller's. Call
   // it, or Draw, once: the displays have been fed up to the moment.

@@ -38,7 +38,7 @@ struct DatasetOptions {
 };
 
 // render's options that a dataset draws per sample, or that a dataset has no use for
-constexpr std::string_view kDrawnPerSample[] = {"yaw", "pitch", "distance", "focal", "fit",
+constexpr std::string_view kDrawnPerSample[] = {"yaw", "pitch", "distance", "focal", "fit", "fit-margin",
                                                 "camera-pose", "underlay", "underlay-alpha"};
 
 // render's view and display options less kDrawnPerSample.

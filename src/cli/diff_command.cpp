@@ -12,6 +12,7 @@
 #include "common/output_plan.h"
 #include "image/gray16_diff.h"
 #include "image/image_diff.h"
+#include "image/image_file_names.h"
 #include "image/png_reader.h"
 #include "image/png_writer.h"
 
@@ -78,6 +79,7 @@ bool RunGray16(const DiffOptions& o) {
 
 void Run(const DiffOptions& o) {
   if (!o.diff_output.empty()) {  // the diff image may not overwrite an image it compares
+    image::CheckImageFileName(o.diff_output, image::ImageKind::kColour, "--diff");
     OutputPlan outputs;
     outputs.AddInput(o.expected, "EXPECTED");
     outputs.AddInput(o.actual, "ACTUAL");

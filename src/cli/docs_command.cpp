@@ -48,7 +48,7 @@ struct DocsOptions {
 void CheckOptions(const DocsOptions& o, Warnings& warnings) {
   for (const std::string& name : o.refused) {
     if (name == "fit") {
-      warnings.Add("--fit: docs always fits each picture to what it shows; the option changes nothing");
+      WarnIgnored(warnings, "--fit", "docs always fits each picture to what it shows");
     } else if (name == "distance") {
       throw Error("docs: --distance does not apply: each picture of the page is fitted to what it shows "
                   "(choose the direction with --yaw and --pitch, the point looked at with --focal)");

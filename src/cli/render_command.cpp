@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "cli/display_options.h"
 #include "cli/gl_options.h"
+#include "cli/ignored_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "common/error.h"
@@ -17,6 +18,7 @@
 #include "common/output_plan.h"
 #include "dataset/frame_extras.h"
 #include "image/depth_label_files.h"
+#include "image/image_file_names.h"
 #include "image/png_writer.h"
 #include "motion/trajectory_file.h"
 #include "gl/gl_context.h"
@@ -46,10 +48,8 @@ std::string DefaultOutput(const std::string& model_path) {
   return (std::filesystem::path("output") / stem).string() + ".png";
 }
 
-void CheckExtension(const std::string& path, const std::string& extension, const std::string& option) {
-  if (LowerCaseExtension(path) != extension) {
-    throw Error(option + " '" + path + "': expected a " + extension + " file");
-  }
+void CheckJsonExtension(const std::string& path, const std::string& option) {
+  if (LowerCaseExtension(path) != ".json") throw Error(option + " '" + path + "': expected a .json file");
 }
 
 void Run(RenderCommandOptions& o) {
@@ -64,13 +64,9 @@ void Run(RenderCommandOptions& o) {
   o.render.request.model = o.model.ToRequest();
   if (bag_model) o.render.request.model.path = bag_model->path();
   o.render.ParseJointWords();
-  if (!o.depth.empty()) image::CheckDepthPath(o.depth, "--depth");
-  if (!o.labels.empty()) image::CheckLabelsPath(o.labels, "--labels");
-  if (!o.mask.empty()) CheckExtension(o.mask, ".png", "--mask");
-  dataset::CheckMaskDilate(o.mask_dilate, "--mask-dilate");
-  if (!o.keypoints.empty()) CheckExtension(o.keypoints, ".json", "--keypoints");
-  // every output checked, and its folder made, before drawing; all written, or none
   const std::string output = o.output.empty() ? DefaultOutput(bag_model ? o.bag.bag : o.model.path) : o.output;
+  dataset::CheckMaskDilate(o.mask_dilate, "--mask-dilate");
+  // every output checked, and its folder made, before drawing; all written, or none
   OutputPlan plan;
   request::AddRequestInputs(plan, o.render.request);
   if (!o.bag.bag.empty()) plan.AddInput(o.bag.bag, "--bag");
@@ -84,7 +80,17 @@ void Run(RenderCommandOptions& o) {
   if (!o.mask.empty()) plan.AddFile(o.mask, "--mask", false);
   if (!o.keypoints.empty()) plan.AddFile(o.keypoints, "--keypoints", false);
   plan.Prepare();
+  // the extensions after the plan's checks, whose errors say more (a folder, the model itself, one
+  // output twice); Prepare made no folder for these (only the default output/, always .png)
+  image::CheckImageFileName(output, image::ImageKind::kColour, "-o");
+  if (!o.depth.empty()) image::CheckImageFileName(o.depth, image::ImageKind::kDepth, "--depth");
+  if (!o.labels.empty()) image::CheckImageFileName(o.labels, image::ImageKind::kLabels, "--labels");
+  if (!o.mask.empty()) image::CheckImageFileName(o.mask, image::ImageKind::kMask, "--mask");
+  if (!o.keypoints.empty()) CheckJsonExtension(o.keypoints, "--keypoints");
   Warnings warnings;
+  WarnOfUnusedBagTopics(o.bag.topic, o.bag.description_topic, !o.bag.bag.empty(), bag_model.has_value(), "--bag",
+                        warnings);
+  WarnOfUnusedMaskDilate(o.mask_dilate, o.mask, warnings);
   request::RenderSession session(backend);
   image::Frame frame;
   std::shared_ptr<const model::Robot> robot;

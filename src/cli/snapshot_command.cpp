@@ -33,20 +33,23 @@ namespace {
 // A case as `render` draws it: its request, or with a recording moment (bag:, at:, displays:) the
 // bag's robot state and display messages at that moment, as `render --bag --at --display` draws it.
 request::Rendered RenderCase(request::RenderSession& session, const snapshot::SnapshotCase& c,
-                             const request::OptionLabel& label, Warnings& warnings,
-                             const image::FrameOutputs& outputs) {
+                             const request::OptionLabel& label, const snapshot::PlaceCamera& place_camera,
+                             Warnings& warnings, const image::FrameOutputs& outputs) {
   if (c.moment.bag.empty()) {
     if (!c.moment.at.empty() || !c.moment.displays.empty()) {
       throw Error(label("at") + ": 'at' and 'displays' draw a moment of a recording; give it with 'bag'");
     }
-    return session.Render(c.request, label, warnings, outputs);
+    request::Prepared prepared = session.Prepare(c.request, label, warnings);
+    place_camera(prepared.settings);
+    return {session.Draw(prepared, outputs), prepared.robot};
   }
   BagStillOptions moment;
   moment.bag = c.moment.bag;
   moment.at = c.moment.at;
   DisplayOptions displays;
   displays.displays = c.moment.displays;
-  const BagStill still(moment, session, c.request, false, displays, warnings);
+  BagStill still(moment, session, c.request, false, displays, warnings);
+  place_camera(still.settings());
   return {still.Draw(session, outputs, warnings), still.prepared().robot};
 }
 
@@ -163,10 +166,11 @@ void Update(const SnapshotOptions& o) {
   std::vector<snapshot::CaseRecord> records;
   int written = 0;
   for (const snapshot::SnapshotCase* c : s.cases) {
-    snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, RenderCase, warnings);
+    snapshot::CaseResult r =
+        snapshot::CheckCase(session, s.suite, *c, RenderCase, warnings, snapshot::CameraChoice::kCurrent);
     snapshot::CaseRecord& record = r.record;
     if (record.status == snapshot::CaseStatus::kError ||
-        (record.status == snapshot::CaseStatus::kPassed && !o.force)) {
+        (record.status == snapshot::CaseStatus::kPassed && r.camera_file_current && !o.force)) {
       PrintCaseLine(record.status == snapshot::CaseStatus::kError ? "ERROR" : "same", c->name,
                     record.message);
     } else {
@@ -182,7 +186,7 @@ void Update(const SnapshotOptions& o) {
   }
   PrintWarnings(warnings);
   outputs.Commit();
-  std::printf("%d goldens of %zu cases written; look at each before committing it\n", written, s.cases.size());
+  std::printf("%d golden files of %zu cases written; look at each before committing it\n", written, s.cases.size());
   std::fflush(stdout);
   if (const int status = snapshot::ExitStatus(records); status != 0) throw CommandExit{status};
 }

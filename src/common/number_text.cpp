@@ -2,6 +2,7 @@
 // for people.
 #include "common/number_text.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -44,6 +45,30 @@ std::string FormatNumber(double value) {
 bool ParseInteger(std::string_view text, int& out) {
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), out);
   return error == std::errc() && end == text.data() + text.size() && !text.empty();
+}
+
+std::string FormatForPeople(double value, std::string_view unit) {
+  constexpr int kSignificant = 5;
+  char text[64];
+  if (!std::isfinite(value)) {
+    std::snprintf(text, sizeof text, "%g", value);
+  } else if (std::abs(value) >= 1) {
+    const int whole_digits = static_cast<int>(std::floor(std::log10(std::abs(value)))) + 1;
+    std::snprintf(text, sizeof text, "%.*f", std::max(0, kSignificant - whole_digits), value);
+  } else {
+    std::snprintf(text, sizeof text, "%.*g", kSignificant, value);
+  }
+  std::string number = text;
+  if (number.find('.') != std::string::npos && number.find('e') == std::string::npos) {
+    number.erase(number.find_last_not_of('0') + 1);
+    if (number.back() == '.') number.pop_back();
+  }
+  if (number == "-0") number = "0";
+  return unit.empty() ? number : number + " " + std::string(unit);
+}
+
+std::string FormatRangeForPeople(double low, double high, std::string_view unit) {
+  return FormatForPeople(low) + " to " + FormatForPeople(high, unit);
 }
 
 std::string FormatBytes(unsigned long long bytes) {

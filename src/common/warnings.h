@@ -1,5 +1,6 @@
 // A collector for warnings: stages add to it, the command line prints each distinct message once
-// as "urdfsnap: warning: ..." (and --strict turns the first one into an error).
+// as "urdfsnap: warning: ..." (and --strict turns the first one into an error); and the one wording
+// of an option that does nothing where it was given.
 #pragma once
 
 #include <string>
@@ -19,5 +20,9 @@ class Warnings {
  private:
   std::vector<std::string> messages_;
 };
+
+// An option (or suite key) given where it does nothing: "OPTION is ignored: WHY", so that no
+// command drops one silently ("--clamp is ignored: it clamps a --trajectory's values, and ...").
+void WarnIgnored(Warnings& warnings, const std::string& option, const std::string& why);
 
 }  // namespace urdfsnap

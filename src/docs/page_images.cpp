@@ -100,9 +100,10 @@ class PageRenderer {
       return scene;
     };
     const render::Fit fit = look_.settings.fit;
-    if (moving_parts(0).items.empty()) return robot.FitView(fit, look_.settings.view, SizeOf(page_.joint_size), count, pose);
+    if (moving_parts(0).items.empty()) return robot.FitView(fit, look_.settings.fit_margin, look_.settings.view, SizeOf(page_.joint_size), count, pose);
     const double aspect = static_cast<double>(page_.joint_size.width) / page_.joint_size.height;
-    return scene::FitView(count, moving_parts, look_.settings.view, aspect, fit == render::Fit::kKeepFocal);
+    return scene::FitView(count, moving_parts, look_.settings.view, aspect, fit == render::Fit::kKeepFocal,
+                          look_.settings.fit_margin.For(SizeOf(page_.joint_size)));
   }
 
   // The page's pose as values of the joints a value moves, but `joint`: with its value added, what
@@ -122,7 +123,7 @@ class PageRenderer {
   void Still(const render::RobotRenderer& robot, const std::string& file) {
     const auto pose = [&](int) { return page_.default_positions; };
     const render::ImageSize size = SizeOf(page_.view_size);
-    const scene::OrbitView view = robot.FitView(look_.settings.fit, look_.settings.view, size, 1, pose);
+    const scene::OrbitView view = robot.FitView(look_.settings.fit, look_.settings.fit_margin, look_.settings.view, size, 1, pose);
     Write(robot.Render(gl_, page_.default_positions, view, size).colour, file);
   }
 
@@ -132,7 +133,7 @@ class PageRenderer {
   std::vector<LeftOutName> TfView() {
     const render::ImageSize size = SizeOf(page_.tf_size);
     const auto pose = [&](int) { return page_.default_positions; };
-    const scene::OrbitView view = visual_.FitView(look_.settings.fit, look_.settings.view, size, 1, pose);
+    const scene::OrbitView view = visual_.FitView(look_.settings.fit, look_.settings.fit_margin, look_.settings.view, size, 1, pose);
     scene::SceneOptions options = look_.settings.scene;
     options.tf.enabled = true;
     options.alpha *= look_.tf_alpha;
@@ -155,7 +156,7 @@ class PageRenderer {
     const auto pose = [&](int) { return page_.default_positions; };
     const auto yaw = [&](int k) { return look_.settings.view.yaw + 2 * std::numbers::pi * k / frames; };
     const scene::OrbitView fitted =
-        render::FitTurntable(robot, look_.settings.fit, look_.settings.view, size, frames, pose, yaw);
+        render::FitTurntable(robot, look_.settings.fit, look_.settings.fit_margin, look_.settings.view, size, frames, pose, yaw);
     Animate(robot, page_.turntable_file, frames, pose, [&](int k) {
       scene::OrbitView view = fitted;
       view.yaw = yaw(k);

@@ -10,23 +10,22 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/file_extension.h"
 #include "image/gray16_png.h"
+#include "image/image_file_names.h"
 #include "image/npy_writer.h"
 
 namespace urdfsnap::image {
 
 namespace {
 
-std::string Extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
-
 enum class DepthFormat { kMillimetrePng, kMetreNpy };
 
-// The format of the depth file `path` by its extension; throws naming `what` and the path.
+// The format of the depth file `path` by its extension (in any letter case), checked as
+// CheckImageFileName checks --depth; throws naming `what` and the path.
 DepthFormat DepthFormatOf(const std::string& path, const std::string& what) {
-  const std::string extension = Extension(path);
-  if (extension == ".png") return DepthFormat::kMillimetrePng;
-  if (extension == ".npy") return DepthFormat::kMetreNpy;
-  throw Error(what + " '" + path + "': expected a .png (16-bit millimetres) or .npy (float32 metres) file");
+  CheckImageFileName(path, ImageKind::kDepth, what);
+  return LowerCaseExtension(path) == ".npy" ? DepthFormat::kMetreNpy : DepthFormat::kMillimetrePng;
 }
 
 std::string Bytes(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
@@ -57,12 +56,6 @@ std::string EncodeLabels(const LabelImage& labels) {
   return Bytes(EncodeGray16Png({labels.width, labels.height, labels.labels}));
 }
 
-void CheckDepthPath(const std::string& path, const std::string& option) { DepthFormatOf(path, option); }
-
-void CheckLabelsPath(const std::string& path, const std::string& option) {
-  if (Extension(path) != ".png") throw Error(option + " '" + path + "': expected a .png file (16-bit labels)");
-}
-
 std::string LabelNamesFile(const std::string& path) {
   return std::filesystem::path(path).replace_extension(".json").string();
 }
@@ -78,7 +71,7 @@ std::string LabelNamesJson(const std::vector<std::string>& link_names) {
 }
 
 void WriteLabelFiles(const LabelImage& labels, const std::vector<std::string>& link_names, const std::string& path) {
-  CheckLabelsPath(path, "labels file");
+  CheckImageFileName(path, ImageKind::kLabels, "labels file");
   WriteFileAtomically(path, EncodeLabels(labels));
   WriteFileAtomically(LabelNamesFile(path), LabelNamesJson(link_names));
 }

@@ -42,9 +42,4 @@ void WriteLabelFiles(const LabelImage& labels, const std::vector<std::string>& l
 // Where the link names of the label image `path` go: beside it, the same name with .json.
 std::string LabelNamesFile(const std::string& path);
 
-// Throws urdfsnap::Error naming `option` unless `path` has an extension EncodeDepthFile (depth) or
-// EncodeLabels (labels, .png) takes: for checking command-line options before rendering.
-void CheckDepthPath(const std::string& path, const std::string& option);
-void CheckLabelsPath(const std::string& path, const std::string& option);
-
 }  // namespace urdfsnap::image

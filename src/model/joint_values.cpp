@@ -73,9 +73,9 @@ std::vector<double> ResolveJointPositions(const Robot& robot, const NamedValues&
     double position = value;
     if (clamp && joint.has_limits && (value < joint.lower || value > joint.upper)) {
       position = std::clamp(value, joint.lower, joint.upper);
-      warnings.Add("joint " + Quoted(name) + ": " + FormatNumber(value) + " is outside its limits [" +
-                   FormatNumber(joint.lower) + ", " + FormatNumber(joint.upper) +
-                   "]; clamped to " + FormatNumber(position) +
+      warnings.Add("joint " + Quoted(name) + ": " + FormatForPeople(value, joint.Unit()) +
+                   " is outside its limits, " + FormatRangeForPeople(joint.lower, joint.upper, joint.Unit()) +
+                   "; clamped to " + FormatForPeople(position, joint.Unit()) +
                    " as joint_state_publisher's slider would (--no-clamp keeps it)");
     }
     positions[j] = position;

@@ -39,6 +39,8 @@ struct Joint {
 
   // True for the joint types a value moves: revolute, continuous and prismatic.
   bool IsMovable() const;
+  // The unit of the joint's position: "m" for a prismatic joint, else "rad".
+  const char* Unit() const { return type == JointType::kPrismatic ? "m" : "rad"; }
 };
 
 // A URDF <geometry>: a box, cylinder or sphere in metres, or a mesh file with its scale.

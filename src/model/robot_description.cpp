@@ -29,7 +29,7 @@ std::string JointDetails(const Robot& robot, const Joint& joint) {
   }
   if (joint.has_limits) {
     text += "  limits [" + FormatNumber(joint.lower) + ", " + FormatNumber(joint.upper) + "] " +
-            (joint.type == JointType::kPrismatic ? "m" : "rad");
+            joint.Unit();
   }
   if (joint.mimic_leader >= 0) {
     text += "  mimic " + FormatNumber(joint.mimic_multiplier) + " * " +

@@ -1,5 +1,6 @@
 // PlanFrames and PlanStill: argument checks and the frame count, with a small tolerance so that
-// T * fps landing a rounding error below a whole number still counts that frame.
+// T * fps landing a rounding error below a whole number still counts that frame. Times the user
+// typed and stamps are echoed exactly (FormatNumber); counts and durations rounded for people.
 #include "motion/frame_plan.h"
 
 #include <cmath>
@@ -26,8 +27,8 @@ FramePlan Plan(double seconds, double fps, double trajectory_step) {
   plan.trajectory_step = trajectory_step;
   const double last_frame = std::floor(seconds * fps + 1e-9);
   if (!(last_frame < kMaxFrames)) {
-    throw Error("the animation would have " + FormatNumber(last_frame + 1) + " frames (" +
-                FormatNumber(seconds) + " s at " + FormatNumber(fps) +
+    throw Error("the animation would have " + FormatForPeople(last_frame + 1) + " frames (" +
+                FormatForPeople(seconds, "s") + " at " + FormatForPeople(fps) +
                 " frames/s), more than urdfsnap's limit of " + std::to_string(kMaxFrames));
   }
   plan.frame_count = static_cast<std::int64_t>(last_frame) + 1;
@@ -54,7 +55,8 @@ FramePlan PlanFrames(const Trajectory& trajectory, double fps, double speed,
   const double start = window.start.value_or(0);
   if (start < 0 || start > trajectory.EndTime()) {
     throw Error("--start " + FormatNumber(start) + " s is outside " + trajectory.source + ", which lasts " +
-                FormatNumber(trajectory.EndTime()) + " s");
+                FormatNumber(trajectory.EndTime()) + " s (--start from 0 to " + FormatNumber(trajectory.EndTime()) +
+                ")");
   }
   if (window.end && end <= start) {
     throw Error("--end " + FormatNumber(end) + " s is not after the start at " + FormatNumber(start) + " s");

@@ -14,7 +14,7 @@ namespace {
 
 std::string When(const Trajectory& trajectory, std::size_t sample, double time) {
   if (trajectory.time_base == TimeBase::kRows) return "in row " + std::to_string(sample + 1);
-  return "at " + FormatNumber(time) + " s";
+  return "at " + FormatForPeople(time, "s");
 }
 
 // One warning when `track`'s samples leave `joint`'s limits: when they first leave, the furthest
@@ -33,11 +33,11 @@ void WarnOfExcursion(const Trajectory& trajectory, const JointTrack& track,
     }
   }
   if (worst_excess <= 0) return;
-  warnings.Add("joint '" + joint.name + "': " + trajectory.source + " takes it outside its limits [" +
-               FormatNumber(joint.lower) + ", " + FormatNumber(joint.upper) + "] " +
+  warnings.Add("joint '" + joint.name + "': " + trajectory.source + " takes it outside its limits, " +
+               FormatRangeForPeople(joint.lower, joint.upper, joint.Unit()) + ", " +
                When(trajectory, first, track.times[first]) + ", furthest to " +
-               FormatNumber(track.positions[worst]) + " " +
-               When(trajectory, worst, track.times[worst]) + " (" + FormatNumber(worst_excess) +
+               FormatForPeople(track.positions[worst], joint.Unit()) + " " +
+               When(trajectory, worst, track.times[worst]) + " (" + FormatForPeople(worst_excess, joint.Unit()) +
                " beyond); " +
                (clamped ? "clamped in every frame as joint_state_publisher's slider would"
                         : "drawn as recorded (--clamp clamps it)"));

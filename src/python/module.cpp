@@ -17,6 +17,7 @@
 #include "common/version.h"
 #include "gl/gl_context.h"
 #include "image/image_diff.h"
+#include "image/image_file_names.h"
 #include "image/png_reader.h"
 #include "image/png_writer.h"
 #include "python/robot_session.h"
@@ -396,6 +397,7 @@ PYBIND11_MODULE(_urdfsnap, m) {
     return ArrayOf(std::move(image.rgb), {image.height, image.width, 3});
   }, "Reads a PNG file as an H×W×3 uint8 array.", "path"_a);
   m.def("write_png", [](const py::object& array, const py::object& path) {
+    image::CheckImageFileName(PathText(path), image::ImageKind::kColour, "write_png");
     image::WritePng(ImageFrom(array, "write_png"), PathText(path));
   }, "Writes an H×W×3 uint8 array as a PNG file, atomically.", "image"_a, "path"_a);
   m.def("encode_png", [](const py::object& array) { return PngBytes(ImageFrom(array, "encode_png")); },

@@ -96,8 +96,8 @@ void RobotSession::Render(const render::RenderSettings& settings, std::optional<
                           const dataset::ExtrasWanted& extras, Deliver&& deliver, Warnings& warnings) {
   const render::RobotRenderer& renderer = session_.PreparedRobot(model_, settings.scene, warnings);
   render::RenderSettings drawn = settings;
-  drawn.view = renderer.FitView(settings.fit, settings.view, settings.size, static_cast<int>(poses.size()),
-                                [&](int k) { return poses[k]; });
+  drawn.view = renderer.FitView(settings.fit, settings.fit_margin, settings.view, settings.size,
+                                static_cast<int>(poses.size()), [&](int k) { return poses[k]; });
   drawn.fit = render::Fit::kNone;
   const render::CameraSettings camera =
       drawn.camera ? *drawn.camera : render::OrbitCamera(drawn.view, drawn.size.width, drawn.size.height);

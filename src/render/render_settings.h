@@ -10,6 +10,7 @@
 #include "render/camera_settings.h"
 #include "scene/orbit_view.h"
 #include "scene/scene_options.h"
+#include "scene/view_fitting.h"
 
 namespace urdfsnap::render {
 
@@ -25,6 +26,19 @@ enum class Fit {
   kKeepFocal,     // the given focal point, distance to frame it all
 };
 
+// --fit-margin: the empty border --fit leaves on each side of the image, a fraction of the side's
+// length or a number of pixels.
+struct FitMargin {
+  double amount = 0.05;
+  bool pixels = false;
+
+  // As fractions of the width and height of an image of `size`.
+  scene::FitMargin For(ImageSize size) const {
+    if (!pixels) return {amount, amount};
+    return {amount / size.width, amount / size.height};
+  }
+};
+
 struct RenderSettings {
   scene::SceneOptions scene;   // displays, fixed frame, background, where files are found
   scene::OrbitView view;       // the camera
@@ -34,6 +48,7 @@ struct RenderSettings {
   ImageSize size;
   int samples = 4;             // multisampling per pixel, 4 as RViz requests; 0 = off
   Fit fit = Fit::kNone;
+  FitMargin fit_margin;
   std::optional<CameraSettings> camera;   // when set, seen through it instead of `view`, at its size
   // the message displays (Marker, Path, ...) of the .rviz file and --display, drawn from a bag's
   // or a message file's messages (display/display_set.h)

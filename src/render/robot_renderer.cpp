@@ -58,14 +58,14 @@ image::Frame RobotRenderer::Render(gl::SceneRenderer& gl, const std::vector<doub
   return Render(gl, positions, settings.view, settings.size, outputs);
 }
 
-scene::OrbitView RobotRenderer::FitView(Fit fit, const scene::OrbitView& view, ImageSize size, int count,
+scene::OrbitView RobotRenderer::FitView(Fit fit, const FitMargin& margin, const scene::OrbitView& view, ImageSize size, int count,
                                         const std::function<std::vector<double>(int)>& pose,
                                         const std::function<Eigen::Isometry3d(int)>& place) const {
   if (fit == Fit::kNone) return view;
   const double aspect = static_cast<double>(size.width) / size.height;
   return scene::FitView(
       count, [&](int k) { return Pose(pose(k), place ? place(k) : Eigen::Isometry3d::Identity()); }, view,
-      aspect, fit == Fit::kKeepFocal);
+      aspect, fit == Fit::kKeepFocal, margin.For(size));
 }
 
 }  // namespace urdfsnap::render

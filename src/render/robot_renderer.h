@@ -58,10 +58,10 @@ class RobotRenderer {
   // Throws urdfsnap::Error when camera.frame is not a link of the robot.
   Eigen::Isometry3d CameraPose(const std::vector<Eigen::Isometry3d>& X_RL, const CameraSettings& camera) const;
 
-  // The view `fit` makes of `view` for the poses `pose(k)` (placed at `place(k)` when given),
+  // The view `fit` makes of `view`, leaving `margin` on each side, for the poses `pose(k)` (placed at `place(k)` when given),
   // k = 0 .. count-1, as one camera for all of them (an animation's camera does not jump). The
   // poses are asked for twice and not kept.
-  scene::OrbitView FitView(Fit fit, const scene::OrbitView& view, ImageSize size, int count,
+  scene::OrbitView FitView(Fit fit, const FitMargin& margin, const scene::OrbitView& view, ImageSize size, int count,
                            const std::function<std::vector<double>(int)>& pose,
                            const std::function<Eigen::Isometry3d(int)>& place = {}) const;
 

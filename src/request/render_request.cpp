@@ -24,6 +24,10 @@ const std::array kTextOptions{
     TextOption{"distance", "orbit distance in m (RViz default 10)", &R::distance, false},
     TextOption{"focal", "orbit focal point X,Y,Z in m (RViz default 0,0,0)", &R::focal, false},
     TextOption{"fov", "vertical field of view in degrees (RViz default 45)", &R::fov, false},
+    TextOption{"fit-margin",
+               "with --fit, the empty border on each side: a fraction of the side (0.05) or pixels "
+               "(12px) (default 0.05)",
+               &R::fit_margin, false},
     TextOption{"fixed-frame",
                "link whose frame the scene is shown in (RViz default 'map', which a URDF has not: "
                "here the root link)",
@@ -69,8 +73,8 @@ const std::array kFlagOptions{
                "sliders are)",
                &R::no_clamp},
     FlagOption{"fit",
-               "choose the distance (and, without --focal, the focal point) so the robot fills "
-               "the image (RViz has no such view: default off)",
+               "choose the distance (and, without --focal, the focal point) so the robot's silhouette "
+               "fills the image up to --fit-margin, centred (RViz has no such view: default off)",
                &R::fit},
     FlagOption{"collision", "show collision geometry (RViz default off)", &R::collision},
     FlagOption{"no-visual", "hide visual geometry (RViz default shown)", &R::no_visual},

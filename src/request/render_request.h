@@ -23,6 +23,7 @@ struct RenderRequest {
   std::string fixed_frame, background, alpha, tf_scale;
   std::string follow;   // the orbit view's Target Frame
   bool fit = false;
+  std::string fit_margin;
   bool collision = false, no_visual = false, no_grid = false;
   bool tf = false, no_tf_names = false, no_tf_axes = false, no_tf_arrows = false;
   bool no_clamp = false, no_aa = false, allow_missing_meshes = false;

@@ -120,7 +120,8 @@ Prepared RenderSession::Prepare(const ResolvedRequest& r, Warnings& warnings) {
   std::vector<double> positions = model::ResolveJointPositions(robot, r.joints, r.clamp, warnings);
   const render::RobotRenderer& renderer = PreparedRobot(r.model, settings.scene, warnings);
   FollowTargetFrame(r, renderer, positions, settings, warnings);
-  settings.view = renderer.FitView(settings.fit, settings.view, settings.size, 1, [&](int) { return positions; });
+  settings.view = renderer.FitView(settings.fit, settings.fit_margin, settings.view, settings.size, 1,
+                                   [&](int) { return positions; });
   settings.fit = render::Fit::kNone;
   return {loaded, std::move(settings), std::move(positions), &renderer};
 }

@@ -70,14 +70,38 @@ void ApplyOptions(const RenderRequest& r, const CameraFiles& camera_files, const
   if (!r.follow.empty()) settings.target_frame = r.follow;
   settings.samples = r.no_aa ? 0 : 4;
   settings.fit = FitOf(r);
+  if (!r.fit_margin.empty()) settings.fit_margin = ParseFitMargin(r.fit_margin, label("fit-margin"), settings.size);
   // the calibrated camera, if any
   settings.camera = ParseCameraSettings(r, camera_files, label, settings);
 }
 
 void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label, Warnings& warnings) {
+  // the TF display's options, when neither --tf nor an .rviz config (which may show TF) turns it on
+  if (!r.tf && r.rviz.empty()) {
+    for (const auto& [given, name] : {std::pair{!r.tf_scale.empty(), "tf-scale"}, {r.no_tf_names, "no-tf-names"},
+                                      {r.no_tf_axes, "no-tf-axes"}, {r.no_tf_arrows, "no-tf-arrows"}}) {
+      if (given) WarnIgnored(warnings, label(name), "the TF display is off (" + label("tf") + " shows it)");
+    }
+  }
+  if (!r.fit && !r.fit_margin.empty()) {
+    WarnIgnored(warnings, label("fit-margin") + " " + r.fit_margin,
+                "it is the border " + label("fit") + " leaves, and " + label("fit") + " is not given");
+  }
   if (r.fit && !r.distance.empty()) {
-    warnings.Add(label("distance") + " " + r.distance + " is ignored: " + label("fit") +
-                 " chooses the distance that frames the robot");
+    WarnIgnored(warnings, label("distance") + " " + r.distance,
+                label("fit") + " chooses the distance that frames the robot");
+  }
+  // a camera replaces the orbit view (and --camera-info its field of view); --fit is an error there
+  if (r.camera_info.empty() && r.camera_frame.empty() && r.camera_pose.empty()) return;
+  for (const auto& [given, name] : {std::pair{!r.yaw.empty(), "yaw"}, {!r.pitch.empty(), "pitch"},
+                                    {!r.distance.empty(), "distance"}, {!r.focal.empty(), "focal"},
+                                    {!r.follow.empty(), "follow"}, {!r.fov.empty() && !r.camera_info.empty(), "fov"}}) {
+    if (given) {
+      WarnIgnored(warnings, label(name), std::string("the camera (") + label("camera-info") + ", " +
+                                             label("camera-frame") + ", " + label("camera-pose") +
+                                             ") replaces the orbit view" +
+                                             (name == std::string("fov") ? " and its field of view" : ""));
+    }
   }
 }
 

@@ -105,6 +105,20 @@ render::ImageSize ParseImageSize(const std::string& text, const std::string& opt
   return {static_cast<int>(w), static_cast<int>(h)};
 }
 
+render::FitMargin ParseFitMargin(const std::string& text, const std::string& option, render::ImageSize size) {
+  render::FitMargin margin;
+  margin.pixels = text.size() > 2 && text.ends_with("px");
+  const std::string number = margin.pixels ? text.substr(0, text.size() - 2) : text;
+  const double most_pixels = (std::min(size.width, size.height) - 1) / 2.0;
+  if (!ParseNumber(number, margin.amount) || margin.amount < 0 ||
+      margin.amount > (margin.pixels ? most_pixels : 0.45)) {
+    throw Error(option + " '" + text + "': expected a fraction of each side from 0 to 0.45 (e.g. 0.05) or " +
+                "pixels from 0px to " + FormatForPeople(most_pixels) + "px for " + std::to_string(size.width) + "x" +
+                std::to_string(size.height) + " (e.g. 12px)");
+  }
+  return margin;
+}
+
 Eigen::Vector3d ParseVector3(const std::string& text, const std::string& option) {
   const auto parts = Split(text, ',');
   Eigen::Vector3d v;

@@ -21,6 +21,10 @@ double ParseInRange(const std::string& text, const std::string& option, double l
 // below 1 or above image::kMaxImageSide.
 render::ImageSize ParseImageSize(const std::string& text, const std::string& option);
 
+// --fit-margin for an image of `size`: "0.05" (a fraction of each side, 0 to 0.45) or "12px"
+// (pixels, fewer than half the smaller side); throws urdfsnap::Error naming `option` and the forms.
+render::FitMargin ParseFitMargin(const std::string& text, const std::string& option, render::ImageSize size);
+
 // "X,Y,Z" → vector (finite numbers only); throws urdfsnap::Error naming `option`.
 Eigen::Vector3d ParseVector3(const std::string& text, const std::string& option);
 

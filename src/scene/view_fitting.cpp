@@ -1,13 +1,22 @@
-// Closed-form fitting: for a point p at offset q = p − focal, with b the unit vector from the focal
-// point to the eye and r, u the camera's right and up vectors, p is in view when
-// |q·r| ≤ tan(fov_x/2)·(d − q·b) and |q·u| ≤ tan(fov_y/2)·(d − q·b); the smallest d is the maximum
-// of q·b + |q·r|/tan(fov_x/2) and q·b + |q·u|/tan(fov_y/2) over all points.
+// Exact fitting from the convex hulls of the vertices seen along each image axis. With r, u and b
+// the camera's right, up and back (towards the eye) unit vectors and t = tan of half the field of
+// view on an axis a (r or u), a point p is inside the frame on that axis when
+// p·(±a + t·b) ≤ E·(±a + t·b) for the eye E. Writing h±(t) = max over p of p·(±a + t·b), the eye
+// whose frame touches the silhouette on both sides of the axis has E·a = (h+ − h−)/2 and
+// E·b = (h+ + h−)/(2t): centred on that axis, as near as that half-angle allows. The eye's depth
+// E·b is the larger of the two axes' (the axis that binds); on the other axis the half-angle t' < t
+// that touches both sides from that depth is found by bisection (the touching depth falls as t'
+// grows) and centres it. Only hull corners can reach a maximum, so the vertices are reduced to
+// two small 2D hulls, (p·r, p·b) and (p·u, p·b), as the scenes arrive.
 #include "scene/view_fitting.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
+
+#include "scene/convex_hull_2d.h"
 
 namespace urdfsnap::scene {
 
@@ -50,67 +59,129 @@ class DistinctScenes {
   std::vector<Placement> last_;
 };
 
-// The least distance from `view`'s focal point, along its own yaw, pitch and field of view, at
-// which one vertex lies in the image shrunk by `margin` and in front of the near clip plane.
-class Framing {
- public:
-  Framing(const OrbitView& view, double aspect, double margin)
-      : focal_(view.focal),
-        near_clip_(view.near_clip),
-        tan_x_(std::tan(view.fov_y / 2) * aspect * (1 - 2 * margin)),
-        tan_y_(std::tan(view.fov_y / 2) * (1 - 2 * margin)) {
-    const Eigen::Matrix4d V = ViewMatrix(view);
-    right_ = V.block<1, 3>(0, 0).transpose();
-    up_ = V.block<1, 3>(1, 0).transpose();
-    back_ = V.block<1, 3>(2, 0).transpose();
+// One image axis: the hull of (p·a, p·b) over every vertex, and the half-angle's tangent there.
+struct AxisHull {
+  std::vector<Eigen::Vector2d> corners;
+  double tan_half = 0;
+
+  // max over the corners of side·(p·a) + t·(p·b)
+  double Support(double side, double t) const {
+    double best = -std::numeric_limits<double>::infinity();
+    for (const auto& c : corners) best = std::max(best, side * c.x() + t * c.y());
+    return best;
+  }
+  // the eye's depth E·b whose frame of half-angle tangent t touches both sides
+  double TouchingDepth(double t) const { return (Support(1, t) + Support(-1, t)) / (2 * t); }
+  // the eye's E·a that centres the silhouette with half-angle tangent t
+  double CentredOffset(double t) const { return (Support(1, t) - Support(-1, t)) / 2; }
+
+  // E·a of the eye at depth `depth` (≥ TouchingDepth(tan_half)) that centres this axis.
+  double OffsetFrom(double depth) const {
+    double low = tan_half * 1e-9, high = tan_half;
+    if (TouchingDepth(high) >= depth || TouchingDepth(low) <= depth) {
+      return CentredOffset(TouchingDepth(high) >= depth ? high : low);
+    }
+    for (int i = 0; i < 60; ++i) {
+      const double mid = (low + high) / 2;
+      (TouchingDepth(mid) > depth ? low : high) = mid;
+    }
+    return CentredOffset((low + high) / 2);
   }
 
-  double Distance(const Eigen::Vector3d& p) const {
-    const Eigen::Vector3d q = p - focal_;
-    const double depth_offset = q.dot(back_);
-    // in the image, and in front of the near clip plane
-    return std::max({depth_offset + std::abs(q.dot(right_)) / tan_x_, depth_offset + std::abs(q.dot(up_)) / tan_y_,
-                     depth_offset + near_clip_});
+  // the least distance from `focal` along b at which every corner is inside ±tan_half about it
+  double DistanceAround(double focal_a, double focal_b) const {
+    double distance = 0;
+    for (const auto& c : corners) {
+      distance = std::max(distance, c.y() - focal_b + std::abs(c.x() - focal_a) / tan_half);
+    }
+    return distance;
   }
-
- private:
-  Eigen::Vector3d focal_, right_, up_, back_;
-  double near_clip_, tan_x_, tan_y_;
 };
+
+// The camera's right, up and back directions (rows of the view matrix) and the two image axes'
+// empty hulls, their half-angle tangents narrowed by the margin.
+struct FitStart {
+  Eigen::Vector3d right, up, back;
+  AxisHull across, upward;
+};
+
+FitStart StartFit(const OrbitView& view, double aspect, FitMargin margin) {
+  const Eigen::Matrix4d V = ViewMatrix(view);
+  FitStart start{V.block<1, 3>(0, 0).transpose(), V.block<1, 3>(1, 0).transpose(), V.block<1, 3>(2, 0).transpose(), {}, {}};
+  start.across.tan_half = std::tan(view.fov_y / 2) * aspect * (1 - 2 * margin.x);
+  start.upward.tan_half = std::tan(view.fov_y / 2) * (1 - 2 * margin.y);
+  return start;
+}
+
+// Adds the vertices of every distinct scene to the two axis hulls, re-hulling after each scene.
+bool Collect(int count, const std::function<Scene(int)>& scene_of, const Eigen::Vector3d& right,
+             const Eigen::Vector3d& up, const Eigen::Vector3d& back, AxisHull& across, AxisHull& upward) {
+  DistinctScenes scenes;
+  for (int k = 0; k < count; ++k) {
+    std::vector<Eigen::Vector2d> x = across.corners, y = upward.corners;
+    scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) {
+      const double depth = p.dot(back);
+      x.emplace_back(p.dot(right), depth);
+      y.emplace_back(p.dot(up), depth);
+    });
+    if (x.size() == across.corners.size()) continue;
+    across.corners = ConvexHull2d(std::move(x));
+    upward.corners = ConvexHull2d(std::move(y));
+  }
+  return !across.corners.empty();
+}
+
+// The least distance from `view`'s focal point, along its own yaw, pitch and field of view, at
+// which every corner is inside the image shrunk by the margin (the axes' tan_half) and in front
+// of the near clip plane. `back` is the camera's back axis, across.corners' second coordinate.
+double KeptFocalDistance(const AxisHull& across, const AxisHull& upward, const OrbitView& view,
+                         const Eigen::Vector3d& right, const Eigen::Vector3d& up, const Eigen::Vector3d& back) {
+  double nearest = -std::numeric_limits<double>::infinity();
+  for (const auto& c : across.corners) nearest = std::max(nearest, c.y());
+  const double distance = std::max({across.DistanceAround(view.focal.dot(right), view.focal.dot(back)),
+                                    upward.DistanceAround(view.focal.dot(up), view.focal.dot(back)),
+                                    nearest - view.focal.dot(back) + view.near_clip});
+  return std::max(distance, view.near_clip * 2);
+}
 
 }  // namespace
 
 OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitView view, double aspect,
-                  bool keep_focal, double margin) {
-  // the box gives the focal point; with the focal point kept it is not needed
-  if (!keep_focal) {
-    Eigen::AlignedBox3d box;
-    DistinctScenes scenes;
-    for (int k = 0; k < count; ++k) scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) { box.extend(p); });
-    if (box.isEmpty()) return view;
-    view.focal = box.center();
+                  bool keep_focal, FitMargin margin) {
+  auto [right, up, back, across, upward] = StartFit(view, aspect, margin);
+  if (!Collect(count, scene_of, right, up, back, across, upward)) return view;
+  double nearest = -std::numeric_limits<double>::infinity(), farthest = -nearest;
+  for (const auto& c : across.corners) {
+    nearest = std::max(nearest, c.y());
+    farthest = std::min(farthest, c.y());
   }
-  const Framing framing(view, aspect, margin);
-  double distance = 0;
-  bool any = false;
-  DistinctScenes scenes;
-  for (int k = 0; k < count; ++k) {
-    scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) {
-      distance = std::max(distance, framing.Distance(p));
-      any = true;
-    });
+  if (keep_focal) {
+    view.distance = KeptFocalDistance(across, upward, view, right, up, back);
+    return view;
   }
-  if (!any) return view;
-  view.distance = std::max(distance, view.near_clip * 2);
+  // the eye in the camera's axes: as far back as the binding axis needs, in front of the near plane
+  const double depth = std::max({across.TouchingDepth(across.tan_half), upward.TouchingDepth(upward.tan_half),
+                                 nearest + view.near_clip});
+  const Eigen::Vector3d eye = across.OffsetFrom(depth) * right + upward.OffsetFrom(depth) * up + depth * back;
+  view.distance = std::max(depth - (nearest + farthest) / 2, view.near_clip * 2);
+  view.focal = eye - view.distance * back;
   return view;
 }
 
-OrbitView FitView(const Scene& scene, OrbitView view, double aspect, bool keep_focal, double margin) {
+OrbitView FitView(const Scene& scene, OrbitView view, double aspect, bool keep_focal, FitMargin margin) {
   return FitView(1, [&](int) { return scene; }, view, aspect, keep_focal, margin);
 }
 
+std::optional<Eigen::Vector3d> BoundsCentre(int count, const std::function<Scene(int)>& scene_of) {
+  Eigen::AlignedBox3d box;
+  DistinctScenes scenes;
+  for (int k = 0; k < count; ++k) scenes.ForEachVertex(scene_of(k), [&](const Eigen::Vector3d& p) { box.extend(p); });
+  if (box.isEmpty()) return std::nullopt;
+  return box.center();
+}
+
 double FitDistance(const Scene& scene, const OrbitView& view, const std::vector<double>& yaws, double aspect,
-                   double margin) {
+                   FitMargin margin) {
   // each vertex placed once (the same point of a mesh once per placement), not once per yaw
   std::vector<Eigen::Vector3d> points;
   for (const auto& item : scene.items) {
@@ -128,13 +199,22 @@ double FitDistance(const Scene& scene, const OrbitView& view, const std::vector<
   }
   if (points.empty()) return 0;
   double fitted = 0;
+  std::vector<Eigen::Vector2d> x, y;
   for (const double yaw : yaws) {
+    // FitView's keep_focal arithmetic on the same hulls, so the result is the same bit for bit
     OrbitView side = view;
     side.yaw = yaw;
-    const Framing framing(side, aspect, margin);
-    double distance = 0;
-    for (const auto& p : points) distance = std::max(distance, framing.Distance(p));
-    fitted = std::max({fitted, distance, view.near_clip * 2});
+    auto [right, up, back, across, upward] = StartFit(side, aspect, margin);
+    x.clear();
+    y.clear();
+    for (const auto& p : points) {
+      const double depth = p.dot(back);
+      x.emplace_back(p.dot(right), depth);
+      y.emplace_back(p.dot(up), depth);
+    }
+    across.corners = ConvexHull2d(x);
+    upward.corners = ConvexHull2d(y);
+    fitted = std::max(fitted, KeptFocalDistance(across, upward, side, right, up, back));
   }
   return fitted;
 }

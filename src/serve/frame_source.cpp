@@ -87,7 +87,8 @@ scene::OrbitView FrameSource::FitView(const request::RenderRequest& request, con
   }
   if (scene.items.empty()) throw Error("robot '" + robot.name() + "' has no geometry shown to frame");
   const render::ImageSize size = prepared.settings.size;
-  return scene::FitView(scene, prepared.settings.view, static_cast<double>(size.width) / size.height, false);
+  return scene::FitView(scene, prepared.settings.view, static_cast<double>(size.width) / size.height, false,
+                        prepared.settings.fit_margin.For(size));
 }
 
 StartingView FrameSource::Start(Warnings& warnings) {

@@ -11,6 +11,7 @@
 #include "common/error.h"
 #include "image/png_reader.h"
 #include "image/depth_label_files.h"
+#include "snapshot/golden_camera.h"
 
 namespace urdfsnap::snapshot {
 
@@ -140,10 +141,23 @@ void CompareGray16Goldens(const SnapshotCase& c, image::Frame& frame, CaseResult
   }
 }
 
+// The orbit view to draw `c` with (the stored one or the current one, as `choice` says), and how
+// the current one differs from the stored one.
+void ChooseCamera(const SnapshotCase& c, CameraChoice choice, render::RenderSettings& settings, CaseResult& result) {
+  if (settings.camera) return;  // a calibrated camera: given by its files, nothing stored
+  const std::optional<scene::OrbitView> stored = ReadGoldenCamera(GoldenCameraFile(c.golden));
+  if (stored) {
+    result.record.camera = CameraMovement(*stored, settings.view);
+    if (choice == CameraChoice::kStored) settings.view = *stored;
+  }
+  result.view = settings.view;
+  result.camera_file_current = stored && result.record.camera.empty();
+}
+
 }  // namespace
 
 CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const SnapshotCase& c,
-                     const CaseRenderer& render, Warnings& warnings) {
+                     const CaseRenderer& render, Warnings& warnings, CameraChoice camera) {
   const auto start = std::chrono::steady_clock::now();
   CaseResult result;
   CaseRecord& record = result.record;
@@ -155,12 +169,18 @@ CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const 
   try {
     const image::FrameOutputs outputs{true, c.depth.wanted, c.labels.wanted};
     request::Rendered rendered = render(
-        session, c, [&](std::string_view name) { return OptionLocation(suite, c, name); }, warnings, outputs);
+        session, c, [&](std::string_view name) { return OptionLocation(suite, c, name); },
+        [&](render::RenderSettings& settings) { ChooseCamera(c, camera, settings, result); }, warnings, outputs);
+    image::Frame& frame = rendered.frame;
     result.robot = rendered.robot;
-    result.actual = std::move(rendered.frame.colour);
+    result.actual = std::move(frame.colour);
     Compare(c, result);
     result.colour_status = record.status;
-    CompareGray16Goldens(c, rendered.frame, result, *rendered.robot);
+    CompareGray16Goldens(c, frame, result, *rendered.robot);
+    if (!record.camera.empty()) {
+      record.status = CombinedStatus({record.status, CaseStatus::kFailed});
+      record.message = record.camera + "; " + record.message;
+    }
   } catch (const Error& e) {
     record.status = CaseStatus::kError;
     record.message = Located(suite, c, e.what());

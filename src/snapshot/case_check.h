@@ -20,6 +20,13 @@ struct Gray16Result {
   image::Image expected_picture, actual_picture, diff_picture;
 };
 
+// Which camera a case with an orbit view is drawn with: the one stored beside its golden (check:
+// a model change shows as the pixels it changes, and a camera that the options would now place
+// elsewhere, a fit that moved, is reported apart), or the one its options give now (update: what
+// gets stored). Without a stored camera (goldens from before cameras were stored) both draw with
+// the current one.
+enum class CameraChoice { kStored, kCurrent };
+
 // A case just checked: its record, and its images until the report has them (then dropped, so
 // that a suite's memory does not grow with its cases).
 struct CaseResult {
@@ -30,18 +37,26 @@ struct CaseResult {
   image::Image diff;      // set for kFailed cases of equal size
   Gray16Result depth, labels;  // for cases with those goldens
   std::shared_ptr<const model::Robot> robot;  // the robot rendered; null when rendering failed
+  std::optional<scene::OrbitView> view;  // the orbit view drawn (none: a calibrated camera, or an error)
+  bool camera_file_current = true;  // false when the golden's camera file is missing or holds another view
 };
 
-// How a case is drawn: its request through `session` (labels naming the suite's lines), into the
-// images `outputs` asks for. The command supplies it, since a case with a recording moment is drawn
-// as `render --bag` draws one.
-using CaseRenderer = std::function<request::Rendered(request::RenderSession& session, const SnapshotCase& c,
-                                                     const request::OptionLabel& label, Warnings& warnings,
-                                                     const image::FrameOutputs& outputs)>;
+// Replaces the orbit view of a case's prepared settings with the one the check draws it with.
+using PlaceCamera = std::function<void(render::RenderSettings& settings)>;
 
-// Renders `c` through `render` and compares it with its goldens. Never throws for problems of the
-// case itself: they become a kError result whose message names the suite file and line.
+// How a case is drawn: its request through `session` (labels naming the suite's lines), its orbit
+// view placed by `place_camera` between preparing and drawing, into the images `outputs` asks for.
+// The command supplies it, since a case with a recording moment is drawn as `render --bag` draws one.
+using CaseRenderer = std::function<request::Rendered(
+    request::RenderSession& session, const SnapshotCase& c, const request::OptionLabel& label,
+    const PlaceCamera& place_camera, Warnings& warnings, const image::FrameOutputs& outputs)>;
+
+// Renders `c` through `render` with the camera `camera` chooses and compares it with its goldens; a
+// stored camera that the case's options would now place elsewhere fails the case with record.camera
+// saying how it moved. Never throws for problems of the case itself: they become a kError result
+// whose message names the suite file and line.
 CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const SnapshotCase& c,
-                     const CaseRenderer& render, Warnings& warnings);
+                     const CaseRenderer& render, Warnings& warnings,
+                     CameraChoice camera = CameraChoice::kStored);
 
 }  // namespace urdfsnap::snapshot

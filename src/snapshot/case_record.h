@@ -50,6 +50,7 @@ struct CaseRecord {
   std::optional<image::DiffStats> figures;  // set when the render was compared with its golden
   ReportImages images;
   std::optional<Gray16Record> depth, labels;  // for cases with depth or labels goldens
+  std::string camera;  // "camera moved: ..." when the stored camera is not the one the case gives now
   std::string shard;  // "K/N" of the shard that checked it, in merged results; "" otherwise
 };
 

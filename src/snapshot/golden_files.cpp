@@ -4,6 +4,7 @@
 #include "image/gray16_png.h"
 #include "image/png_writer.h"
 #include "image/depth_label_files.h"
+#include "snapshot/golden_camera.h"
 
 namespace urdfsnap::snapshot {
 
@@ -16,6 +17,7 @@ bool Rewrite(CaseStatus status, bool force) { return force || status != CaseStat
 void PlanGoldens(OutputPlan& outputs, const SnapshotCase& c) {
   const std::string role = "the golden of case '" + c.name + "'";
   outputs.AddFile(c.golden, role);
+  if (c.request.camera_info.empty()) outputs.AddFile(GoldenCameraFile(c.golden), "the camera of case '" + c.name + "'");
   if (c.depth.wanted) outputs.AddFile(c.depth.golden, "the depth golden of case '" + c.name + "'");
   if (c.labels.wanted) {
     outputs.AddFile(c.labels.golden, "the labels golden of case '" + c.name + "'");
@@ -29,6 +31,10 @@ std::vector<std::string> WriteGoldens(OutputPlan& outputs, const SnapshotCase& c
   if (Rewrite(result.colour_status, force)) {
     outputs.Write(c.golden, image::EncodePng(result.actual));
     written.push_back(c.golden);
+  }
+  if (result.view && (Rewrite(result.colour_status, force) || !result.camera_file_current)) {
+    outputs.Write(GoldenCameraFile(c.golden), GoldenCameraJson(*result.view));
+    written.push_back(GoldenCameraFile(c.golden));
   }
   const CaseRecord& record = result.record;
   if (record.depth && Rewrite(record.depth->status, force)) {

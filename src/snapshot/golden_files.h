@@ -1,6 +1,7 @@
-// Writing a case's goldens for `snapshot update`: the colour PNG, and the depth (16-bit mm) and
-// labels (16-bit, with the link names in FILE.json beside it) PNGs of cases that have them; only
-// those that are missing or no longer match, unless forced.
+// Writing a case's goldens for `snapshot update`: the colour PNG with the camera it was drawn with
+// (snapshot/golden_camera.h), and the depth (16-bit mm) and labels (16-bit, with the link names in
+// FILE.json beside it) PNGs of cases that have them; only those that are missing or no longer
+// match (the camera also when it is missing or another), unless forced.
 #pragma once
 
 #include <string>

@@ -121,6 +121,11 @@ std::string CaseSection(const CaseRecord& r) {
        << " <span class=\"" << StatusWord(r.status) << "\">" << StatusWord(r.status) << "</span>"
        << (r.shard.empty() ? "" : " <small>shard " + EscapeMarkup(r.shard) + "</small>")
        << "</h2>\n<p class=\"figures\">" << EscapeMarkup(r.message) << "</p>\n";
+  if (!r.camera.empty()) {
+    html << "<p class=\"camera\">" << EscapeMarkup(r.camera)
+         << ". Drawn with the camera stored beside the golden, so the differences below are the model's; "
+            "<code>snapshot update</code> stores the new camera.</p>\n";
+  }
   html << ImageBlock(r.images, "", r.golden, r.status);
   html << Gray16Block(r.depth, "depth",
                       "Depth in false colour: near yellow, through green and blue, to far purple (expected and "

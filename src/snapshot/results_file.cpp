@@ -88,6 +88,7 @@ Json CaseJson(const CaseRecord& r) {
             {"images", ImagesJson(r.images)}};
   if (r.depth) c["depth"] = Gray16Json(*r.depth);
   if (r.labels) c["labels"] = Gray16Json(*r.labels);
+  if (!r.camera.empty()) c["camera"] = r.camera;
   if (!r.shard.empty()) c["shard"] = r.shard;
   return c;
 }
@@ -235,6 +236,7 @@ CaseRecord ReadCase(const FieldReader& in, const Json& c, const std::string& pla
   r.images = ReadImages(in, in.Member(c, "images", place), place + ".images");
   if (c.contains("depth")) r.depth = ReadGray16(in, c["depth"], place + ".depth");
   if (c.contains("labels")) r.labels = ReadGray16(in, c["labels"], place + ".labels");
+  if (c.contains("camera")) r.camera = in.Text(c, "camera", place);
   if (c.contains("shard")) r.shard = in.Text(c, "shard", place);
   return r;
 }

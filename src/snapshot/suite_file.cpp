@@ -18,6 +18,7 @@
 #include "common/internal/yaml_reader.h"
 #include "common/number_text.h"
 #include "common/stable_hash.h"
+#include "image/image_file_names.h"
 
 namespace urdfsnap::snapshot {
 
@@ -95,6 +96,14 @@ class SuiteReader {
   // symbolic links), where a suite from elsewhere cannot make it overwrite another file.
   std::string ResolveGolden(const YAML::Node& value, const std::string& key) const {
     const std::string text = Text(value, key);
+    const image::ImageKind kind = key == "golden"         ? image::ImageKind::kColour
+                                  : key == "depth-golden" ? image::ImageKind::kDepthGolden
+                                                          : image::ImageKind::kLabels;
+    try {
+      image::CheckImageFileName(text, kind, "'" + key + "'");
+    } catch (const Error& e) {
+      throw ErrorAt(value, e.what());
+    }
     if (ResolveInside(dir_.empty() ? "." : dir_.string(), text).empty()) {
       throw ErrorAt(value, "'" + key + "': '" + text + "' leads outside the suite's folder (goldens are "
                            "written by `snapshot update` and stay beside the suite)");

@@ -21,6 +21,11 @@ OutputFormat OutputFormatOf(const std::string& path) {
               "such as frames/%05d.png");
 }
 
+FormatDefaults DefaultsFor(OutputFormat format) {
+  if (format == OutputFormat::kGif) return {15, "480x360"};
+  return {30, "640x480"};
+}
+
 const char* OutputFormatName(OutputFormat format) {
   switch (format) {
     case OutputFormat::kMp4:

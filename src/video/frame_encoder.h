@@ -27,6 +27,16 @@ enum class OutputFormat {
 // urdfsnap writes for anything else.
 OutputFormat OutputFormatOf(const std::string& path);
 
+// What an animation in a format gets when `animate` is given no --fps or --size: 30 frames/s at
+// 640x480 (RViz's reference render area), but 15 frames/s at 480x360 for GIF, whose frames are
+// each a full palette image under LZW (a 10 s Panda turntable at 30 frames/s and 640x480 is ten
+// times the MP4's size; at these it is a quarter of that). Explicit options always win.
+struct FormatDefaults {
+  double fps;
+  const char* size;   // as --size takes it
+};
+FormatDefaults DefaultsFor(OutputFormat format);
+
 // "MP4 (H.264)", "PNG sequence", ...: for messages.
 const char* OutputFormatName(OutputFormat format);
 

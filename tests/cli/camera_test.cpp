@@ -179,7 +179,7 @@ TEST_F(CameraTest, CameraOptionErrorsAreOneLine) {
             "urdfsnap: error: camera frame 'elbow' is not a link of robot 'box'\n");
   EXPECT_EQ(error(model + "--camera-info " + Write("bad.yaml", "width: 4\nheight: 3\nk: [1, 2]\n")),
             "urdfsnap: error: " + Path("bad.yaml") + ":3: k: expected 9 numbers (3x3, row-major), got 2\n");
-  EXPECT_EQ(error(model + "--mask m.jpg"), "urdfsnap: error: --mask 'm.jpg': expected a .png file\n");
+  EXPECT_EQ(error(model + "--mask m.jpg"), "urdfsnap: error: --mask 'm.jpg': expected a .png (8-bit mask) file; urdfsnap does not write .jpg images\n");
   EXPECT_FALSE(std::filesystem::exists(Path("x.png")));
 }
 

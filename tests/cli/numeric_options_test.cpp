@@ -64,6 +64,8 @@ void AddViewOptions(std::vector<CommandOption>& options, const char* command, co
   if (!fitted_only) number("--distance", "--distance {v}");
   number("--focal", "--focal 0,{v},0");
   number("--fov", "--fov {v}");
+  // docs always fits: there --fit is only warned of, and the margin stands alone
+  number("--fit-margin", fitted_only ? "--fit-margin {v}" : "--fit --fit-margin {v}");
   number("--background", "--background {v},0,0");
   number("--alpha", "--alpha {v}");
   number("--tf-scale", "--tf-scale {v}");
@@ -243,6 +245,7 @@ const std::vector<SuiteKey>& SuiteKeys() {
       {"distance", Kind::kNumber, "{v}"},
       {"focal", Kind::kNumber, "0,{v},0"},
       {"fov", Kind::kNumber, "{v}"},
+      {"fit-margin", Kind::kNumber, "{v}"},
       {"fixed-frame", Kind::kText},
       {"follow", Kind::kText},
       {"background", Kind::kNumber, "{v},0,0"},

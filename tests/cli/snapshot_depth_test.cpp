@@ -64,7 +64,8 @@ TEST_F(SnapshotDepthTest, UpdateWritesWhatRenderWritesAndCheckPasses) {
 
   r = RunUrdfsnap("snapshot update " + suite);
   ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_TRUE(Contains(r.output, "wrote    home: " + Path("goldens/home.png") + ", " + Path("goldens/home.depth.png") +
+  EXPECT_TRUE(Contains(r.output, "wrote    home: " + Path("goldens/home.png") + ", " + Path("goldens/home.camera.json") + ", " +
+                                     Path("goldens/home.depth.png") +
                                      ", " + Path("goldens/home.labels.png") + " (was MISSING)")) << r.output;
   // the goldens are render's files, byte for byte, with the link names beside the labels
   ASSERT_EQ(RunUrdfsnap("render " + kMrm + kMixedFlags + " -o " + Path("r.png") + " --depth " + Path("r.depth.png") +
@@ -87,7 +88,7 @@ TEST_F(SnapshotDepthTest, UpdateWritesWhatRenderWritesAndCheckPasses) {
   EXPECT_TRUE(Contains(r.output, "depth: no depth golden")) << r.output;
   r = RunUrdfsnap("snapshot update " + suite);
   EXPECT_TRUE(Contains(r.output, "wrote    home: " + Path("goldens/home.depth.png") + " (was MISSING)")) << r.output;
-  EXPECT_TRUE(Contains(r.output, "1 goldens of 1 cases written")) << r.output;
+  EXPECT_TRUE(Contains(r.output, "1 golden files of 1 cases written")) << r.output;
   EXPECT_TRUE(Contains(RunUrdfsnap("snapshot update " + suite).output, "same     home")) << r.output;
 }
 

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "image/image_file_names.h"
 #include "image/npy_writer.h"
 #include "image/png_reader.h"
 #include "support/error_text.h"
@@ -67,12 +68,15 @@ TEST(DepthLabelFiles, LabelPngAndItsNamesBesideIt) {
 TEST(DepthLabelFiles, BadNamesAreRefusedBeforeAnythingIsWritten) {
   const test::TempFolder folder("frame_files");
   try {
-    CheckDepthPath("depth.tiff", "--depth");
+    CheckImageFileName("depth.tiff", ImageKind::kDepth, "--depth");
     FAIL();
   } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "--depth 'depth.tiff': expected a .png (16-bit millimetres) or .npy (float32 metres) file");
+    EXPECT_STREQ(e.what(), "--depth 'depth.tiff': expected a .png (16-bit millimetres) or .npy (float32 metres) "
+                           "file; urdfsnap does not write .tiff images");
   }
-  EXPECT_THROW(CheckLabelsPath("labels.npy", "--labels"), Error);
+  EXPECT_THROW(CheckImageFileName("labels.npy", ImageKind::kLabels, "--labels"), Error);
+  EXPECT_NO_THROW(CheckImageFileName("DEPTH.NPY", ImageKind::kDepth, "--depth"));
+  EXPECT_THROW(WriteLabelFiles({1, 1, {0}}, {}, folder.Path("labels.jpg")), Error);
   EXPECT_THROW(WriteDepthFile({1, 1, {1.0f}}, folder.Path("no/such/folder/depth.png")), Error);
   EXPECT_TRUE(folder.Listing().empty());
 }
@@ -87,7 +91,8 @@ TEST(DepthLabelFiles, TheExtensionChoosesTheDepthEncoding) {
   EXPECT_EQ(EncodeDepthFile(depth, "d.npy").substr(0, 6), "\x93NUMPY");
   EXPECT_EQ(EncodeDepthFile(depth, "depth/%05d.png").substr(1, 3), "PNG");
   EXPECT_EQ(test::ErrorText([&] { EncodeDepthFile(depth, "d.tiff"); }),
-            "depth file 'd.tiff': expected a .png (16-bit millimetres) or .npy (float32 metres) file");
+            "depth file 'd.tiff': expected a .png (16-bit millimetres) or .npy (float32 metres) file; urdfsnap "
+            "does not write .tiff images");
 }
 
 TEST(DepthLabelFiles, LabelNamesGoBesideTheLabelImage) {

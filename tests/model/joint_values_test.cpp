@@ -47,9 +47,9 @@ TEST_F(ResolveTest, OutOfLimitValuesAreClampedWithOneWarningEach) {
   EXPECT_EQ(Position(positions, "spin"), 7.0);  // continuous: no limits
   EXPECT_DOUBLE_EQ(Position(positions, "follower"), -0.9);  // follows the clamped leader
   EXPECT_EQ(warnings_.messages()[0],
-            "joint 'rev': 2.5 is outside its limits [-1, 2]; clamped to 2 as "
+            "joint 'rev': 2.5 rad is outside its limits, -1 to 2 rad; clamped to 2 rad as "
             "joint_state_publisher's slider would (--no-clamp keeps it)");
-  EXPECT_THAT(warnings_.messages()[1], HasSubstr("joint 'slide': -1 is outside its limits"));
+  EXPECT_THAT(warnings_.messages()[1], HasSubstr("joint 'slide': -1 m is outside its limits, "));
   EXPECT_EQ(warnings_.messages().size(), 4u);  // and floating, planar
 }
 

@@ -101,7 +101,7 @@ TEST(FramePlanTest, RefusesBadArgumentsAndEndlessAnimations) {
   EXPECT_THAT(ErrorText([] { PlanFrames(EndingAt(1), 30, std::nan("")); }), HasSubstr("speed"));
   EXPECT_THAT(ErrorText([] { PlanStill(0, 30); }), HasSubstr("the duration (seconds) must be"));
   EXPECT_THAT(ErrorText([] { PlanFrames(EndingAt(1.7e9), 30, 1); }),
-              HasSubstr("frames (1.7e+09 s at 30 frames/s), more than urdfsnap's limit"));
+              HasSubstr("frames (1700000000 s at 30 frames/s), more than urdfsnap's limit"));
 }
 
 }  // namespace

@@ -95,8 +95,8 @@ TEST_F(FramePosesTest, ValuesOutsideTheLimitsAreDrawnAsRecordedWithOneWarningPer
   Warnings warnings;
   const FramePoses poses(robot_, trajectory, {}, {}, warnings);
   EXPECT_THAT(warnings.messages(),
-              ElementsAre("joint 'shoulder': swing.csv takes it outside its limits [-1, 1] at "
-                          "1 s, furthest to -2.5 at 2 s (1.5 beyond); drawn as recorded "
+              ElementsAre("joint 'shoulder': swing.csv takes it outside its limits, -1 to 1 rad, at "
+                          "1 s, furthest to -2.5 rad at 2 s (1.5 rad beyond); drawn as recorded "
                           "(--clamp clamps it)"));
   EXPECT_DOUBLE_EQ(poses.At(2, warnings)[0], -2.5);
   EXPECT_DOUBLE_EQ(poses.At(1, warnings)[0], 1.5);
@@ -110,8 +110,8 @@ TEST_F(FramePosesTest, ClampTrajectoryClampsEveryFrameButWarnsOncePerJoint) {
   Warnings warnings;
   const FramePoses poses(robot_, trajectory, {}, {.clamp_trajectory = true}, warnings);
   EXPECT_THAT(warnings.messages(),
-              ElementsAre("joint 'shoulder': swing.csv takes it outside its limits [-1, 1] at "
-                          "1 s, furthest to -2.5 at 2 s (1.5 beyond); clamped in every frame as "
+              ElementsAre("joint 'shoulder': swing.csv takes it outside its limits, -1 to 1 rad, at "
+                          "1 s, furthest to -2.5 rad at 2 s (1.5 rad beyond); clamped in every frame as "
                           "joint_state_publisher's slider would"));
   for (double t = 0; t <= 3; t += 0.1) {
     const double shoulder = poses.At(t, warnings)[0];
@@ -126,8 +126,8 @@ TEST_F(FramePosesTest, DefaultsAreClampedAsRenderClampsThemUnlessTold) {
   Warnings warnings;
   const FramePoses clamped(robot_, wave, {{"shoulder", 5.0}}, {}, warnings);
   EXPECT_EQ(clamped.At(0, warnings)[0], 1.0);
-  EXPECT_THAT(warnings.messages(), ElementsAre(HasSubstr("joint 'shoulder': 5 is outside its "
-                                                         "limits [-1, 1]; clamped to 1")));
+  EXPECT_THAT(warnings.messages(), ElementsAre(HasSubstr("joint 'shoulder': 5 rad is outside its "
+                                                         "limits, -1 to 1 rad; clamped to 1 rad")));
   Warnings unclamped_warnings;
   const FramePoses unclamped(robot_, wave, {{"shoulder", 5.0}}, {.clamp_defaults = false},
                              unclamped_warnings);

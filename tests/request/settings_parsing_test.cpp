@@ -2,6 +2,7 @@
 // for every option (the joint values' too); errors named by the caller's label (unit).
 #include "request/settings_parsing.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -12,6 +13,8 @@
 
 namespace urdfsnap::request {
 namespace {
+
+using ::testing::ElementsAre;
 
 render::RenderSettings Parse(const RenderRequest& request) {
   Warnings warnings;
@@ -26,6 +29,57 @@ std::string ErrorOf(const RenderRequest& request, const OptionLabel& label = Com
     return e.what();
   }
   return "no error";
+}
+
+TEST(SettingsParsing, FitMarginIsAFractionOrPixelsOfTheImage) {
+  RenderRequest r;
+  r.fit = true;
+  r.size = "200x100";
+  r.fit_margin = "0.1";
+  EXPECT_DOUBLE_EQ(Parse(r).fit_margin.For({200, 100}).x, 0.1);
+  r.fit_margin = "10px";
+  const scene::FitMargin pixels = Parse(r).fit_margin.For({200, 100});
+  EXPECT_DOUBLE_EQ(pixels.x, 0.05);
+  EXPECT_DOUBLE_EQ(pixels.y, 0.1);
+  for (const char* bad : {"0.5", "-0.1", "50px", "px", "1e999", "10 px"}) {
+    r.fit_margin = bad;
+    EXPECT_NE(ErrorOf(r).find("--fit-margin '" + std::string(bad) + "': expected a fraction"), std::string::npos) << bad;
+  }
+}
+
+// Options that would do nothing say so: --fit-margin without --fit, TF options with the TF display off.
+TEST(SettingsParsing, OptionsWithoutEffectAreWarnedOf) {
+  RenderRequest r;
+  r.fit_margin = "0.1";
+  r.tf_scale = "2";
+  r.no_tf_names = true;
+  Warnings warnings;
+  ParseRenderSettings(r, CommandLineLabel, warnings);
+  ASSERT_EQ(warnings.messages().size(), 3u);
+  EXPECT_EQ(warnings.messages()[0], "--tf-scale is ignored: the TF display is off (--tf shows it)");
+  EXPECT_EQ(warnings.messages()[1], "--no-tf-names is ignored: the TF display is off (--tf shows it)");
+  EXPECT_EQ(warnings.messages()[2], "--fit-margin 0.1 is ignored: it is the border --fit leaves, and --fit is not given");
+  r.fit = r.tf = true;
+  Warnings none;
+  ParseRenderSettings(r, CommandLineLabel, none);
+  EXPECT_TRUE(none.messages().empty());
+}
+
+// A camera replaces the orbit view: its options say so; --fov still sets a posed camera's field of
+// view when there is no --camera-info to give one.
+TEST(SettingsParsing, OrbitOptionsBesideACameraAreWarnedOf) {
+  RenderRequest r;
+  r.camera_pose = "0,0,5,1,0,0,0";
+  r.yaw = "1";
+  r.focal = "0,0,1";
+  r.fov = "30";
+  Warnings warnings;
+  ParseRenderSettings(r, CommandLineLabel, warnings);
+  EXPECT_THAT(warnings.messages(),
+              ElementsAre("--yaw is ignored: the camera (--camera-info, --camera-frame, --camera-pose) replaces the "
+                          "orbit view",
+                          "--focal is ignored: the camera (--camera-info, --camera-frame, --camera-pose) replaces the "
+                          "orbit view"));
 }
 
 TEST(SettingsParsing, NothingGivenIsRvizsDefaults) {

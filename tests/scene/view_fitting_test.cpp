@@ -1,5 +1,6 @@
-// --fit's view: every vertex inside the image with the margin, the focal point at the centre of
-// the bounds, and the scenes of an animation placed alike visited once (unit, no GL).
+// --fit's view: the silhouette centred both ways and filling the frame up to the margin on its
+// binding axis, the focal point kept when asked, and the scenes of an animation placed alike
+// visited once (unit, no GL).
 #include "scene/view_fitting.h"
 
 #include <memory>
@@ -29,25 +30,59 @@ Scene CubeAt(const Eigen::Affine3d& X_FG) {
 
 Eigen::Affine3d Moved(double x, double y, double z) { return Eigen::Affine3d(Eigen::Translation3d(x, y, z)); }
 
-// The largest |NDC coordinate| of the scene's vertices seen through `view`.
-double LargestNdc(const Scene& scene, const OrbitView& view, double aspect) {
+// The extents of the scene's vertices in normalised device coordinates seen through `view`: x
+// from .min().x() to .max().x(), y likewise.
+Eigen::AlignedBox2d NdcExtents(const Scene& scene, const OrbitView& view, double aspect) {
   const Eigen::Matrix4d PV = ProjectionMatrix(view, aspect) * ViewMatrix(view);
-  double largest = 0;
+  Eigen::AlignedBox2d box;
   for (const auto& item : scene.items) {
     for (const auto& p : item.mesh->positions) {
       const Eigen::Vector4d clip = PV * (item.X_FG * p.cast<double>()).homogeneous();
-      largest = std::max({largest, std::abs(clip.x() / clip.w()), std::abs(clip.y() / clip.w())});
+      EXPECT_GT(clip.w(), 0);
+      box.extend(Eigen::Vector2d(clip.x() / clip.w(), clip.y() / clip.w()));
     }
   }
-  return largest;
+  return box;
 }
 
-TEST(FitView, FramesEveryVertexWithTheMargin) {
-  const Scene scene = CubeAt(Moved(1, 2, 3));
-  const OrbitView fitted = FitView(scene, OrbitView{}, 4.0 / 3, false);
-  EXPECT_TRUE(fitted.focal.isApprox(Eigen::Vector3d(1, 2, 3), 1e-12));
-  // the outermost vertex touches the shrunk frame (within rounding), none goes past it
-  EXPECT_NEAR(LargestNdc(scene, fitted, 4.0 / 3), 0.9, 1e-9);
+// The largest |NDC coordinate| of the scene's vertices seen through `view`.
+double LargestNdc(const Scene& scene, const OrbitView& view, double aspect) {
+  const Eigen::AlignedBox2d box = NdcExtents(scene, view, aspect);
+  return std::max(box.max().cwiseAbs().maxCoeff(), box.min().cwiseAbs().maxCoeff());
+}
+
+Scene Joined(Scene a, const Scene& b) {
+  a.items.insert(a.items.end(), b.items.begin(), b.items.end());
+  return a;
+}
+
+TEST(FitView, CentresTheSilhouetteAndFillsTheFrameUpToTheMargin) {
+  // a tall box and a small cube off to one side and below: the bounds' centre is not the centre
+  // of what the camera sees
+  Scene scene = CubeAt(Moved(1, 2, 3) * Eigen::Scaling(0.5, 0.5, 3.0));
+  scene = Joined(scene, CubeAt(Moved(1, 4, 1) * Eigen::Scaling(0.2, 0.2, 0.2)));
+  for (const double aspect : {4.0 / 3, 0.5}) {
+    const OrbitView fitted = FitView(scene, OrbitView{}, aspect, false);
+    const Eigen::AlignedBox2d box = NdcExtents(scene, fitted, aspect);
+    EXPECT_NEAR(box.max().x(), -box.min().x(), 1e-6) << "centred across, aspect " << aspect;
+    EXPECT_NEAR(box.max().y(), -box.min().y(), 1e-6) << "centred up and down, aspect " << aspect;
+    // 5% of each side empty on the axis that binds, none past it on the other
+    EXPECT_NEAR(std::max(box.max().x(), box.max().y()), 0.9, 1e-6);
+    EXPECT_LE(std::min(box.max().x(), box.max().y()), 0.9 + 1e-6);
+    // the same direction, and the focal point within the robot's depth
+    EXPECT_EQ(fitted.yaw, OrbitView{}.yaw);
+    EXPECT_EQ(fitted.pitch, OrbitView{}.pitch);
+  }
+}
+
+TEST(FitView, TheMarginIsPerAxis) {
+  const Scene scene = CubeAt(Moved(0, 0, 0));
+  // square image, square-ish silhouette: a margin only across leaves the other axis at ±1
+  const OrbitView across = FitView(scene, OrbitView{}, 1.0, false, {0.25, 0.0});
+  const Eigen::AlignedBox2d box = NdcExtents(scene, across, 1.0);
+  EXPECT_LE(box.max().x(), 0.5 + 1e-6);
+  EXPECT_LE(box.max().y(), 1 + 1e-6);
+  EXPECT_NEAR(std::max(box.max().x() / 0.5, box.max().y()), 1, 1e-6);
 }
 
 TEST(FitView, KeepsTheFocalPointWhenAsked) {
@@ -81,12 +116,13 @@ TEST(FitView, RepeatedScenesFitAsOnce) {
     return scenes[k];
   };
   const OrbitView all = FitView(6, scene_of, OrbitView{}, 1.0, false);
-  EXPECT_EQ(asked, 12);   // bounds, then distance
+  EXPECT_EQ(asked, 6);   // each scene once
   const std::vector<Scene> distinct = {scenes[0], scenes[2], scenes[5]};
   const OrbitView once = FitView(3, [&](int k) { return distinct[k]; }, OrbitView{}, 1.0, false);
   EXPECT_EQ(all.focal, once.focal);
   EXPECT_EQ(all.distance, once.distance);
-  EXPECT_TRUE(all.focal.isApprox(Eigen::Vector3d(1, 1.5, 0), 1e-12));
+  EXPECT_TRUE(BoundsCentre(6, scene_of)->isApprox(Eigen::Vector3d(1, 1.5, 0), 1e-12));
+  EXPECT_FALSE(BoundsCentre(1, [](int) { return Scene{}; }));
   // the same scene every frame (a still turntable) fits as that scene alone
   const OrbitView still = FitView(50, [&](int) { return scenes[2]; }, OrbitView{}, 1.0, false);
   const OrbitView one = FitView(scenes[2], OrbitView{}, 1.0, false);
@@ -94,8 +130,8 @@ TEST(FitView, RepeatedScenesFitAsOnce) {
   EXPECT_EQ(still.distance, one.distance);
 }
 
-// A turntable's distance: the largest of the per-yaw fits, exactly (the same vertices, the same
-// arithmetic), with a mesh's repeated corners counted once; no vertices, 0.
+// A turntable's distance: the largest of the per-yaw fits with the focal point kept, exactly (the
+// same hulls, the same arithmetic), with a mesh's repeated corners counted once; no vertices, 0.
 TEST(FitDistance, IsTheLargestFitOverTheYaws) {
   Scene scene = CubeAt(Moved(1, 0.5, 0));
   auto repeated = std::make_shared<geometry::TriangleMesh>(*scene.items[0].mesh);
@@ -106,6 +142,16 @@ TEST(FitDistance, IsTheLargestFitOverTheYaws) {
   OrbitView view;
   view.focal = {0.2, 0, 0};
   const std::vector<double> yaws = {0, 0.7, 1.9, 3.1, 4.4};
+  // with a margin of its own on each axis (--fit-margin) too
+  for (const FitMargin margin : {FitMargin{}, FitMargin{0.1, 0.2}}) {
+    double widest = 0;
+    for (const double yaw : yaws) {
+      OrbitView side = view;
+      side.yaw = yaw;
+      widest = std::max(widest, FitView(scene, side, 4.0 / 3, true, margin).distance);
+    }
+    EXPECT_EQ(FitDistance(scene, view, yaws, 4.0 / 3, margin), widest);
+  }
   double largest = 0;
   for (const double yaw : yaws) {
     OrbitView side = view;

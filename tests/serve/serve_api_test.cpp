@@ -28,9 +28,11 @@ std::string ReadFile(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// The error line `urdfsnap render` prints for `arguments`, without its newline.
+// The error line `urdfsnap render` prints for `arguments`, without its newline (its -o a .png
+// name in a folder of its own, never written).
 std::string RenderError(const std::string& arguments) {
-  const test::ProcessResult r = test::RunUrdfsnap("render " + arguments + " -o /dev/null");
+  const test::TempFolder folder("serve_render_error");
+  const test::ProcessResult r = test::RunUrdfsnap("render " + arguments + " -o " + folder.Path("never.png"));
   EXPECT_EQ(r.status, 2) << r.err;
   return r.err.substr(0, r.err.find('\n'));
 }
@@ -246,7 +248,8 @@ TEST_F(ServeApiTest, FitFramesTheRobotOrOneLink) {
   const auto at_tcp = nlohmann::json::parse(tool_client->Get("/api/fit?link=tcp")->body);
   const auto at_hand = nlohmann::json::parse(tool_client->Get("/api/fit?link=hand")->body);
   EXPECT_EQ(at_tcp, at_hand);
-  EXPECT_NEAR(at_hand["focal"][2].get<double>(), 3, 1e-6);
+  // (the fit looks along the line of sight through the silhouette's centre: a point inside the hand)
+  EXPECT_NEAR(at_hand["focal"][2].get<double>(), 3, 0.05);
   EXPECT_EQ(tooled.Stop(SIGINT), 0);
 }
 

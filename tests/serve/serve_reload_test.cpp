@@ -63,7 +63,7 @@ class ServeReloadTest : public ::testing::Test {
     return status;
   }
   std::string RenderError() {
-    const test::ProcessResult r = test::RunUrdfsnap("render " + robot_ + " -o /dev/null");
+    const test::ProcessResult r = test::RunUrdfsnap("render " + robot_ + " -o " + folder_.Path("never.png"));
     EXPECT_EQ(r.status, 2);
     return r.err;
   }
