@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "cli/bag_camera_image.h"
 #include "common/error.h"
 #include "common/number_text.h"
 #include "motion/trajectory_file.h"
@@ -27,6 +28,10 @@ void BagStillOptions::AddOptions(CLI::App& command) {
   command.add_option("--description-topic", description_topic,
                      "with --bag and no MODEL, the std_msgs/msg/String topic whose first message is "
                      "the robot description (default /robot_description)");
+  command.add_option("--underlay-topic", underlay_topic,
+                     "with --bag and a camera, draw the robot over this sensor_msgs/msg/Image or "
+                     "CompressedImage topic's latest image at or before --at, as --underlay does with a "
+                     "file (default: none)");
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
@@ -48,10 +53,22 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   request::Prepared& prepared = scene_.robot;
   poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);
   const render::RenderSettings& s = prepared.settings;
-  frames_.emplace(*prepared.renderer, plan_, *poses_, animation::CameraRequest{s.view, s.size, fit, false, s.camera},
+  frames_.emplace(*prepared.renderer, plan_, *poses_,
+                  animation::CameraRequest{s.view, s.size, fit, false, s.camera,
+                                           scene_.camera_tf ? &*scene_.camera_tf : nullptr},
                   warnings, scene_.Additions());
   prepared.positions = frames_->Positions(0, warnings);
   prepared.settings.view = frames_->View(0);
+  prepared.settings.camera = frames_->Camera(0, warnings);   // a camera in the bag's TF placed at the moment
+  if (!o.underlay_topic.empty()) {
+    if (!prepared.settings.camera) {
+      throw Error("--underlay-topic needs a camera: --camera-info, --camera-frame or --camera-pose");
+    }
+    if (!r.underlay.empty()) throw Error("--underlay and --underlay-topic: give one camera image");
+    BagCameraImage image = ReadBagCameraImage(o.bag, o.underlay_topic, StampNanoseconds());
+    prepared.settings.camera->underlay = std::make_shared<const image::Image>(std::move(image.picture));
+    prepared.settings.camera->underlay_file = image.where;
+  }
 }
 
 std::int64_t BagStill::StampNanoseconds() const {
