@@ -8,6 +8,7 @@
 #include "cli/bag_camera_image.h"
 #include "common/error.h"
 #include "common/number_text.h"
+#include "image/png_reader.h"
 #include "motion/trajectory_file.h"
 #include "request/value_parsing.h"
 #include "tf/bag_transforms.h"
@@ -32,15 +33,15 @@ void BagStillOptions::AddOptions(CLI::App& command) {
                      "with --bag and a camera, draw the robot over this sensor_msgs/msg/Image or "
                      "CompressedImage topic's latest image at or before --at, as --underlay does with a "
                      "file (default: none)");
+  command.add_option("--camera-info-topic", camera_info_topic,
+                     "with --bag, the camera's calibration is this sensor_msgs/msg/CameraInfo topic's "
+                     "latest message at or before --at, instead of a --camera-info file (default: none)");
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
                    bool model_from_bag, Warnings& warnings)
     : bag_(o.bag) {
-  request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
-  const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
-  const model::NamedValues joints = resolved.joints;   // -j and --joints: for joints the bag does not name
-  const motion::JointRules rules{resolved.clamp};
+  request::RequestFiles files = request::ReadRequestFiles(r, warnings);
   trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
   const double at = o.at.empty() ? 0 : request::ParseFinite(o.at, "--at");
   plan_.trajectory_start = motion::TrajectorySeconds(trajectory_, at, "--at");
@@ -48,6 +49,18 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
     throw Error("--at " + FormatNumber(at) + " is outside " + o.bag + ", whose '" + o.topic + "' lasts " +
                 FormatNumber(trajectory_.EndTime()) + " s from its first message");
   }
+  if (!o.camera_info_topic.empty()) {
+    if (!r.camera_info.empty()) throw Error("--camera-info and --camera-info-topic: give one calibration");
+    files.camera.info = ReadBagCameraInfo(o.bag, o.camera_info_topic, StampNanoseconds());
+    // ReadRequestFiles reads an underlay only for a camera the options name
+    if (!r.underlay.empty() && !files.camera.underlay) {
+      files.camera.underlay = std::make_shared<const image::Image>(image::ReadPng(r.underlay));
+    }
+  }
+  request::ResolvedRequest resolved = request::ResolveRequest(r, files, request::CommandLineLabel);
+  const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
+  const model::NamedValues joints = resolved.joints;   // -j and --joints: for joints the bag does not name
+  const motion::JointRules rules{resolved.clamp};
   PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), model_from_bag,
                   warnings, scene_);
   request::Prepared& prepared = scene_.robot;

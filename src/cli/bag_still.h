@@ -32,8 +32,10 @@ struct BagStillOptions {
   std::string topic = bag::kDefaultJointStateTopic;
   std::string description_topic = bag::kDefaultDescriptionTopic;
   std::string underlay_topic;   // --underlay-topic: the camera image behind the robot, "" for none
+  std::string camera_info_topic;   // --camera-info-topic: the camera's calibration, "" for none
 
-  // Adds --bag, --at, --topic, --description-topic and --underlay-topic to `command`.
+  // Adds --bag, --at, --topic, --description-topic, --underlay-topic and --camera-info-topic to
+  // `command`.
   void AddOptions(CLI::App& command);
 };
 
@@ -45,7 +47,9 @@ class BagStill {
   // (also one outside the recording) and as the bag's readers and RenderSession::Prepare do.
   // `model_from_bag`: the request's model is the description the bag recorded (see PrepareBagScene).
   // With --underlay-topic the camera's underlay is that topic's image at the moment
-  // (ReadBagCameraImage); an error without a camera or with --underlay too.
+  // (ReadBagCameraImage), with --camera-info-topic its calibration the topic's CameraInfo then
+  // (ReadBagCameraInfo); each an error beside --underlay or --camera-info, and the underlay
+  // without a camera.
   BagStill(const BagStillOptions& options, request::RenderSession& session, const request::RenderRequest& request,
            bool model_from_bag, Warnings& warnings);
   BagStill(const BagStill&) = delete;

@@ -159,6 +159,26 @@ TEST_F(BagUnderlayTest, AJpegIsDecodedAsLibjpegsDefaultsDecodeIt) {
   EXPECT_LT(d.mean, 0.5);
 }
 
+TEST_F(BagUnderlayTest, TheCalibrationMayComeFromTheBag) {
+  // /camera/camera_info holds this calibration: the topic's message draws what the file draws,
+  // rectified and through the lens
+  const std::string file = Write("camera.yaml", R"(width: 40
+height: 24
+distortion_model: plumb_bob
+d: [-0.2, 0.05, 0.001, -0.002, 0]
+k: [30, 0, 21.25, 0, 31, 11.75, 0, 0, 1]
+r: [1, 0, 0, 0, 1, 0, 0, 0, 1]
+p: [31, 0, 20.5, 0, 0, 32, 12.25, 0, 0, 0, 1, 0]
+)");
+  const std::string view = "--camera-pose 0,0,1.2,1,0,0,0 --underlay-topic /camera/rgb8 ";
+  for (const std::string lens : {"", " --distort"}) {
+    const image::Image from_file = Render(view + "--camera-info " + file + lens);
+    EXPECT_EQ(Render(view + "--camera-info-topic /camera/camera_info" + lens).rgb, from_file.rgb) << lens;
+    const image::Image a = Expected([](int x, int y) { return Picture(x, y, false); });
+    EXPECT_NE(from_file.rgb, a.rgb) << "no robot over the image" << lens;
+  }
+}
+
 TEST_F(BagUnderlayTest, BadImagesAndOptionsAreOneErrorLine) {
   const std::string away = "--bag " + bag_ + " " + away_;
   Fails(away + "/camera/short", "too few for 40x24 pixels at step 120");
@@ -172,6 +192,13 @@ TEST_F(BagUnderlayTest, BadImagesAndOptionsAreOneErrorLine) {
         "the underlay image is 40x24, the camera's image 20x12");
   Fails("--bag " + bag_ + " --underlay-topic /camera/rgb8", "--underlay-topic needs a camera");
   Fails(kMrm + " --camera-pose 0,0,10,0,0,0,1 --underlay-topic /camera/rgb8", "give the recording with --bag");
+  Fails("--bag " + bag_ + " --camera-info-topic /camera/zero_focal",
+        "k: the focal lengths fx and fy must be positive, got 0 and 31");
+  Fails("--bag " + bag_ + " --camera-info-topic /camera/rgb8", "carries 'sensor_msgs/msg/Image' messages");
+  Fails("--bag " + bag_ + " --camera-info-topic /camera/camera_info --camera-info " +
+            Write("c.yaml", "width: 40\nheight: 24\nk: [30, 0, 20, 0, 30, 12, 0, 0, 1]\n"),
+        "give one calibration");
+  Fails(kMrm + " --camera-info-topic /camera/camera_info", "give the recording with --bag");
 }
 
 }  // namespace

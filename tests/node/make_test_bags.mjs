@@ -321,7 +321,8 @@ for (const [name, messages] of Object.entries(tfBags)) {
 // Camera images of 40x24 pixels for the underlay tests (tests/cli/bag_underlay_test.cpp recomputes
 // them): picture A at 0 s, picture B at 1 s on /camera/rgb8 (rows padded by 4 bytes); picture A in
 // every other encoding RViz shows, as a PNG and tests/data/jpeg/gradients.jpg (40x24) as
-// CompressedImage; and hostile messages (a step that lies, data too short, an unknown encoding).
+// CompressedImage; and hostile messages (a step that lies, data too short, an unknown encoding);
+// CameraInfo messages.
 const kCameraWidth = 40, kCameraHeight = 24;
 function picture(x, y, b) {
   return b ? [255 - x * 6, 255 - y * 10, x * 6] : [x * 6, y * 10, 255 - x * 6];
@@ -379,7 +380,22 @@ function cameraImages() {
     "/camera/jpeg": compressedWriter.writeMessage({ header: { stamp: { sec: kStartSec, nanosec: 0 }, frame_id: "camera" }, format: "jpeg", data: jpeg }),
     "/camera/not_an_image": compressedWriter.writeMessage({ header: { stamp: { sec: kStartSec, nanosec: 0 }, frame_id: "camera" }, format: "tiff", data: new Uint8Array(64) }),
   };
+  // a calibration of the 40x24 camera (tests/cli/bag_underlay_test.cpp repeats it as a file), and
+  // one whose focal length is zero
+  const infoWriter = new MessageWriter([ros2humble["sensor_msgs/CameraInfo"], ros2humble["sensor_msgs/RegionOfInterest"],
+    ros2humble["std_msgs/Header"], ros2humble["builtin_interfaces/Time"]]);
+  const info = (fx) => infoWriter.writeMessage({
+    header: { stamp: { sec: kStartSec, nanosec: 0 }, frame_id: "camera" }, height: h, width: w,
+    distortion_model: "plumb_bob", d: [-0.2, 0.05, 0.001, -0.002, 0],
+    k: [fx, 0, 21.25, 0, 31, 11.75, 0, 0, 1], r: [1, 0, 0, 0, 1, 0, 0, 0, 1],
+    p: [fx + 1, 0, 20.5, 0, 0, 32, 12.25, 0, 0, 0, 1, 0], binning_x: 0, binning_y: 0,
+    roi: { x_offset: 0, y_offset: 0, height: 0, width: 0, do_rectify: false } });
+  const infos = { "/camera/camera_info": info(30), "/camera/zero_focal": info(0) };
   const channels = [], messages = [];
+  for (const [topic, bytes] of Object.entries(infos)) {
+    channels.push({ topic, schema: { name: "sensor_msgs/msg/CameraInfo", encoding: "ros2msg", data: new Uint8Array() } });
+    messages.push([2 + channels.length, nanos({ sec: kStartSec, nanosec: 1000 }), bytes]);
+  }
   for (const [topic, writers] of Object.entries(topics)) {
     channels.push({ topic, schema: { name: "sensor_msgs/msg/Image", encoding: "ros2msg", data: new Uint8Array() } });
     writers.forEach((write, k) => messages.push([2 + channels.length, nanos({ sec: kStartSec + k, nanosec: 1000 }), write(kStartSec + k)]));
