@@ -15,8 +15,7 @@
 #include "../pipeline/timing.h"
 #include "common/warnings.h"
 #include "display/marker_display.h"
-#include "model/joint_values.h"
-#include "render/robot_renderer.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -52,11 +51,7 @@ int main(int argc, char** argv) {
   const int frames = argc > 2 ? std::atoi(argv[2]) : 30;
   const std::string model = std::string(URDFSNAP_SOURCE_DIR) + "/models/mrm_description/urdf/mrm.urdf";
   Warnings warnings;
-  const auto robot = bench::LoadRobotFile(model);
-  scene::SceneOptions options;
-  options.model_file = model;
-  const render::RobotRenderer robot_renderer(robot, options, warnings);
-  const scene::Scene posed = robot_renderer.Pose(model::ResolveJointPositions(*robot, {}, true, warnings));
+  const scene::Scene posed = bench::ZeroPoseScene(model);
   display::MarkerDisplay markers("/markers", {true, {}}, {});
   for (int i = 0; i < count; ++i) markers.Apply(MixedMarker(i), 0, "bench", warnings);
   const display::FrameLookup base = [](const std::string&, std::int64_t) {

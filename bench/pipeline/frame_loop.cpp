@@ -26,6 +26,15 @@ std::shared_ptr<const model::Robot> LoadRobotFile(const std::string& path) {
   }
 }
 
+scene::Scene ZeroPoseScene(const std::string& path) {
+  const auto robot = LoadRobotFile(path);
+  Warnings warnings;
+  scene::SceneOptions options;
+  options.model_file = path;
+  const render::RobotRenderer robot_renderer(robot, options, warnings);
+  return robot_renderer.Pose(model::ResolveJointPositions(*robot, {}, true, warnings));
+}
+
 std::vector<model::NamedValues> RandomPoses(const model::Robot& robot, int count) {
   std::mt19937 random(42);
   std::uniform_real_distribution<double> angle(-3.0, 3.0);

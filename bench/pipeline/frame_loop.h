@@ -19,6 +19,10 @@ namespace urdfsnap::bench {
 // The robot of the URDF file at `path`. Exits the benchmark when it cannot be read.
 std::shared_ptr<const model::Robot> LoadRobotFile(const std::string& path);
 
+// The robot of the URDF file at `path` at its zero pose (joint_state_publisher's defaults), as a
+// scene: prepared with render::RobotRenderer and posed once. Exits like LoadRobotFile.
+scene::Scene ZeroPoseScene(const std::string& path);
+
 // `count` poses with every movable joint at a random angle in [-3, 3] (seeded: the same each run).
 std::vector<model::NamedValues> RandomPoses(const model::Robot& robot, int count);
 

@@ -3,7 +3,8 @@
 // RViz's default view with a cloud of N points (a lidar-like ring of walls and floor around the
 // robot, coloured by height), drawn in each style with 4x multisampling and read back; the median
 // per-frame time of the draw alone and of the robot without points, through the typed core.
-// usage: urdfsnap_points_bench [POINTS [FRAMES [SAMPLES]]]   (defaults 100000, 30 and 4)
+// usage: urdfsnap_points_bench [POINTS [FRAMES [SAMPLES [STYLE]]]]   (defaults 100000, 30, 4 and
+// every style; STYLE as the table names it, "Points" or "Flat Squares", to profile one)
 // Timings only: no test asserts on them.
 #include <cmath>
 #include <cstdio>
@@ -13,9 +14,7 @@
 
 #include "../pipeline/frame_loop.h"
 #include "../pipeline/timing.h"
-#include "common/warnings.h"
-#include "model/joint_values.h"
-#include "render/robot_renderer.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -48,12 +47,7 @@ int main(int argc, char** argv) {
   const std::size_t count = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 100000;
   const int frames = argc > 2 ? std::atoi(argv[2]) : 30;
   const std::string model = std::string(URDFSNAP_SOURCE_DIR) + "/models/mrm_description/urdf/mrm.urdf";
-  Warnings warnings;
-  const auto robot = bench::LoadRobotFile(model);
-  scene::SceneOptions options;
-  options.model_file = model;
-  const render::RobotRenderer robot_renderer(robot, options, warnings);
-  const scene::Scene posed = robot_renderer.Pose(model::ResolveJointPositions(*robot, {}, true, warnings));
+  const scene::Scene posed = bench::ZeroPoseScene(model);
   gl::SceneRenderer renderer(argc > 3 ? std::atoi(argv[3]) : 4);
   // wall time (median) and the CPU time of all threads (mean), per frame in ms: on a shared
   // machine the wall time grows with the load, the CPU time much less
@@ -73,7 +67,9 @@ int main(int argc, char** argv) {
                                                   {Style::kSquares, "Squares (0.01 m)"},
                                                   {Style::kSpheres, "Spheres (0.01 m)"},
                                                   {Style::kBoxes, "Boxes (0.01 m)"}};
+  const std::string only = argc > 4 ? argv[4] : "";
   for (const auto& [style, name] : styles) {
+    if (!only.empty() && std::string(name).rfind(only + " (", 0) != 0) continue;
     scene::Scene scene = posed;
     scene.points.push_back(Cloud(count, style));
     const auto [style_wall, style_cpu] = time(scene);

@@ -4,7 +4,9 @@
 # and peak resident memory (/usr/bin/time, median of 3) of `--version`, `info`, `xacro`, `render` and `diff`
 # on the tutorial robot mrm, of the real (Python) xacro on the same file when one is given, and of
 # MuJoCo's load+render+PNG peer of `render` (mujoco_peer.c) when Debian's libmujoco-dev is
-# installed. Timings only; nothing asserts.
+# installed, and of the floor under any process that draws with OSMesa (osmesa_floor.c: the library
+# loaded, a context made, one triangle drawn at 4x MSAA and read back) when its headers are.
+# Timings only; nothing asserts.
 #
 # usage: bench/startup/startup_bench.sh [URDFSNAP] [ROUNDS]   (default build/urdfsnap, 5 rounds)
 #   URDFSNAP_REAL_XACRO  the real xacro's command (default: `xacro` when on PATH). ROS 2's xacro
@@ -49,6 +51,13 @@ if [ -f /usr/include/mujoco/mujoco.h ] &&
   names+=("MuJoCo peer")
   commands+=("$work/mujoco_peer $work/mrm_mujoco.urdf $work/mrm_mujoco.png")
 fi
+if cc -O2 "$root/bench/startup/osmesa_floor.c" -o "$work/osmesa_floor" $(pkg-config --cflags --libs osmesa) \
+    2>"$work/cc_floor.log"; then
+  for depth in load context triangle; do
+    names+=("OSMesa $depth")
+    commands+=("$work/osmesa_floor $depth")
+  done
+fi
 if [ -n "$real_xacro" ]; then
   if (cd "$work" && eval "$real_xacro $mrm/mrm.xacro" >/dev/null 2>&1); then
     names+=("real xacro")
@@ -66,7 +75,7 @@ done
 median() { sort -n | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
 echo "whole-process start-up, mrm ($(nproc) cores; median of $((rounds * 5)) runs in $rounds rounds)"
-printf '%-12s %10s %12s\n' command "time (ms)" "peak RSS (MB)"
+printf '%-16s %10s %12s\n' command "time (ms)" "peak RSS (MB)"
 urdfsnap_xacro_ms="" urdfsnap_render_ms=""
 for i in "${!commands[@]}"; do
   ms=$(python3 -c 'import json, sys
@@ -76,7 +85,7 @@ for path in sys.argv[2:]:
   rss=$(for _ in 1 2 3; do
           /usr/bin/time -f %M bash -c "${commands[$i]}" 2>&1 >/dev/null | tail -n 1
         done | median)
-  printf '%-12s %10.1f %12.1f\n' "${names[$i]}" "$ms" "$(awk -v k="$rss" 'BEGIN {print k / 1024}')"
+  printf '%-16s %10.1f %12.1f\n' "${names[$i]}" "$ms" "$(awk -v k="$rss" 'BEGIN {print k / 1024}')"
   [ "${names[$i]}" = xacro ] && urdfsnap_xacro_ms=$ms
   [ "${names[$i]}" = render ] && urdfsnap_render_ms=$ms
   [ "${names[$i]}" = "MuJoCo peer" ] &&

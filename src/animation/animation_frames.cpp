@@ -40,6 +40,7 @@ scene::Scene AnimationFrames::Scene(const render::RobotRenderer& robot, std::int
   const Eigen::Isometry3d X_SF = Place(k, warnings);
   scene::Scene scene = robot.Pose(positions, X_SF);
   if (additions_.tf) additions_.tf->AddTo(robot, positions, X_SF, plan_.TrajectoryTime(k), scene, warnings);
+  if (additions_.displays) additions_.displays->AddTo(robot, positions, X_SF, plan_.TrajectoryTime(k), scene, warnings);
   return scene;
 }
 

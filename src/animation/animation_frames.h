@@ -9,6 +9,7 @@
 
 #include "common/warnings.h"
 #include "animation/followed_frame.h"
+#include "animation/frame_displays.h"
 #include "animation/tf_display.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
@@ -32,11 +33,13 @@ struct CameraRequest {
 };
 
 // What a recording adds to each frame, each kept by reference when given: where TF places the
-// robot in a fixed frame outside it, the TF display of its frames, the frame the view follows.
+// robot in a fixed frame outside it, the TF display of its frames, the frame the view follows, the
+// message displays (fed as frames advance: their scenes are asked for in time order).
 struct SceneAdditions {
   const motion::RootPoses* root = nullptr;
   const TfDisplay* tf = nullptr;
   const FollowedFrame* follow = nullptr;
+  FrameDisplays* displays = nullptr;
 };
 
 class AnimationFrames {
@@ -64,7 +67,8 @@ class AnimationFrames {
   // Where frame `k` places the robot's fixed link in the scene (identity without `root`).
   Eigen::Isometry3d Place(std::int64_t k, Warnings& warnings) const;
   // The scene of frame `k`: `robot` (the renderer the frames were fitted for) posed and placed,
-  // with the TF display when there is one.
+  // with the TF display and the message displays when there are. With message displays, frames are
+  // asked for in time order.
   scene::Scene Scene(const render::RobotRenderer& robot, std::int64_t k, Warnings& warnings) const;
   // The camera of frame `k` (its focal point relative to the followed frame's origin then).
   scene::OrbitView View(std::int64_t k) const;

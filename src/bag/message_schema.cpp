@@ -25,7 +25,7 @@ constexpr std::array<std::pair<std::string_view, FieldKind>, 15> kPrimitives = {
 }};
 
 // The types urdfsnap ships, by name, with the file of src/bag/msg/ holding each.
-constexpr std::array<std::string_view, 24> kShippedTypes = {
+constexpr std::array<std::string_view, 27> kShippedTypes = {
     "sensor_msgs/JointState",  "std_msgs/Header",       "builtin_interfaces/Time",
     "std_msgs/String",         "tf2_msgs/TFMessage",    "geometry_msgs/TransformStamped",
     "geometry_msgs/Transform", "geometry_msgs/Vector3", "geometry_msgs/Quaternion",
@@ -34,8 +34,8 @@ constexpr std::array<std::string_view, 24> kShippedTypes = {
     "visualization_msgs/MeshFile",    "sensor_msgs/CompressedImage", "std_msgs/ColorRGBA",
     "builtin_interfaces/Duration",    "nav_msgs/Path",             "geometry_msgs/PoseArray",
     "geometry_msgs/PoseStamped",      "geometry_msgs/Pose",        "geometry_msgs/Point",
-    // the camera's underlay and calibration (issue 25)
-    "sensor_msgs/Image", "sensor_msgs/CameraInfo", "sensor_msgs/RegionOfInterest",
+    "sensor_msgs/PointCloud2",        "sensor_msgs/PointField",    "sensor_msgs/LaserScan",
+    "sensor_msgs/Image",              "sensor_msgs/CameraInfo",    "sensor_msgs/RegionOfInterest",
 };
 
 std::string_view Trimmed(std::string_view text) {

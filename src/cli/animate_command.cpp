@@ -17,11 +17,12 @@
 #include "animation/render_animation.h"
 #include "animation/sequence_outputs.h"
 #include "bag/joint_state_bag.h"
-#include "bag/robot_description.h"
+#include "bag/recorded_description.h"
 #include "cli/bag_batch.h"
 #include "cli/bag_model.h"
 #include "cli/bag_scene.h"
 #include "cli/command.h"
+#include "cli/display_options.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
@@ -68,6 +69,7 @@ struct AnimateOptions {
   bool model_from_bag = false;   // MODEL was a bag: its recorded description is the model
   ShardOptions sharding;      // a frame sequence's contiguous range of frames
   RenderOptions render;
+  DisplayOptions displays;   // with the .rviz file's: message displays in every frame
   GlOptions gl_options;
 };
 
@@ -175,6 +177,11 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   PrepareBagScene(session, std::move(resolved), bag ? o.trajectory : "", a.trajectory.stamp_at_zero.value_or(0),
                   o.model_from_bag, warnings, a.scene);
   a.plan = Plan(o, a.trajectory);
+  AddSceneDisplays(o.displays, bag ? o.trajectory : "", a.trajectory.stamp_at_zero.value_or(0), a.scene, warnings);
+  if (a.scene.displays && bag && !o.print_frame.empty()) {
+    throw Error("--print-frame: the frames show the bag's messages, which `render` draws with --bag " + o.trajectory +
+                " --at SECONDS");
+  }
   // joints the trajectory does not name: the joint file, then -j, as render takes them
   const request::Prepared& robot = a.scene.robot;
   a.poses.emplace(*robot.robot, a.trajectory, joints, motion::JointRules{clamp, o.clamp, o.strict_joints}, warnings);
@@ -413,6 +420,7 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_flag("-q,--quiet", o->quiet, "no progress bar (it is shown only on a terminal anyway)");
   o->sharding.AddOptions(*cmd, "frames of a frame sequence (a video is never split)");
   o->render.AddOptions(*cmd);
+  o->displays.AddOptions(*cmd);
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the encoder");
   cmd->callback([o] { Run(*o); });
 }

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "bag/robot_description.h"
+#include "bag/recorded_description.h"
 #include "common/error.h"
 
 namespace urdfsnap::cli {

@@ -1,18 +1,21 @@
 // PrepareBagScene: the robot prepared from its root (and again from the fixed frame when that is
 // a link other than the root), the bag's TF read once for the root's placement, the TF display and
-// the followed frame.
+// the followed frame; the message displays.
 #include "cli/bag_scene.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <utility>
 
+#include "common/error.h"
+#include "request/display_frame.h"
 #include "tf/bag_transforms.h"
 
 namespace urdfsnap::cli {
 
-animation::SceneAdditions BagScene::Additions() const {
-  return {root ? &*root : nullptr, tf ? &*tf : nullptr, follow ? &*follow : nullptr};
+animation::SceneAdditions BagScene::Additions() {
+  return {root ? &*root : nullptr, tf ? &*tf : nullptr, follow ? &*follow : nullptr,
+          displays ? &*displays : nullptr};
 }
 
 void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,
@@ -64,6 +67,28 @@ void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest r
     warnings.Add(resolved.rviz + ": the view's Target Frame '" + target_frame + "' is neither a link of the robot "
                  "nor a frame of a bag's TF; the view orbits in the fixed frame");
   }
+}
+
+void AddSceneDisplays(const DisplayOptions& options, const std::string& bag, double stamp_at_zero, BagScene& scene,
+                      Warnings& warnings) {
+  const render::RenderSettings& s = scene.robot.settings;
+  if (options.empty() && s.displays.empty()) return;
+  if (s.camera) {
+    throw Error("message displays (--rviz, --display, --message) are drawn through the orbit view only, not "
+                "through a calibrated camera (--camera, --camera-frame)");
+  }
+  // the scene's frame: where TF places the robot, else its fixed link
+  const std::string fixed_frame = scene.root ? scene.root->fixed_frame()
+                                  : s.scene.fixed_frame.empty() ? scene.robot.robot->links().front().name
+                                                                : s.scene.fixed_frame;
+  // the scene reads the bag's TF only when it shows it; the displays' frames need it anyway
+  std::shared_ptr<const tf::TfBuffer> transforms = scene.transforms;
+  if (!bag.empty() && transforms->frames().empty()) {
+    transforms = std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(bag));
+  }
+  scene.displays.emplace(
+      options.MakeDisplays(s.displays, fixed_frame, request::MarkerResourcesFor(s.scene), warnings), bag,
+      std::move(transforms), fixed_frame, stamp_at_zero);
 }
 
 }  // namespace urdfsnap::cli

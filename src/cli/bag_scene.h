@@ -12,7 +12,9 @@
 
 #include "animation/animation_frames.h"
 #include "animation/followed_frame.h"
+#include "animation/frame_displays.h"
 #include "animation/tf_display.h"
+#include "cli/display_options.h"
 #include "common/warnings.h"
 #include "motion/root_poses.h"
 #include "request/render_session.h"
@@ -30,9 +32,10 @@ struct BagScene {
   // set for a camera whose --camera-frame is a frame of the bag's TF, not a link: where TF puts
   // the robot's root in it at each moment (animation::CameraRequest::camera_tf)
   std::optional<motion::RootPoses> camera_tf;
+  std::optional<animation::FrameDisplays> displays;   // set for message displays (AddSceneDisplays)
 
-  // What the scene adds to each frame, for animation::AnimationFrames.
-  animation::SceneAdditions Additions() const;
+  // What the scene adds to each frame, for animation::AnimationFrames (which feeds the displays).
+  animation::SceneAdditions Additions();
 };
 
 // Prepares `resolved` (its fit left to the caller) for the recording `bag` ("" for none: no TF,
@@ -45,5 +48,13 @@ struct BagScene {
 // RenderSession::Prepare, tf::ReadBagTransforms and animation::FollowedFrame do.
 void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,
                      double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out);
+
+// Adds the message displays of the robot's .rviz file and of `options` to `scene` (prepared by
+// PrepareBagScene for the same `bag` and `stamp_at_zero`), when there are any: drawn in the scene's
+// fixed frame, their topics read from `bag` ("" for none) as frames advance, their frames found
+// through its TF. Throws urdfsnap::Error for a calibrated camera (displays are drawn through the
+// orbit view only) and as DisplayOptions::MakeDisplays and tf::ReadBagTransforms do.
+void AddSceneDisplays(const DisplayOptions& options, const std::string& bag, double stamp_at_zero, BagScene& scene,
+                      Warnings& warnings);
 
 }  // namespace urdfsnap::cli

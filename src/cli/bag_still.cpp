@@ -1,5 +1,5 @@
 // BagStill: the bag's trajectory read, a one-frame plan at --at, the robot prepared through
-// PrepareBagScene and fitted by AnimationFrames, drawn with its TF display.
+// PrepareBagScene and fitted by AnimationFrames, drawn with its TF display and message displays.
 #include "cli/bag_still.h"
 
 #include <cmath>
@@ -11,7 +11,6 @@
 #include "image/png_reader.h"
 #include "motion/trajectory_file.h"
 #include "request/value_parsing.h"
-#include "tf/bag_transforms.h"
 
 namespace urdfsnap::cli {
 
@@ -39,8 +38,7 @@ void BagStillOptions::AddOptions(CLI::App& command) {
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
-                   bool model_from_bag, Warnings& warnings)
-    : bag_(o.bag) {
+                   bool model_from_bag, const DisplayOptions& displays, Warnings& warnings) {
   request::RequestFiles files = request::ReadRequestFiles(r, warnings);
   trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
   const double at = o.at.empty() ? 0 : request::ParseFinite(o.at, "--at");
@@ -49,9 +47,12 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
     throw Error("--at " + FormatNumber(at) + " is outside " + o.bag + ", whose '" + o.topic + "' lasts " +
                 FormatNumber(trajectory_.EndTime()) + " s from its first message");
   }
+  // the moment as a stamp, nanoseconds since 1970
+  const auto moment_ns =
+      static_cast<std::int64_t>(std::llround((trajectory_.stamp_at_zero.value_or(0) + plan_.trajectory_start) * 1e9));
   if (!o.camera_info_topic.empty()) {
     if (!r.camera_info.empty()) throw Error("--camera-info and --camera-info-topic: give one calibration");
-    files.camera.info = ReadBagCameraInfo(o.bag, o.camera_info_topic, StampNanoseconds());
+    files.camera.info = ReadBagCameraInfo(o.bag, o.camera_info_topic, moment_ns);
     // ReadRequestFiles reads an underlay only for a camera the options name
     if (!r.underlay.empty() && !files.camera.underlay) {
       files.camera.underlay = std::make_shared<const image::Image>(image::ReadPng(r.underlay));
@@ -63,6 +64,7 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   const motion::JointRules rules{resolved.clamp};
   PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), model_from_bag,
                   warnings, scene_);
+  AddSceneDisplays(displays, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_, warnings);
   request::Prepared& prepared = scene_.robot;
   poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);
   const render::RenderSettings& s = prepared.settings;
@@ -78,29 +80,14 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
       throw Error("--underlay-topic needs a camera: --camera-info, --camera-frame or --camera-pose");
     }
     if (!r.underlay.empty()) throw Error("--underlay and --underlay-topic: give one camera image");
-    BagCameraImage image = ReadBagCameraImage(o.bag, o.underlay_topic, StampNanoseconds());
+    BagCameraImage image = ReadBagCameraImage(o.bag, o.underlay_topic, moment_ns);
     prepared.settings.camera->underlay = std::make_shared<const image::Image>(std::move(image.picture));
     prepared.settings.camera->underlay_file = image.where;
   }
 }
 
-std::int64_t BagStill::StampNanoseconds() const {
-  return static_cast<std::int64_t>(std::llround((trajectory_.stamp_at_zero.value_or(0) + plan_.trajectory_start) * 1e9));
-}
-
-display::FrameLookup BagStill::Frames() const {
-  // the scene reads the bag's TF only when it shows it; the displays' frames need it anyway
-  const std::shared_ptr<const tf::TfBuffer> transforms =
-      scene_.transforms && !scene_.transforms->frames().empty()
-          ? scene_.transforms
-          : std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(bag_));
-  const request::Prepared& p = scene_.robot;
-  const std::string fixed = p.settings.scene.fixed_frame.empty() ? p.robot->links().front().name : p.settings.scene.fixed_frame;
-  return [transforms, fixed](const std::string& frame, std::int64_t time_ns) -> std::optional<Eigen::Isometry3d> {
-    const std::optional<tf::Lookup> found = transforms->Find(fixed, frame, time_ns);
-    if (!found) return std::nullopt;
-    return found->X_TS;
-  };
+scene::Scene BagStill::Scene(Warnings& warnings) const {
+  return frames_->Scene(*scene_.robot.renderer, 0, warnings);
 }
 
 image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameOutputs& outputs,
@@ -108,8 +95,7 @@ image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameO
   const request::Prepared& p = scene_.robot;
   if (p.settings.camera) return session.Draw(p, outputs);
   return session.GlRenderer(p.settings.samples)
-      .Render(frames_->Scene(*p.renderer, 0, warnings), p.settings.view, p.settings.size.width,
-              p.settings.size.height, outputs);
+      .Render(Scene(warnings), p.settings.view, p.settings.size.width, p.settings.size.height, outputs);
 }
 
 }  // namespace urdfsnap::cli

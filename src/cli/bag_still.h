@@ -13,10 +13,10 @@
 
 #include "animation/animation_frames.h"
 #include "bag/joint_state_bag.h"
-#include "bag/robot_description.h"
+#include "bag/recorded_description.h"
 #include "cli/bag_scene.h"
+#include "cli/display_options.h"
 #include "common/warnings.h"
-#include "display/display.h"
 #include "image/image.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
@@ -46,29 +46,28 @@ class BagStill {
   // counts), or a stamp (seconds since 1970, from 1e9 up). Throws urdfsnap::Error for a bad --at
   // (also one outside the recording) and as the bag's readers and RenderSession::Prepare do.
   // `model_from_bag`: the request's model is the description the bag recorded (see PrepareBagScene).
-  // With --underlay-topic the camera's underlay is that topic's image at the moment
-  // (ReadBagCameraImage), with --camera-info-topic its calibration the topic's CameraInfo then
-  // (ReadBagCameraInfo); each an error beside --underlay or --camera-info, and the underlay
+  // The message displays of the .rviz file and `displays` show the bag's messages up to the moment
+  // (AddSceneDisplays). With --underlay-topic the camera's underlay is that topic's image at the
+  // moment (ReadBagCameraImage), with --camera-info-topic its calibration the topic's CameraInfo
+  // then (ReadBagCameraInfo); each an error beside --underlay or --camera-info, and the underlay
   // without a camera.
   BagStill(const BagStillOptions& options, request::RenderSession& session, const request::RenderRequest& request,
-           bool model_from_bag, Warnings& warnings);
+           bool model_from_bag, const DisplayOptions& displays, Warnings& warnings);
   BagStill(const BagStill&) = delete;
   BagStill& operator=(const BagStill&) = delete;
 
   // The robot as drawn: the moment's joint positions and the view (--fit applied to this moment).
   const request::Prepared& prepared() const { return scene_.robot; }
 
-  // The moment drawn as a stamp, nanoseconds since 1970.
-  std::int64_t StampNanoseconds() const;
-  // Frames of the bag's TF in the fixed frame (the root link when none is set), for message
-  // displays; nothing for frames TF does not connect to it.
-  display::FrameLookup Frames() const;
+  // The still's scene in the orbit view (with its displays), for a renderer of the caller's. Call
+  // it, or Draw, once: the displays have been fed up to the moment.
+  scene::Scene Scene(Warnings& warnings) const;
 
-  // Draws the still through `session`'s GL renderer into the images `outputs` asks for.
+  // Draws the still (with its displays) through `session`'s GL renderer into the images `outputs`
+  // asks for. Call it once: the displays have been fed up to the moment.
   image::Frame Draw(request::RenderSession& session, const image::FrameOutputs& outputs, Warnings& warnings) const;
 
  private:
-  std::string bag_;
   motion::Trajectory trajectory_;
   motion::FramePlan plan_;
   BagScene scene_;

@@ -98,21 +98,21 @@ void Run(RenderCommandOptions& o) {
   dataset::FrameExtras extras;
   try {
     std::optional<BagStill> still;
-    if (!o.bag.bag.empty()) still.emplace(o.bag, session, o.render.request, bag_model.has_value(), warnings);
+    if (!o.bag.bag.empty()) {
+      still.emplace(o.bag, session, o.render.request, bag_model.has_value(), o.displays, warnings);
+    }
     const request::Prepared prepared =
         still ? still->prepared() : session.Prepare(o.render.request, request::CommandLineLabel, warnings);
     const image::FrameOutputs outputs = dataset::OutputsFor({true, !o.depth.empty(), !o.labels.empty()}, wanted);
-    if (o.displays.empty() && prepared.settings.displays.empty()) {
-      frame = still ? still->Draw(session, outputs, warnings) : session.Draw(prepared, outputs);
+    if (still) {
+      frame = still->Draw(session, outputs, warnings);   // with the recording's displays at the moment
+    } else if (o.displays.empty() && prepared.settings.displays.empty()) {
+      frame = session.Draw(prepared, outputs);
     } else {
       const scene::SceneOptions& scene = prepared.settings.scene;
-      display::DisplaySet displays = o.displays.MakeDisplays(
+      const display::DisplaySet displays = o.displays.MakeDisplays(
           prepared.settings.displays, scene.fixed_frame, request::MarkerResourcesFor(scene), warnings);
-      // a recording's displays show its messages up to the moment, placed through its TF
-      const std::int64_t time_ns = still ? still->StampNanoseconds() : 0;
-      if (still) display::ReadBagDisplayMessages(o.bag.bag, time_ns, displays, warnings);
-      frame = request::DrawWithDisplays(session, prepared, displays, time_ns,
-                                        still ? still->Frames() : display::FrameLookup{}, warnings, outputs);
+      frame = request::DrawWithDisplays(session, prepared, displays, warnings, outputs);
     }
     robot = prepared.robot;
     const render::RenderSettings& s = prepared.settings;

@@ -8,14 +8,19 @@
 #include <cstdio>
 #include <ctime>
 #include <memory>
+#include <optional>
 #include <thread>
 
+#include "cli/bag_model.h"
+#include "cli/bag_still.h"
 #include "cli/command.h"
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "common/error.h"
+#include "common/number_text.h"
 #include "gl/gl_context.h"
+#include "motion/trajectory_file.h"
 #include "request/value_parsing.h"
 #include "serve/loaded_server.h"
 
@@ -59,6 +64,26 @@ void LogReload(const serve::ModelState& state, const std::string& model) {
   }
 }
 
+// A bag served with a time slider: each moment drawn as `render --bag BAG --at T` draws it, the
+// .rviz file's displays showing the bag's messages up to then; prepared through a session of its
+// own (GL-free: the server draws the scene).
+serve::RecordingView Recording(const std::string& bag, Warnings& warnings) {
+  serve::RecordingView view;
+  view.duration = motion::ReadTrajectory(bag, {bag::kDefaultJointStateTopic}, warnings).EndTime();
+  auto session = std::make_shared<request::RenderSession>();
+  view.moment = [bag, session](const request::RenderRequest& request, double at, Warnings& frame_warnings) {
+    BagStillOptions moment;
+    moment.bag = bag;
+    moment.at = FormatNumber(at);
+    const BagStill still(moment, *session, request, true, DisplayOptions{}, frame_warnings);
+    if (still.prepared().settings.camera) {
+      throw Error("a recording is served through the orbit view only, not through a calibrated camera");
+    }
+    return serve::RecordedMoment{still.Scene(frame_warnings), still.prepared().settings};
+  };
+  return view;
+}
+
 void Run(ServeOptions& o) {
   // the server is a module (loaded_server.h): a missing one is the first thing reported
   const serve::ServerModule& server_module = serve::LoadServerModule();
@@ -69,6 +94,14 @@ void Run(ServeOptions& o) {
   const auto gl_loading = gl::StartLoadingGl(options.backend.backend);
   options.base = o.render.request;
   options.base.model = o.model.ToRequest();
+  // a bag: its recorded description is the model, played through with a time slider
+  Warnings warnings;
+  std::optional<BagModel> bag_model;
+  if (motion::IsBag(o.model.path)) {
+    bag_model.emplace(o.model.path, bag::kDefaultDescriptionTopic);
+    options.base.model.path = bag_model->path();
+    options.recording = Recording(o.model.path, warnings);
+  }
   o.render.ParseJointWords();
   options.base.joints = o.render.request.joints;
   options.bind = o.bind;
@@ -76,7 +109,6 @@ void Run(ServeOptions& o) {
   options.max_size = request::ParseImageSize(o.max_size, "--max-size");
   options.on_reload = [model = o.model.path](const serve::ModelState& state) { LogReload(state, model); };
 
-  Warnings warnings;
   if (!server_module.is_loopback(o.bind)) {
     warnings.Add("--bind " + o.bind + ": anyone who can reach this address sees the model and "
                  "its pictures (the server has no login)");

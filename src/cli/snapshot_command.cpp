@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <memory>
 
+#include "cli/bag_still.h"
 #include "cli/command.h"
+#include "cli/display_options.h"
 #include "cli/gl_options.h"
 #include "cli/shard_options.h"
 #include "common/error.h"
@@ -27,6 +29,26 @@
 namespace urdfsnap::cli {
 
 namespace {
+
+// A case as `render` draws it: its request, or with a recording moment (bag:, at:, displays:) the
+// bag's robot state and display messages at that moment, as `render --bag --at --display` draws it.
+request::Rendered RenderCase(request::RenderSession& session, const snapshot::SnapshotCase& c,
+                             const request::OptionLabel& label, Warnings& warnings,
+                             const image::FrameOutputs& outputs) {
+  if (c.moment.bag.empty()) {
+    if (!c.moment.at.empty() || !c.moment.displays.empty()) {
+      throw Error(label("at") + ": 'at' and 'displays' draw a moment of a recording; give it with 'bag'");
+    }
+    return session.Render(c.request, label, warnings, outputs);
+  }
+  BagStillOptions moment;
+  moment.bag = c.moment.bag;
+  moment.at = c.moment.at;
+  DisplayOptions displays;
+  displays.displays = c.moment.displays;
+  const BagStill still(moment, session, c.request, false, displays, warnings);
+  return {still.Draw(session, outputs, warnings), still.prepared().robot};
+}
 
 struct SnapshotOptions {
   std::string suite;
@@ -107,7 +129,7 @@ void Check(const SnapshotOptions& o) {
   std::vector<snapshot::CaseRecord> records;
   records.reserve(s.cases.size());
   for (const snapshot::SnapshotCase* c : s.cases) {
-    snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, warnings);
+    snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, RenderCase, warnings);
     if (!o.report_dir.empty()) snapshot::WriteReportImages(outputs, o.report_dir, r);
     PrintCaseLine(snapshot::StatusWord(r.record.status), c->name, r.record.message);
     records.push_back(std::move(r.record));  // the images go with r
@@ -141,7 +163,7 @@ void Update(const SnapshotOptions& o) {
   std::vector<snapshot::CaseRecord> records;
   int written = 0;
   for (const snapshot::SnapshotCase* c : s.cases) {
-    snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, warnings);
+    snapshot::CaseResult r = snapshot::CheckCase(session, s.suite, *c, RenderCase, warnings);
     snapshot::CaseRecord& record = r.record;
     if (record.status == snapshot::CaseStatus::kError ||
         (record.status == snapshot::CaseStatus::kPassed && !o.force)) {

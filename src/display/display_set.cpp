@@ -1,7 +1,6 @@
-// Display construction, message routing by topic, and the bag's messages fed in log order.
+// Display construction and message routing by topic.
 #include "display/display_set.h"
 
-#include "bag/bag_messages.h"
 #include "bag/cdr_reader.h"
 #include "common/error.h"
 #include "display/make_display.h"
@@ -44,26 +43,6 @@ void DisplaySet::Receive(const std::string& topic, const std::string& type, cons
 void DisplaySet::Draw(std::int64_t time_ns, const FrameLookup& lookup, scene::Scene& scene,
                       Warnings& warnings) const {
   for (const auto& display : displays_) display->Draw(time_ns, lookup, scene, warnings);
-}
-
-void ReadBagDisplayMessages(const std::string& path, std::int64_t until_ns, DisplaySet& displays,
-                            Warnings& warnings) {
-  if (displays.empty()) return;
-  bag::ReadBagMessages(
-      path, [&](const bag::BagTopic& topic) { return topic.encoding == "cdr" && displays.Subscribes(topic.name); },
-      [&](const bag::BagMessage& message) {
-        const auto time = static_cast<std::int64_t>(message.log_time);
-        if (time > until_ns) return;
-        const std::string where =
-            bag::DescribeMessage(message.file, message.topic.name, message.index, message.log_time);
-        bag::MessageValue value;
-        try {
-          value = bag::DecodeMessage(*message.topic.schema, message.data);
-        } catch (const bag::CdrError& e) {
-          throw Error(where + ": " + e.what());
-        }
-        displays.Receive(message.topic.name, message.topic.type, value, time, where, warnings);
-      });
 }
 
 }  // namespace urdfsnap::display

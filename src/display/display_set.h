@@ -2,7 +2,8 @@
 // bag, or a message file), drawn together into a scene. What a command uses:
 //
 //   display::DisplaySet displays(config.displays, fixed_frame, resources);
-//   display::ReadBagDisplayMessages(bag, until_ns, displays, warnings);
+//   display::BagDisplayFeed feed(bag, displays);   // display/bag_display_feed.h
+//   feed.AdvanceTo(until_ns, warnings);
 //   scene::Scene scene = robot.Pose(positions);
 //   displays.Draw(until_ns, lookup, scene, warnings);
 #pragma once
@@ -41,11 +42,5 @@ class DisplaySet {
   std::vector<std::string> names_;
   std::vector<std::unique_ptr<Display>> displays_;
 };
-
-// Feeds `displays` every message of the bag at `path` on a topic they subscribe to, logged at or
-// before `until_ns`, decoded by the bag's definitions (or those urdfsnap ships). Throws
-// urdfsnap::Error for an unreadable bag or a message that does not decode, naming it.
-void ReadBagDisplayMessages(const std::string& path, std::int64_t until_ns, DisplaySet& displays,
-                            Warnings& warnings);
 
 }  // namespace urdfsnap::display

@@ -14,13 +14,29 @@ bool MarkerDisplay::Reads(const std::string& type) const {
          (settings_.array ? "visualization_msgs/MarkerArray" : "visualization_msgs/Marker");
 }
 
+namespace {
+
+// Whether a marker received at `received_ns` is gone at `time_ns` (its lifetime passed).
+bool Expired(const Marker& m, std::int64_t received_ns, std::int64_t time_ns) {
+  return m.lifetime_ns > 0 && time_ns > received_ns + m.lifetime_ns;
+}
+
+}  // namespace
+
 void MarkerDisplay::Receive(const bag::MessageValue& message, std::int64_t time_ns,
                             const std::string& where, Warnings& warnings) {
+  Expire(time_ns);
   if (!settings_.array) {
     Apply(DecodeMarker(message), time_ns, where, warnings);
     return;
   }
   for (Marker& marker : DecodeMarkerArray(message)) Apply(std::move(marker), time_ns, where, warnings);
+}
+
+void MarkerDisplay::Expire(std::int64_t time_ns) {
+  std::erase_if(markers_, [&](const auto& entry) {
+    return Expired(entry.second.marker, entry.second.received_ns, time_ns);
+  });
 }
 
 void MarkerDisplay::Apply(Marker marker, std::int64_t time_ns, const std::string& where,
@@ -48,7 +64,7 @@ void MarkerDisplay::Draw(std::int64_t time_ns, const FrameLookup& lookup, scene:
                          Warnings& warnings) const {
   for (const auto& [key, kept] : markers_) {
     const Marker& m = kept.marker;
-    if (m.lifetime_ns > 0 && time_ns > kept.received_ns + m.lifetime_ns) continue;   // expired
+    if (Expired(m, kept.received_ns, time_ns)) continue;
     const auto shown = settings_.namespaces.find(m.ns);
     if (shown != settings_.namespaces.end() && !shown->second) continue;
     const std::string name = "marker '" + m.ns + "/" + std::to_string(m.id) + "'";

@@ -29,6 +29,10 @@ class MarkerDisplay : public Display {
   // tests'); a marker RViz refuses is a warning and is not kept.
   void Apply(Marker marker, std::int64_t time_ns, const std::string& where, Warnings& warnings);
 
+  // Drops the markers whose lifetime has passed at `time_ns`, which no later draw shows, so that a
+  // long recording keeps only the live ones (Receive does it first).
+  void Expire(std::int64_t time_ns);
+
   // How many markers are kept.
   size_t size() const { return markers_.size(); }
 

@@ -1,11 +1,13 @@
 // RViz's PointCloud2 and LaserScan displays (point_cloud2_display.cpp, laser_scan_display.cpp,
 // both drawing through point_cloud_common.cpp): the clouds of their topic received within Decay
 // Time of the time drawn (the latest one only with the default 0), each placed by TF at its header
-// stamp and drawn as a scene::PointSet. A scan is projected into a cloud when received.
+// stamp and drawn as a scene::PointSet. A scan is projected into a cloud when drawn, each beam at
+// its own time (laser_scan.h).
 #pragma once
 
 #include <deque>
 #include <string>
+#include <variant>
 
 #include "display/display.h"
 #include "display/display_settings.h"
@@ -26,12 +28,12 @@ class PointCloudDisplay : public Display {
   void Draw(std::int64_t time_ns, const FrameLookup& lookup, scene::Scene& scene,
             Warnings& warnings) const override;
 
-  // Keeps `cloud` received at `time_ns` (Receive's decoded message; the tests' entry).
-  void Keep(PointCloud2 cloud, std::int64_t time_ns, const std::string& where);
+  // Keeps `message` received at `time_ns` (Receive's decoded message; the tests' entry).
+  void Keep(std::variant<PointCloud2, LaserScan> message, std::int64_t time_ns, const std::string& where);
 
  private:
   struct Kept {
-    PointCloud2 cloud;
+    std::variant<PointCloud2, LaserScan> message;
     std::int64_t received_ns;
     std::string where;
   };

@@ -1,6 +1,9 @@
-// Upload and drawing of triangle meshes.
+// Upload, drawing and view culling of triangle meshes.
 #include "gl/internal/gpu_mesh.h"
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "gl/internal/gl_api.h"
@@ -39,11 +42,40 @@ GpuMesh::GpuMesh(const geometry::TriangleMesh& mesh)
   glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride,
                         reinterpret_cast<const void*>(6 * sizeof(float)));
   glBindVertexArray(0);
+  // the sphere around the bounding box: not the least sphere, but cheap and never too small; one
+  // without bounds when a coordinate is not finite (where GL would draw it is not for us to judge)
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3f& p : mesh.positions) {
+    if (!p.allFinite()) {
+      radius_ = std::numeric_limits<double>::infinity();
+      return;
+    }
+    box.extend(p.cast<double>());
+  }
+  if (!box.isEmpty()) {
+    centre_ = box.center();
+    for (const Eigen::Vector3f& p : mesh.positions) radius_ = std::max(radius_, (p.cast<double>() - centre_).norm());
+  }
 }
 
 GpuMesh::~GpuMesh() {
   glDeleteBuffers(2, buffers_);
   glDeleteVertexArrays(1, &vertex_array_);
+}
+
+bool GpuMesh::OutsideClipVolume(const Eigen::Matrix4d& model_view_projection) const {
+  // a point p is inside when -w <= x, y, z <= w in clip space: each of the six planes is
+  // (row w ± row x, y or z) . (p, 1) >= 0, in the mesh's own coordinates
+  const Eigen::Matrix4d& m = model_view_projection;
+  const Eigen::Vector4d centre = centre_.homogeneous();
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const double side : {1.0, -1.0}) {
+      const Eigen::Vector4d plane = m.row(3).transpose() + side * m.row(axis).transpose();
+      // beyond the plane by more than the radius (false for NaN, so an unsure mesh is drawn)
+      if (plane.dot(centre) < -radius_ * plane.head<3>().norm()) return true;
+    }
+  }
+  return false;
 }
 
 void GpuMesh::Draw() const {

@@ -30,7 +30,12 @@ std::uint8_t Channel(float value) {
 }  // namespace
 
 PointSetDrawing::PointSetDrawing()
-    : point_("point.vert", "point.frag"), quad_("point_quad.vert", "point.frag"), box_("point_box.vert", "point.frag") {
+    : point_("point.vert", "point.frag"),
+      quad_("point_quad.vert", "point.frag"),
+      box_("point_box.vert", "point.frag"),
+      splat_program_("point_splat.vert", "point_splat.frag") {
+  glGenVertexArrays(1, &splat_array_);
+  glGenTextures(1, &splat_texture_);
   glGenVertexArrays(1, &vertex_array_);
   glBindVertexArray(vertex_array_);
   glGenBuffers(2, buffers_);
@@ -53,6 +58,8 @@ PointSetDrawing::PointSetDrawing()
 }
 
 PointSetDrawing::~PointSetDrawing() {
+  glDeleteTextures(1, &splat_texture_);
+  glDeleteVertexArrays(1, &splat_array_);
   glDeleteBuffers(2, buffers_);
   glDeleteVertexArrays(1, &vertex_array_);
 }
@@ -127,6 +134,62 @@ void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d&
     }
   }
   glDisable(GL_PROGRAM_POINT_SIZE);
+  glEnable(GL_CULL_FACE);
+}
+
+void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets, const Eigen::Matrix4d& V,
+                                 const Eigen::Matrix4d& P) {
+  // the bound framebuffer's size and sample positions
+  GLint viewport[4] = {0, 0, 0, 0}, samples = 0, max_texture = 0;
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetIntegerv(GL_SAMPLES, &samples);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  // the splat's texture is a sample wide per pixel: wider than GL allows, the sets are drawn by GL
+  const bool can_splat = static_cast<long>(viewport[2]) * std::max(samples, 1) <= max_texture;
+  bool splatting = false;
+  for (const scene::PointSet* points : sets) {
+    if (!can_splat || !PointSplat::Splattable(*points)) {
+      Draw(*points, V, P);
+      continue;
+    }
+    if (!splatting) {
+      std::vector<Eigen::Vector2f> positions(std::max(samples, 1), Eigen::Vector2f(0.5f, 0.5f));
+      for (GLint s = 0; s < samples; ++s) glGetMultisamplefv(GL_SAMPLE_POSITION, s, positions[s].data());
+      splat_.Clear(viewport[2], viewport[3], positions);
+      splatting = true;
+    }
+    splat_.Add(*points, V, P);
+  }
+  if (!splatting) return;
+  splat_.Cover();
+  if (!splat_.empty()) Composite();
+}
+
+// Uploads the splatted rows into the texture and draws a band over those rows, per sample.
+void PointSetDrawing::Composite() {
+  const int width = splat_.width() * splat_.samples(), height = splat_.height();   // texels: samples side by side
+  const auto [first, last] = splat_.rows();
+  static_assert(sizeof(PointSplat::Texel) == 8);   // one GL_RG32UI texel: depth bits, colour
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, splat_texture_);
+  if (width != texture_size_[0] || height != texture_size_[1]) {
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32UI, width, height, 0, GL_RG_INTEGER, GL_UNSIGNED_INT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    texture_size_[0] = width, texture_size_[1] = height;
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, first, width, last - first + 1, GL_RG_INTEGER, GL_UNSIGNED_INT,
+                  splat_.texels().data() + static_cast<size_t>(first) * width);
+  splat_program_.Use();
+  splat_program_.Set("texels", 0);
+  splat_program_.Set("samples", splat_.samples());
+  const auto clip_y = [&](int row) { return 2.f * static_cast<float>(row) / static_cast<float>(height) - 1.f; };
+  splat_program_.Set("rows", Eigen::Vector2f(clip_y(first), clip_y(last + 1)));
+  glDisable(GL_CULL_FACE);
+  glBindVertexArray(splat_array_);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glBindVertexArray(0);
   glEnable(GL_CULL_FACE);
 }
 

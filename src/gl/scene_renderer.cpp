@@ -127,9 +127,7 @@ struct SceneRenderer::Impl {
       : samples(samples),
         context(CreateGlContext(backend.backend, backend.asked_by)),
         lit("lit.vert", "lit.frag"),
-        line("line.vert", "line.frag"),
-        text("text.vert", "text.frag"),
-        label("label.vert", "label.frag") {
+        line("line.vert", "line.frag") {
     glGenVertexArrays(1, &stream_array);
     glGenBuffers(1, &stream_buffer);
   }
@@ -166,10 +164,11 @@ struct SceneRenderer::Impl {
   // A texture shown by no unit leaves the colour as it is: such a surface is drawn untextured.
   void DrawMesh(const scene::DrawItem& item, const Eigen::Matrix4d& V, const Eigen::Matrix4d& PV) {
     const int units = item.texture ? std::clamp(item.texture_units, 0, kMaxTextureUnits) : 0;
-    if (units > 0 && !lit_textured) lit_textured.emplace("lit.vert", "lit.frag", "TEXTURED");
-    const ShaderProgram& program = units > 0 ? *lit_textured : lit;
-    program.Use();
     const Eigen::Matrix4d M = item.X_FG.matrix();
+    const GpuMesh& mesh = meshes.Get(item.mesh);
+    if (mesh.OutsideClipVolume(PV * M)) return;
+    const ShaderProgram& program = units > 0 ? lit_textured.Get() : lit;
+    program.Use();
     program.Set("model_view_projection", Eigen::Matrix4f((PV * M).cast<float>()));
     const Eigen::Matrix3d MV = (V * M).topLeftCorner<3, 3>();
     program.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
@@ -182,7 +181,7 @@ struct SceneRenderer::Impl {
     }
     // a mirroring scale turns the winding around; Ogre flips culling for such nodes, and so do we
     glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
-    meshes.Get(item.mesh).Draw();
+    mesh.Draw();
   }
 
   // 1-pixel lines, or with a width the camera-facing ribbons of RibbonVertices
@@ -214,6 +213,7 @@ struct SceneRenderer::Impl {
   // system applies as glPolygonOffset(-1, -1); two triangles per character, as MovableText's
   void DrawLabel(const scene::TextLabel& label, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
     if (label.quads.empty()) return;
+    const ShaderProgram& text = this->text.Get();
     text.Use();
     text.Set("projection", Eigen::Matrix4f(P.cast<float>()));
     text.Set("anchor_view", Eigen::Vector3f((V * label.anchor.homogeneous()).head<3>().cast<float>()));
@@ -244,15 +244,21 @@ struct SceneRenderer::Impl {
   // back to front, as Ogre orders RViz's scene.
   image::Image DrawColour(const scene::Scene& scene, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P,
                           int width, int height) {
+    ClearColourFramebuffer(scene.background, width, height);
+    const Eigen::Vector3d eye = V.inverse().topRightCorner<3, 1>();
+    DrawBlended(DrawOpaque(scene, V, P, eye), V, P, eye);
+    return framebuffer->ReadPixels();
+  }
+
+  // Binds the colour framebuffer (made anew for another size) cleared to `background`, depth-tested
+  // and back faces culled.
+  void ClearColourFramebuffer(const Eigen::Vector3f& background, int width, int height) {
     if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height) {
       framebuffer.reset();
       framebuffer = std::make_unique<Framebuffer>(width, height, samples);
     }
     framebuffer->Bind();
-    const Eigen::Matrix4d PV = P * V;
-    const Eigen::Vector3d eye = V.inverse().topRightCorner<3, 1>();
-
-    glClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
+    glClearColor(background.x(), background.y(), background.z(), 1.0f);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -260,8 +266,13 @@ struct SceneRenderer::Impl {
     glDepthFunc(GL_LEQUAL);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
+  }
 
-    // opaque geometry first, writing depth
+  // Draws the opaque meshes, point sets and triangles, writing depth; returns the rest (transparent
+  // ones, every line set and label) with their squared distances from `eye`, back to front.
+  std::vector<Transparent> DrawOpaque(const scene::Scene& scene, const Eigen::Matrix4d& V,
+                                      const Eigen::Matrix4d& P, const Eigen::Vector3d& eye) {
+    const Eigen::Matrix4d PV = P * V;
     glDisable(GL_BLEND);
     std::vector<Transparent> transparent;
     for (const auto& item : scene.items) {
@@ -271,13 +282,15 @@ struct SceneRenderer::Impl {
         transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
       }
     }
+    std::vector<const scene::PointSet*> opaque_points;
     for (const auto& points : scene.points) {
       if (Opaque(points)) {
-        point_sets.Draw(points, V, P);
+        opaque_points.push_back(&points);
       } else {
         transparent.push_back({(Centre(points.positions) - eye).squaredNorm(), &points});
       }
     }
+    point_sets().DrawOpaque(opaque_points, V, P);
     for (const auto& triangles : scene.triangles) {
       if (Opaque(triangles)) {
         DrawTriangles(triangles, PV);
@@ -292,10 +305,15 @@ struct SceneRenderer::Impl {
     for (const auto& text_label : scene.labels) {
       transparent.push_back({(text_label.anchor - eye).squaredNorm(), &text_label});
     }
-
-    // then blended geometry back to front, depth-tested but not writing depth
     std::stable_sort(transparent.begin(), transparent.end(),
                      [](const Transparent& a, const Transparent& b) { return a.depth > b.depth; });
+    return transparent;
+  }
+
+  // Draws `transparent` in its order, blended, depth-tested but not writing depth.
+  void DrawBlended(const std::vector<Transparent>& transparent, const Eigen::Matrix4d& V,
+                   const Eigen::Matrix4d& P, const Eigen::Vector3d& eye) {
+    const Eigen::Matrix4d PV = P * V;
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
@@ -305,7 +323,7 @@ struct SceneRenderer::Impl {
       } else if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
         DrawLines(**lines, PV, eye);
       } else if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
-        point_sets.Draw(**points, V, P);
+        point_sets().Draw(**points, V, P);
       } else if (const auto* triangles = std::get_if<const scene::FlatTriangles*>(&t.what)) {
         DrawTriangles(**triangles, PV);
       } else {
@@ -313,7 +331,6 @@ struct SceneRenderer::Impl {
       }
     }
     glDepthMask(GL_TRUE);
-    return framebuffer->ReadPixels();
   }
 
   // The label image (the depths stay in the label framebuffer for ReadDepths): every draw item
@@ -331,6 +348,7 @@ struct SceneRenderer::Impl {
     glDepthFunc(GL_LESS);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
+    const ShaderProgram& label = this->label.Get();
     label.Use();
     label.Set("projection", Eigen::Matrix4f(P.cast<float>()));
     for (const auto& item : scene.items) {
@@ -339,10 +357,12 @@ struct SceneRenderer::Impl {
         throw Error("the label image holds 65534 links; link index " + std::to_string(item.link) + " does not fit");
       }
       const Eigen::Matrix4d M = item.X_FG.matrix();
+      const GpuMesh& mesh = meshes.Get(item.mesh);
+      if (mesh.OutsideClipVolume(P * V * M)) continue;
       label.Set("model_view", Eigen::Matrix4f((V * M).cast<float>()));
       label.Set("label", static_cast<unsigned>(item.link + 1));
       glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
-      meshes.Get(item.mesh).Draw();
+      mesh.Draw();
     }
     return label_framebuffer->ReadLabels();
   }
@@ -350,11 +370,16 @@ struct SceneRenderer::Impl {
   int samples;
   std::unique_ptr<GlContext> context;
   ShaderProgram lit;                           // untextured surfaces
-  std::optional<ShaderProgram> lit_textured;   // and textured ones, made for the first
+  LazyShaderProgram lit_textured{"lit.vert", "lit.frag", "TEXTURED"};   // and textured ones
   ShaderProgram line;
-  ShaderProgram text;
-  ShaderProgram label;
-  PointSetDrawing point_sets;
+  LazyShaderProgram text{"text.vert", "text.frag"};
+  LazyShaderProgram label{"label.vert", "label.frag"};
+  // the point programs, made for the first point set drawn
+  std::optional<PointSetDrawing> point_sets_made;
+  PointSetDrawing& point_sets() {
+    if (!point_sets_made) point_sets_made.emplace();
+    return *point_sets_made;
+  }
   unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
   std::unique_ptr<Framebuffer> framebuffer;
   std::unique_ptr<LabelFramebuffer> label_framebuffer;

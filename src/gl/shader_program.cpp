@@ -110,6 +110,10 @@ void ShaderProgram::Set(const char* name, const Eigen::Vector3f& value) const {
   glUniform3fv(Location(name), 1, value.data());
 }
 
+void ShaderProgram::Set(const char* name, const Eigen::Vector2f& value) const {
+  glUniform2fv(Location(name), 1, value.data());
+}
+
 void ShaderProgram::Set(const char* name, float value) const { glUniform1f(Location(name), value); }
 
 void ShaderProgram::Set(const char* name, int value) const { glUniform1i(Location(name), value); }

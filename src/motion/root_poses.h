@@ -27,6 +27,7 @@ class RootPoses {
   Eigen::Isometry3d At(double t, Warnings& warnings) const;
 
   const std::string& root() const { return root_; }
+  const std::string& fixed_frame() const { return fixed_frame_; }
 
  private:
   std::shared_ptr<const tf::TfBuffer> buffer_;

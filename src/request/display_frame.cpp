@@ -23,20 +23,14 @@ display::FrameLookup RobotFrames(const model::Robot& robot, const std::vector<Ei
 }
 
 image::Frame DrawWithDisplays(RenderSession& session, const Prepared& prepared,
-                              const display::DisplaySet& displays, std::int64_t time_ns,
-                              const display::FrameLookup& tf, Warnings& warnings,
+                              const display::DisplaySet& displays, Warnings& warnings,
                               const image::FrameOutputs& outputs) {
   const render::RenderSettings& s = prepared.settings;
   if (s.camera) throw Error("message displays are drawn through the orbit view only, not through a calibrated camera");
   const std::vector<Eigen::Isometry3d> X_RL = model::ComputeLinkPoses(*prepared.robot, prepared.positions);
   const scene::RobotScene& robot_scene = prepared.renderer->scene();
   scene::Scene scene = robot_scene.Pose(X_RL);
-  const display::FrameLookup links = RobotFrames(*prepared.robot, X_RL, robot_scene.fixed_link());
-  const display::FrameLookup lookup = [&](const std::string& frame, std::int64_t t) {
-    std::optional<Eigen::Isometry3d> pose = tf ? tf(frame, t) : std::nullopt;
-    return pose ? pose : links(frame, t);
-  };
-  displays.Draw(time_ns, lookup, scene, warnings);
+  displays.Draw(0, RobotFrames(*prepared.robot, X_RL, robot_scene.fixed_link()), scene, warnings);
   return session.GlRenderer(s.samples).Render(scene, s.view, s.size.width, s.size.height, outputs);
 }
 

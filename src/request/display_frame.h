@@ -1,7 +1,7 @@
-// A prepared robot drawn with message displays (display/display_set.h): the robot posed, the
-// displays' items added in the fixed frame, one frame drawn. Frames the displays name are found
-// through the recording's TF when there is one, else among the robot's links posed as drawn (a
-// message file's markers on a link follow the link).
+// A prepared robot drawn with message displays (display/display_set.h) of message files: the robot
+// posed, the displays' items added in the fixed frame, one frame drawn. Frames the displays name are
+// the robot's links posed as drawn (a message file's markers on a link follow the link). A
+// recording's displays are drawn by animation::FrameDisplays.
 #pragma once
 
 #include <cstdint>
@@ -25,11 +25,9 @@ display::FrameLookup RobotFrames(const model::Robot& robot, const std::vector<Ei
                                  int fixed_link);
 
 // Draws `prepared` (through its orbit view; a calibrated camera is an urdfsnap::Error) with what
-// `displays` show at `time_ns`; frames looked up through `tf` when it is set and knows them, else
-// among the robot's links. Display problems are warnings.
+// `displays` show at time 0, their frames among the robot's links. Display problems are warnings.
 image::Frame DrawWithDisplays(RenderSession& session, const Prepared& prepared,
-                              const display::DisplaySet& displays, std::int64_t time_ns,
-                              const display::FrameLookup& tf, Warnings& warnings,
+                              const display::DisplaySet& displays, Warnings& warnings,
                               const image::FrameOutputs& outputs = {});
 
 }  // namespace urdfsnap::request

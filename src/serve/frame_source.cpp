@@ -8,6 +8,7 @@
 #include "image/png_writer.h"
 #include "request/render_session.h"
 #include "scene/view_fitting.h"
+#include "serve/server.h"
 
 namespace urdfsnap::serve {
 
@@ -37,6 +38,15 @@ std::string FrameSource::RenderPng(const request::RenderRequest& request, Warnin
   const request::Prepared prepared =
       session_->Prepare(request::ResolveRequest(request, base_files_, request::CommandLineLabel), warnings);
   const std::vector<std::uint8_t> png = image::EncodePng(session_->Draw(prepared).colour);
+  return {png.begin(), png.end()};
+}
+
+std::string FrameSource::RenderMomentPng(const RecordingView& recording, const request::RenderRequest& request,
+                                         double at, Warnings& warnings) {
+  const RecordedMoment moment = recording.moment(request, at, warnings);
+  const render::RenderSettings& s = moment.settings;
+  const image::Frame frame = session_->GlRenderer(s.samples).Render(moment.scene, s.view, s.size.width, s.size.height);
+  const std::vector<std::uint8_t> png = image::EncodePng(frame.colour);
   return {png.begin(), png.end()};
 }
 

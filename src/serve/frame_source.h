@@ -23,6 +23,8 @@ class RenderSession;
 
 namespace urdfsnap::serve {
 
+struct RecordingView;
+
 // A robot loaded for the live view, with every file its loading and first render read.
 struct WatchedModel {
   std::shared_ptr<const model::Robot> robot;
@@ -56,6 +58,10 @@ class FrameSource {
   // Option errors name the option as render's command line does ("--yaw 'x': ..."). Throws
   // urdfsnap::Error.
   std::string RenderPng(const request::RenderRequest& request, Warnings& warnings);
+
+  // The PNG of `request` at `at` seconds of the recording `recording` draws.
+  std::string RenderMomentPng(const RecordingView& recording, const request::RenderRequest& request, double at,
+                              Warnings& warnings);
 
   // The orbit view that frames the robot as `request` shows it (its pose, displays, size and view
   // direction, not its focal point): the view `render --fit` draws without --focal; or, for a

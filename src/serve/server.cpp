@@ -21,7 +21,7 @@
 #include "serve/render_thread.h"
 #include "serve/initial_view.h"
 #include "serve/query_request.h"
-#include "serve/robot_json.h"
+#include "serve/page_robot_json.h"
 #include "request/resolved_request.h"
 #include "request/value_parsing.h"
 
@@ -173,8 +173,15 @@ struct Server::Impl {
     const std::shared_ptr<const ModelState> state = live.State();
     if (!state->robot) return SetText(res, 422, kErrorPrefix + state->error);
     request::RenderRequest r;
+    std::optional<double> at;   // a moment of the recording
     try {
-      r = RequestFromQuery(req.params, options.base);
+      Query query = req.params;
+      if (const auto found = query.find("at"); found != query.end()) {
+        if (!options.recording) throw Error("at: a moment of a recording; urdfsnap serve was given no bag");
+        at = request::ParseFinite(found->second, "at");
+        query.erase(found);
+      }
+      r = RequestFromQuery(query, options.base);
       const render::ImageSize size = request::ParseImageSize(r.size, "--size");
       if (size.width > options.max_size.width || size.height > options.max_size.height) {
         throw Error("--size '" + r.size + "': urdfsnap serve renders at most " +
@@ -191,7 +198,7 @@ struct Server::Impl {
       const bool ran = renderer.TryRun([&](FrameSource& frames) {
         generation = live.State()->generation;
         Warnings warnings;
-        png = frames.RenderPng(r, warnings);
+        png = at ? frames.RenderMomentPng(*options.recording, r, *at, warnings) : frames.RenderPng(r, warnings);
       });
       if (!ran) {
         res.set_header("Retry-After", "1");
@@ -245,14 +252,16 @@ struct Server::Impl {
     if (!state->robot) {
       return SetJson(res, 422, {{"error", kErrorPrefix + state->error}, {"model", state->generation}});
     }
-    res.set_content(RobotJson(*state->robot, state->warnings), "application/json");
+    res.set_content(PageRobotJson(*state->robot, state->warnings), "application/json");
   }
 
   void Status(httplib::Response& res) {
     const std::shared_ptr<const ModelState> state = live.State();
     nlohmann::json error = nullptr;
     if (!state->robot) error = kErrorPrefix + state->error;
-    SetJson(res, 200, {{"model", state->generation}, {"error", error}});
+    nlohmann::json recording = nullptr;
+    if (options.recording) recording = {{"duration", options.recording->duration}};
+    SetJson(res, 200, {{"model", state->generation}, {"error", error}, {"recording", recording}});
   }
 
   void Route() {

@@ -1,5 +1,5 @@
 // The live view's HTTP server (cpp-httplib): the embedded page, GET /render.png in render's
-// option words, /api/robot, /api/view, /api/status and /api/fit, with the model reloaded as its
+// option words (and at=SECONDS, a moment of a recording), /api/robot, /api/view, /api/status and /api/fit, with the model reloaded as its
 // files change.
 //
 // It answers nothing else: no URL names a file, every response is the page, a rendered image or
@@ -15,16 +15,34 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "common/warnings.h"
 #include "gl/backend.h"
 #include "render/render_settings.h"
 #include "request/render_request.h"
+#include "scene/scene.h"
 #include "serve/connection_limits.h"
 #include "serve/live_model.h"
 
 namespace urdfsnap::serve {
+
+// A moment of a recording as a scene to draw (GL-free) and the settings to draw it with.
+struct RecordedMoment {
+  scene::Scene scene;
+  render::RenderSettings settings;
+};
+
+// A recording the page plays through with a time slider (`urdfsnap serve run.mcap`): its length,
+// and the moment `at` seconds from its first joint state for a request, as `render --bag --at`
+// draws it (the recorded joint states and TF, the .rviz file's displays showing the bag's messages
+// up to then). The command supplies it: the server knows no bags, and draws the scene itself (its
+// GL is the server module's own).
+struct RecordingView {
+  double duration = 0;
+  std::function<RecordedMoment(const request::RenderRequest& request, double at, Warnings& warnings)> moment;
+};
 
 struct ServerOptions {
   std::string bind = "127.0.0.1";  // address to listen on
@@ -43,6 +61,8 @@ struct ServerOptions {
   gl::BackendChoice backend;
   // called after each reload of the model (not the first load), from the watching thread
   std::function<void(const ModelState&)> on_reload;
+  // set when the model is a recording: /render.png then takes at=SECONDS
+  std::optional<RecordingView> recording;
 };
 
 // True when `address` is a loopback address or name (127.x.x.x, ::1, localhost).

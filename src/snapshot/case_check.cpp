@@ -143,7 +143,7 @@ void CompareGray16Goldens(const SnapshotCase& c, image::Frame& frame, CaseResult
 }  // namespace
 
 CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const SnapshotCase& c,
-                     Warnings& warnings) {
+                     const CaseRenderer& render, Warnings& warnings) {
   const auto start = std::chrono::steady_clock::now();
   CaseResult result;
   CaseRecord& record = result.record;
@@ -154,8 +154,8 @@ CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const 
   record.tolerance = c.tolerance;
   try {
     const image::FrameOutputs outputs{true, c.depth.wanted, c.labels.wanted};
-    request::Rendered rendered = session.Render(
-        c.request, [&](std::string_view name) { return OptionLocation(suite, c, name); }, warnings, outputs);
+    request::Rendered rendered = render(
+        session, c, [&](std::string_view name) { return OptionLocation(suite, c, name); }, warnings, outputs);
     result.robot = rendered.robot;
     result.actual = std::move(rendered.frame.colour);
     Compare(c, result);

@@ -3,6 +3,8 @@
 // images a report shows until they are written.
 #pragma once
 
+#include <functional>
+
 #include "common/warnings.h"
 #include "image/image.h"
 #include "request/render_session.h"
@@ -30,9 +32,16 @@ struct CaseResult {
   std::shared_ptr<const model::Robot> robot;  // the robot rendered; null when rendering failed
 };
 
-// Renders `c` and compares it with its goldens. Never throws for problems of the case itself:
-// they become a kError result whose message names the suite file and line.
+// How a case is drawn: its request through `session` (labels naming the suite's lines), into the
+// images `outputs` asks for. The command supplies it, since a case with a recording moment is drawn
+// as `render --bag` draws one.
+using CaseRenderer = std::function<request::Rendered(request::RenderSession& session, const SnapshotCase& c,
+                                                     const request::OptionLabel& label, Warnings& warnings,
+                                                     const image::FrameOutputs& outputs)>;
+
+// Renders `c` through `render` and compares it with its goldens. Never throws for problems of the
+// case itself: they become a kError result whose message names the suite file and line.
 CaseResult CheckCase(request::RenderSession& session, const Suite& suite, const SnapshotCase& c,
-                     Warnings& warnings);
+                     const CaseRenderer& render, Warnings& warnings);
 
 }  // namespace urdfsnap::snapshot

@@ -32,6 +32,7 @@ void AddSuiteInputs(OutputPlan& outputs, const Suite& suite, const std::vector<c
   for (const SnapshotCase* c : cases) {
     const std::string where = suite.path + ":" + std::to_string(c->line) + ": case '" + c->name + "': ";
     request::AddRequestInputs(outputs, c->request, where);
+    if (!c->moment.bag.empty()) outputs.AddInput(c->moment.bag, where + "bag");
     if (!goldens) continue;
     outputs.AddInput(c->golden, where + "the golden");
     if (c->depth.wanted) outputs.AddInput(c->depth.golden, where + "the depth golden");

@@ -134,6 +134,18 @@ class SuiteReader {
     return number;
   }
 
+  // A list of scalars (or one scalar) as texts, in file order.
+  std::vector<std::string> Texts(const YAML::Node& value, const std::string& key) const {
+    if (value.IsScalar()) return {value.Scalar()};
+    if (!value.IsSequence()) throw ErrorAt(value, "'" + key + "': expected a list");
+    std::vector<std::string> texts;
+    for (const YAML::Node& item : value) {
+      if (!item.IsScalar()) throw ErrorAt(item, "'" + key + "': expected a list of values");
+      texts.push_back(item.Scalar());
+    }
+    return texts;
+  }
+
   // {KEY: VALUE} as pairs of text, in file order.
   std::vector<std::pair<std::string, std::string>> Pairs(const YAML::Node& value,
                                                          const std::string& key) const {
@@ -191,6 +203,12 @@ class SuiteReader {
       r.model.xacro_ns = Flag(value, key);
     } else if (key == "joints") {
       ApplyJoints(value, r);
+    } else if (key == "bag") {
+      c.moment.bag = Resolve(Text(value, key));
+    } else if (key == "at") {
+      c.moment.at = Text(value, key);
+    } else if (key == "displays") {
+      c.moment.displays = Texts(value, key);
     } else if (key == "max-delta") {
       c.tolerance.max_delta = static_cast<int>(Number(value, key, 0, 255));
     } else if (key == "max-fraction") {
@@ -219,6 +237,7 @@ class SuiteReader {
 
   std::string KnownKeysHint(const std::string& key) const {
     std::vector<std::string> keys = {"name", "golden", "model", "args", "packages", "xacro-ns", "joints",
+                                     "bag", "at", "displays",
                                      "max-delta", "max-fraction", "max-mean", "depth", "depth-golden",
                                      "depth-max-delta", "depth-max-fraction", "labels", "labels-golden",
                                      "labels-max-fraction"};

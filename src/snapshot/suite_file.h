@@ -42,11 +42,21 @@ struct Gray16Golden {
   image::Gray16Tolerance tolerance;
 };
 
+// A moment of a recording a case draws, as `render --bag BAG --at AT --display ...` draws it: the
+// robot at the bag's joint states and TF then, with the displays of the case's .rviz file and
+// `displays` showing the bag's messages up to it.
+struct RecordingMoment {
+  std::string bag;                    // a .mcap or .db3 file or rosbag2 folder; "" for none
+  std::string at;                     // seconds from the first joint state, or a stamp ("" for 0)
+  std::vector<std::string> displays;  // CLASS:TOPIC, as --display takes them
+};
+
 struct SnapshotCase {
   std::string name;
   int index = 0;              // position in the suite, 0-based
   int line = 0;               // of the case in the suite file
   request::RenderRequest request;
+  RecordingMoment moment;
   std::string golden;         // path of the golden PNG (relative to the working directory)
   image::DiffTolerance tolerance;
   Gray16Golden depth{false, "", image::DefaultTolerance(image::Gray16Kind::kDepth)};

@@ -100,8 +100,11 @@ TEST(MessageSchemaTest, DecodesCdrThroughTheDefinition) {
 }
 
 TEST(MessageSchemaTest, ShipsTheDefinitionsOfTheTypesUrdfsnapReads) {
-  for (const char* type : {"sensor_msgs/msg/JointState", "tf2_msgs/msg/TFMessage", "std_msgs/msg/String",
-                           "geometry_msgs/msg/TransformStamped", "sensor_msgs/msg/Image"}) {
+  for (const char* type :
+       {"sensor_msgs/msg/JointState", "tf2_msgs/msg/TFMessage", "std_msgs/msg/String",
+        "geometry_msgs/msg/TransformStamped", "sensor_msgs/msg/PointCloud2", "sensor_msgs/msg/LaserScan",
+        "sensor_msgs/msg/Image", "sensor_msgs/msg/CameraInfo", "visualization_msgs/msg/MarkerArray",
+        "nav_msgs/msg/Path", "geometry_msgs/msg/PoseArray", "geometry_msgs/msg/PoseStamped"}) {
     SCOPED_TRACE(type);
     const std::optional<MessageSchema> schema = MessageSchema::Shipped(type);
     ASSERT_TRUE(schema.has_value());
@@ -112,6 +115,8 @@ TEST(MessageSchemaTest, ShipsTheDefinitionsOfTheTypesUrdfsnapReads) {
   EXPECT_EQ(stamped.name, "geometry_msgs/TransformStamped");
   const MessageType& transform = tf.types()[stamped.fields[2].type];
   EXPECT_EQ(tf.types()[transform.fields[1].type].name, "geometry_msgs/Quaternion");
+  const MessageSchema info = *MessageSchema::Shipped("sensor_msgs/msg/CameraInfo");
+  EXPECT_EQ(info.types()[info.root().fields.back().type].name, "sensor_msgs/RegionOfInterest");
   EXPECT_FALSE(MessageSchema::Shipped("sensor_msgs/msg/Imu").has_value());
 }
 

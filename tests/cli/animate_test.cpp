@@ -114,20 +114,6 @@ class AnimateTest : public CliTest {
     csv_ = Write("wave.csv", kMrmCsv);
   }
 
-  // Runs urdfsnap and expects success.
-  std::string Ok(const std::string& arguments) {
-    const Result result = RunUrdfsnap(arguments);
-    EXPECT_EQ(result.status, 0) << "urdfsnap " << arguments << "\n" << result.output;
-    return result.output;
-  }
-
-  // What `urdfsnap render ARGUMENTS` writes.
-  std::string Render(const std::string& arguments) {
-    const std::string out = Path("render_" + std::to_string(renders_++) + ".png");
-    Ok("render " + arguments + " -o " + out);
-    return ReadBytes(out);
-  }
-
   // The words --print-frame gives for frame k of `animation` (animate's arguments without -o).
   std::string FrameWords(const std::string& animation, std::int64_t k) {
     std::string words = Ok("animate " + animation + " --print-frame " + std::to_string(k));
@@ -136,7 +122,6 @@ class AnimateTest : public CliTest {
   }
 
   std::string mrm_, csv_;
-  int renders_ = 0;
 };
 
 TEST_F(AnimateTest, PngFramesAreRenderOfTheInterpolatedPoseAtKOverFps) {

@@ -27,17 +27,6 @@ class BagRenderTest : public CliTest {
     URDFSNAP_REQUIRE_GL();
     CliTest::SetUp();
   }
-  std::string Ok(const std::string& arguments) {
-    const Result result = RunUrdfsnap(arguments);
-    EXPECT_EQ(result.status, 0) << "urdfsnap " << arguments << "\n" << result.output;
-    return result.output;
-  }
-  // The bytes `urdfsnap render ARGUMENTS -o FILE` writes.
-  std::string Render(const std::string& arguments) {
-    const std::string out = Path("render_" + std::to_string(renders_++) + ".png");
-    Ok("render " + arguments + " -o " + out);
-    return ReadBytes(out);
-  }
   // Runs a command that must fail: exit 2, one error line naming `expected`, no output file.
   void Fails(const std::string& arguments, const std::string& expected) {
     const Result result = RunUrdfsnap(arguments + " -o " + Path("bad.png"));
@@ -46,7 +35,6 @@ class BagRenderTest : public CliTest {
     EXPECT_NE(result.output.find(expected), std::string::npos) << result.output;
     EXPECT_FALSE(fs::exists(Path("bad.png")));
   }
-  int renders_ = 0;
 };
 
 // The pixels where two images of one size differ by more than a little.

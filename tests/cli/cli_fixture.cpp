@@ -54,4 +54,16 @@ std::string CliTest::Write(const std::string& name, const std::string& text) con
   return Path(name);
 }
 
+std::string CliTest::Ok(const std::string& arguments) {
+  const Result result = RunUrdfsnap(arguments);
+  EXPECT_EQ(result.status, 0) << "urdfsnap " << arguments << "\n" << result.output;
+  return result.output;
+}
+
+std::string CliTest::Render(const std::string& arguments) {
+  const std::string out = Path("render_" + std::to_string(renders_++) + ".png");
+  Ok("render " + arguments + " -o " + out);
+  return ReadBytes(out);
+}
+
 }  // namespace urdfsnap::cli_test

@@ -38,6 +38,11 @@ class CliTest : public ::testing::Test {
   std::string Path(const std::string& name) const { return (dir_ / name).string(); }
   // Writes `text` to the file `name` in the folder and returns its path.
   std::string Write(const std::string& name, const std::string& text) const;
+  // Runs "urdfsnap ARGUMENTS", expects success (exit 0) and returns its output.
+  std::string Ok(const std::string& arguments);
+  // The bytes "urdfsnap render ARGUMENTS -o FILE" writes, FILE a new PNG in the folder each call.
+  std::string Render(const std::string& arguments);
+  int renders_ = 0;   // Render's files so far
   std::optional<test::TempFolder> folder_;
   std::filesystem::path dir_;  // folder_'s path
 };

@@ -33,7 +33,6 @@ class CloudRenderTest : public CliTest {
     if (output) *output = result.output;
     return image::ReadPng(out);
   }
-  int renders_ = 0;
 };
 
 // How many pixels are close to `rgb` (within `tolerance` per channel: points of 0.01 m cover a pixel

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_fixture.h"
+#include "image/image_diff.h"
 #include "image/png_reader.h"
 
 namespace urdfsnap::cli_test {
@@ -25,19 +26,7 @@ const std::string kView = " --yaw 0.3 --pitch 0.6 --distance 5.5 --focal 0.6,0,0
 // Pixels whose channels differ by more than 24 (antialiased edges move a little between Mesa
 // builds), as a share of the image.
 double ChangedShare(const image::Image& a, const image::Image& b) {
-  EXPECT_EQ(a.width, b.width);
-  EXPECT_EQ(a.height, b.height);
-  size_t changed = 0;
-  const size_t channels = a.rgb.size() / (static_cast<size_t>(a.width) * a.height);
-  for (size_t i = 0; i + channels <= a.rgb.size(); i += channels) {
-    for (size_t c = 0; c < channels; ++c) {
-      if (std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])) > 24) {
-        ++changed;
-        break;
-      }
-    }
-  }
-  return static_cast<double>(changed) / (static_cast<double>(a.width) * a.height);
+  return image::CompareImages(a, b, 24).fraction_over;
 }
 
 class DisplayCliTest : public CliTest {};

@@ -70,6 +70,20 @@ TEST(MarkerDisplayTest, LifetimeCountsFromReceptionAndZeroIsForever) {
   EXPECT_EQ(DrawAt(display, 2 * kSecond, warnings).items.size(), 1u);
 }
 
+TEST(MarkerDisplayTest, ExpiredMarkersAreDroppedNotJustHidden) {
+  MarkerDisplay display("/m", {}, {});
+  Warnings warnings;
+  for (int id = 0; id < 100; ++id) {   // a trail: a new id every 0.1 s, each living 0.25 s
+    Marker brief = Cube("trail", id);
+    brief.lifetime_ns = kSecond / 4;
+    display.Expire(id * kSecond / 10);
+    display.Apply(brief, id * kSecond / 10, "w", warnings);
+  }
+  EXPECT_EQ(display.size(), 3u);   // received at 9.7, 9.8 and 9.9 s
+  display.Expire(20 * kSecond);
+  EXPECT_EQ(display.size(), 0u);
+}
+
 TEST(MarkerDisplayTest, DisabledNamespacesAreNotDrawn) {
   MarkerSettings settings;
   settings.namespaces = {{"hidden", false}, {"shown", true}};

@@ -1,6 +1,7 @@
 // PointCloud2 and LaserScan messages from a bag written by other tools (tests/node/
 // make_cloud_bags.mjs: @mcap/core and Foxglove's CDR serialiser), decoded by the bag's own schema
-// and drawn by RViz's rules; and the bag whose cloud claims 10^8 points over 16 bytes.
+// and drawn by RViz's rules; the same messages in a .db3 without definitions, decoded by the .msg
+// texts urdfsnap ships; and the bag whose cloud claims 10^8 points over 16 bytes.
 #include <map>
 #include <memory>
 #include <string>
@@ -41,8 +42,11 @@ Decoded Messages(const std::string& bag) {
   return decoded;
 }
 
-TEST(PointCloudBagTest, CloudsAndScanFromABagWrittenByOtherTools) {
-  const auto messages = Messages("clouds.mcap");
+// clouds.mcap carries its definitions; clouds.db3, as rosbag2 before Jazzy writes SQLite, none
+class PointCloudBagTest : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PointCloudBagTest, CloudsAndScanFromABagWrittenByOtherTools) {
+  const auto messages = Messages(GetParam());
   const PointCloud2 rgb = DecodePointCloud2(messages.at("/cloud_rgb"));
   EXPECT_EQ(rgb.frame_id, "base_link");
   EXPECT_EQ(rgb.stamp_ns, 1'000'000'000);
@@ -67,7 +71,13 @@ TEST(PointCloudBagTest, CloudsAndScanFromABagWrittenByOtherTools) {
   EXPECT_NE(PointCloudReader(projected).Find("intensity"), -1);
 }
 
-TEST(PointCloudBagTest, CloudClaimingAHundredMillionPointsIsAnErrorNotAnAllocation) {
+INSTANTIATE_TEST_SUITE_P(WithAndWithoutDefinitions, PointCloudBagTest,
+                         ::testing::Values("clouds.mcap", "clouds.db3"),
+                         [](const ::testing::TestParamInfo<const char*>& bag) {
+                           return std::string(bag.param).substr(std::string(bag.param).find('.') + 1);
+                         });
+
+TEST(PointCloudLiarTest, CloudClaimingAHundredMillionPointsIsAnErrorNotAnAllocation) {
   const Decoded decoded = Messages("cloud_lies.mcap");
   const PointCloud2 liar = DecodePointCloud2(decoded.at("/cloud_rgb"));
   EXPECT_EQ(liar.width, 100'000'000u);

@@ -255,5 +255,35 @@ TEST(LaserScanTest, ProjectsKeptRangesAsLaserGeometryDoes) {
   EXPECT_EQ(reader.Value(i, 1), 7);
 }
 
+TEST(LaserScanTest, EachBeamIsPlacedAtItsOwnTimeAsTransformLaserScanToPointCloudDoes) {
+  // three beams of 1 m straight ahead, 10 ms apart, while the frame moves 1 m along x and turns
+  // 90 degrees: the middle beam gets half of both (slerp), the last all
+  LaserScan scan;
+  scan.frame_id = "laser";
+  scan.stamp_ns = 5'000'000'000;
+  scan.time_increment = 0.01f;
+  scan.range_max = 10;
+  scan.ranges = {1, 1, 1};
+  EXPECT_EQ(LastBeamStamp(scan), 5'020'000'000);
+  const Eigen::Isometry3d X_end = Eigen::Translation3d(1, 0, 0) * Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ());
+  const PointCloud2 cloud = ProjectLaserScan(scan, Eigen::Isometry3d::Identity(), X_end);
+  EXPECT_EQ(cloud.frame_id, "");
+  const PointCloudReader reader(cloud);
+  const int x = reader.Field("x"), y = reader.Field("y");
+  ASSERT_EQ(cloud.width, 3u);
+  EXPECT_NEAR(reader.Value(x, 0), 1, 1e-6);
+  EXPECT_NEAR(reader.Value(y, 0), 0, 1e-6);
+  EXPECT_NEAR(reader.Value(x, 1), 0.5 + std::sqrt(0.5), 1e-6);
+  EXPECT_NEAR(reader.Value(y, 1), std::sqrt(0.5), 1e-6);
+  EXPECT_NEAR(reader.Value(x, 2), 1, 1e-6);
+  EXPECT_NEAR(reader.Value(y, 2), 1, 1e-6);
+  // a stamp of 0 (the latest transform) or a time_increment that is no number keeps the stamp
+  scan.time_increment = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(LastBeamStamp(scan), scan.stamp_ns);
+  scan.stamp_ns = 0;
+  scan.time_increment = 0.01f;
+  EXPECT_EQ(LastBeamStamp(scan), 0);
+}
+
 }  // namespace
 }  // namespace urdfsnap::display

@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "common/error.h"
+#include "gl/internal/gpu_mesh.h"
 #include "gl/internal/shader_program.h"
 #include "texture/glyph_atlas.h"
 #include "front_view.h"
@@ -107,6 +108,62 @@ TEST_F(RendererTest, BackFacesAreCulled) {
   scene.items.push_back(item);
   const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
   EXPECT_EQ(Pixel(image, 32, 14), (Rgb{48, 48, 48}));
+}
+
+// A thin triangle in the x = 0 plane facing the camera, from the view's centre to 50 m away along
+// `direction` (in the image plane): the sphere around it is centred far outside the view.
+std::shared_ptr<const geometry::TriangleMesh> TriangleReachingIn(const Eigen::Vector3f& direction) {
+  const Eigen::Vector3f across = Eigen::Vector3f::UnitX().cross(direction);
+  geometry::TriangleMesh mesh;
+  mesh.positions = {-0.1f * direction - 0.1f * across, -0.1f * direction + 0.1f * across, 50 * direction};
+  if ((mesh.positions[1] - mesh.positions[0]).cross(mesh.positions[2] - mesh.positions[0]).x() < 0) {
+    std::swap(mesh.positions[0], mesh.positions[1]);   // counter-clockwise seen from the camera
+  }
+  mesh.normals.assign(3, Eigen::Vector3f::UnitX());
+  mesh.indices = {0, 1, 2};
+  return std::make_shared<const geometry::TriangleMesh>(mesh);
+}
+
+TEST_F(RendererTest, MeshesOutsideTheViewAreLeftOutAndThoseReachingInAreDrawn) {
+  const Eigen::Vector3f sides[] = {Eigen::Vector3f::UnitY(), -Eigen::Vector3f::UnitY(), Eigen::Vector3f::UnitZ(),
+                                   -Eigen::Vector3f::UnitZ()};
+  for (const Eigen::Vector3f& side : sides) {
+    for (const double mirror : {1.0, -1.0}) {
+      SCOPED_TRACE(testing::Message() << "reaching in from " << side.transpose() << ", mirror " << mirror);
+      Scene scene;
+      DrawItem item;
+      item.mesh = TriangleReachingIn(side);
+      item.link = 0;
+      // mirrored through the image plane's vertical axis, the winding and the side turn round
+      item.X_FG = Eigen::Affine3d(Eigen::Scaling(1.0, mirror, 1.0));
+      item.rgba = {1, 0.2f, 0, 1};
+      scene.items.push_back(item);
+      // and a mesh wholly outside, beside it, draws nothing
+      DrawItem outside = item;
+      outside.X_FG = Eigen::Translation3d(0, 0, 30) * item.X_FG;
+      scene.items.push_back(outside);
+      const image::Frame frame = renderer_->Render(scene, FrontView(), 64, 48, {true, false, true});
+      EXPECT_EQ(Pixel(frame.colour, 32, 24), (Rgb{255, 51, 0}));
+      EXPECT_EQ(frame.labels.labels[24 * 64 + 32], 1);   // the label pass draws it too
+      EXPECT_EQ(Pixel(frame.colour, 2, 2), (Rgb{48, 48, 48}));
+    }
+  }
+}
+
+TEST_F(RendererTest, ClipVolumeTestLeavesOutOnlyWhatCannotBeSeen) {
+  renderer_->Render(Scene{}, FrontView(), 64, 48);   // its context current here
+  const GpuMesh mesh(*UpperTriangle());
+  const Eigen::Matrix4d PV = ProjectionMatrix(FrontView(), 64.0 / 48) * ViewMatrix(FrontView());
+  const auto outside = [&](const Eigen::Affine3d& X) { return mesh.OutsideClipVolume(PV * X.matrix()); };
+  EXPECT_FALSE(outside(Eigen::Affine3d::Identity()));
+  EXPECT_TRUE(outside(Eigen::Affine3d(Eigen::Translation3d(0, 0, 30))));    // above
+  EXPECT_TRUE(outside(Eigen::Affine3d(Eigen::Translation3d(0, -30, 0))));   // to the left
+  EXPECT_TRUE(outside(Eigen::Affine3d(Eigen::Translation3d(5, 0, 0))));     // behind the camera
+  EXPECT_FALSE(outside(Eigen::Affine3d(Eigen::Translation3d(0, 0, -0.5))));  // partly in view
+  EXPECT_FALSE(outside(Eigen::Affine3d(Eigen::Scaling(1.0, 100.0, 1.0) * Eigen::Translation3d(0, 0.05, 0))));
+  geometry::TriangleMesh unsure = *UpperTriangle();
+  unsure.positions[0].x() = std::nanf("");
+  EXPECT_FALSE(GpuMesh(unsure).OutsideClipVolume(PV * Eigen::Affine3d(Eigen::Translation3d(0, 0, 30)).matrix()));
 }
 
 TEST_F(RendererTest, GridLinesBlendAtHalfAlphaAsRvizMeasured) {

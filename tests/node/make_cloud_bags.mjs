@@ -2,8 +2,10 @@
 // and Foxglove's ROS 2 CDR serialiser: the mrm arm (its description on /robot_description, zero
 // joint states, /tf_static base_link -> lidar) with a PointCloud2 coloured by rgb (/cloud_rgb), one
 // coloured by intensity (/cloud_intensity) and a LaserScan with intensities (/scan), all at
-// t = 1 s; and a 10 Hz cloud for animations (clouds_10hz.mcap, POINTS points per message).
+// t = 1 s, also as a rosbag2 SQLite file without definitions (clouds.db3, through write_db3.py);
+// and a 10 Hz cloud for animations (clouds_10hz.mcap, POINTS points per message).
 // usage: node make_cloud_bags.mjs OUT_DIR [POINTS]   (POINTS defaults to 2000)
+import { execFileSync } from "node:child_process";
 import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -135,13 +137,21 @@ const scan = {
   ranges: Array.from({ length: 181 }, (_, i) => (i % 30 === 0 ? Infinity : 1 + 0.5 * Math.sin(i / 10))),
   intensities: Array.from({ length: 181 }, (_, i) => i),
 };
-await write("clouds.mcap",
-  [...robotChannels, channel("/cloud_rgb", "sensor_msgs/msg/PointCloud2"),
-   channel("/cloud_intensity", "sensor_msgs/msg/PointCloud2"), channel("/scan", "sensor_msgs/msg/LaserScan")],
-  [...robotMessages(t1),
-   [3, t1, writers["sensor_msgs/msg/PointCloud2"].writeMessage(cloud("base_link", ["x", "y", "z", "rgb"], rgbPoints))],
-   [4, t1, writers["sensor_msgs/msg/PointCloud2"].writeMessage(cloud("base_link", ["x", "y", "z", "intensity"], intensityPoints))],
-   [5, t1, writers["sensor_msgs/msg/LaserScan"].writeMessage(scan)]]);
+const cloudChannels = [...robotChannels, channel("/cloud_rgb", "sensor_msgs/msg/PointCloud2"),
+  channel("/cloud_intensity", "sensor_msgs/msg/PointCloud2"), channel("/scan", "sensor_msgs/msg/LaserScan")];
+const cloudMessages = [...robotMessages(t1),
+  [3, t1, writers["sensor_msgs/msg/PointCloud2"].writeMessage(cloud("base_link", ["x", "y", "z", "rgb"], rgbPoints))],
+  [4, t1, writers["sensor_msgs/msg/PointCloud2"].writeMessage(cloud("base_link", ["x", "y", "z", "intensity"], intensityPoints))],
+  [5, t1, writers["sensor_msgs/msg/LaserScan"].writeMessage(scan)]];
+await write("clouds.mcap", cloudChannels, cloudMessages);
+// the same messages as rosbag2's SQLite storage before Jazzy writes them: type names, no definitions
+const db3Spec = join(out, "clouds_db3.json");
+writeFileSync(db3Spec, JSON.stringify([{
+  file: join(out, "clouds.db3"),
+  topics: cloudChannels.map(({ topic, type }, i) => [i + 1, topic, type, "cdr"]),
+  messages: cloudMessages.map(([c, time, data]) => [c + 1, Number(time), Buffer.from(data).toString("hex")]),
+}]));
+execFileSync("python3", [join(dirname(fileURLToPath(import.meta.url)), "write_db3.py"), db3Spec]);
 
 // a cloud that lies: 10^8 points claimed over 16 bytes of data
 const liar = { ...cloud("base_link", ["x", "y", "z", "rgb"], [[0, 0, 0, 0]]), width: 100_000_000 };

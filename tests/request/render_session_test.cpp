@@ -1,5 +1,5 @@
 // The render session: a request prepared once and drawn with per-frame changes as values (no file
-// read again), each mesh decoded once per process, the files a model read (for a live view's
+// read again), each mesh and texture decoded once per process, the files a model read (for a live view's
 // reload), forgetting models after an edit, caches that stay bounded over many models, and the
 // outputs asked for (gl).
 #include "request/render_session.h"
@@ -96,6 +96,29 @@ TEST(RenderSession, DecodesEachMeshOncePerProcess) {
   ASSERT_EQ(scene_a.items.size(), 1u);
   ASSERT_EQ(scene_b.items.size(), 1u);
   EXPECT_EQ(scene_a.items[0].mesh.get(), scene_b.items[0].mesh.get());
+}
+
+TEST(RenderSession, DecodesEachTextureOncePerProcess) {
+  URDFSNAP_REQUIRE_GL();
+  // texbot: a URDF <texture> on its primitives and an OBJ whose material has a texture map
+  const fs::path texbot = fs::path(URDFSNAP_SOURCE_DIR) / "tests/data/texbot_description";
+  RenderRequest request = TopView((texbot / "urdf/texbot.urdf").string());
+  request.model.packages["texbot_description"] = texbot.string();
+  Warnings warnings;
+  RenderSession one, two;
+  const Prepared a = one.Prepare(request, CommandLineLabel, warnings);
+  const Prepared b = two.Prepare(request, CommandLineLabel, warnings);
+  ASSERT_NE(a.renderer, b.renderer);
+  const scene::Scene scene_a = a.renderer->Pose(a.positions);
+  const scene::Scene scene_b = b.renderer->Pose(b.positions);
+  ASSERT_EQ(scene_a.items.size(), scene_b.items.size());
+  int textured = 0;
+  for (size_t i = 0; i < scene_a.items.size(); ++i) {
+    if (!scene_a.items[i].texture) continue;
+    ++textured;
+    EXPECT_EQ(scene_a.items[i].texture.get(), scene_b.items[i].texture.get()) << "item " << i;
+  }
+  EXPECT_GE(textured, 4);
 }
 
 TEST(RenderSession, RenderReturnsTheRobotWithTheFrame) {

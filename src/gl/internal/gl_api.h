@@ -63,6 +63,7 @@
   X(PFNGLGETACTIVEUNIFORMPROC, glGetActiveUniform)                    \
   X(PFNGLGETERRORPROC, glGetError)                                    \
   X(PFNGLGETINTEGERVPROC, glGetIntegerv)                              \
+  X(PFNGLGETMULTISAMPLEFVPROC, glGetMultisamplefv)                    \
   X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                  \
   X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                            \
   X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                    \

@@ -2,14 +2,16 @@
 // and its materials in ogre_media/materials): Points as GL points of N pixels, Squares, Flat
 // Squares and Spheres as camera-facing squares, Boxes as shaded boxes along the set's axes. The points
 // are streamed in batches, four vertices per square and 24 per box sharing one index buffer, so
-// the GPU memory stays bounded however many points a set holds. Internal to the render library;
-// needs a current GL context.
+// the GPU memory stays bounded however many points a set holds. Opaque camera-facing sets are
+// splatted on the CPU instead (point_splat.h) and composited by one draw. Internal to the render
+// library; needs a current GL context.
 #pragma once
 
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "gl/internal/point_splat.h"
 #include "gl/internal/shader_program.h"
 #include "scene/scene.h"
 
@@ -25,8 +27,13 @@ class PointSetDrawing {
   // Draws `points` (in the fixed frame) seen through view matrix `V` and projection `P` with the
   // blending and depth writes the caller has set. Leaves back-face culling on.
   void Draw(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P);
+  // Draws the opaque `sets` into the bound framebuffer (depth-tested, writing depth, not blending):
+  // the camera-facing ones splatted together and composited once, Boxes through Draw.
+  void DrawOpaque(const std::vector<const scene::PointSet*>& sets, const Eigen::Matrix4d& V,
+                  const Eigen::Matrix4d& P);
 
  private:
+  void Composite();
   void Upload(const scene::PointSet& points, size_t first, size_t count, int copies);
   ShaderProgram point_;
   ShaderProgram quad_;
@@ -34,6 +41,11 @@ class PointSetDrawing {
   unsigned vertex_array_ = 0;
   unsigned buffers_[2] = {0, 0};   // vertices (streamed), quad indices (fixed)
   std::vector<unsigned char> staging_;
+  ShaderProgram splat_program_;
+  PointSplat splat_;
+  unsigned splat_array_ = 0;                    // empty: the full-screen triangle has no attributes
+  unsigned splat_texture_ = 0;                  // PointSplat's texels
+  int texture_size_[2] = {0, 0};                // their width and height in texels
 };
 
 }  // namespace urdfsnap::gl

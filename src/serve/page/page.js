@@ -89,6 +89,7 @@ function pageOptions() {
 
 function frameQuery() {
   const query = new URLSearchParams(pageOptions());
+  if (page.recording) query.set('at', num(Number($('at').value)));
   for (const [name, value] of page.joints) query.set('j.' + name, num(value));
   return query.toString();
 }
@@ -120,6 +121,7 @@ function wireControls() {
     requestFrame();
   });
   $('size').addEventListener('change', (e) => { page.options.size = e.target.value; requestFrame(); });
+  $('at').addEventListener('input', (e) => { $('at-value').textContent = num(Number(e.target.value)) + ' s'; requestFrame(); });
   let resizing = null;
   window.addEventListener('resize', () => {
     clearTimeout(resizing);
@@ -516,6 +518,10 @@ async function initialView() {
     try {
       const status = await (await fetch('api/status', {cache: 'no-store'})).json();
       page.modelError = status.error ?? '';
+      // a recording: a time slider over its length
+      page.recording = status.recording;
+      $('at-control').hidden = !status.recording;
+      if (status.recording) $('at').max = status.recording.duration;
       if (!status.error) {
         const response = await fetch('api/view', {cache: 'no-store'});
         if (response.ok) return response.json();

@@ -1,6 +1,6 @@
 // /api/robot's joint table follows joint_state_publisher_gui: movable joints only, ±π for
 // continuous joints, its default value, mimic joints marked.
-#include "serve/robot_json.h"
+#include "serve/page_robot_json.h"
 
 #include <numbers>
 
@@ -24,10 +24,10 @@ constexpr const char* kUrdf = R"(<?xml version="1.0"?>
     <mimic joint="tilt" multiplier="2" offset="0.5"/></joint>
 </robot>)";
 
-TEST(RobotJson, JointStatePublisherRules) {
+TEST(PageRobotJson, JointStatePublisherRules) {
   Warnings warnings;
   const model::Robot robot = model::LoadRobot(kUrdf, "rig.urdf", warnings);
-  const auto json = nlohmann::json::parse(RobotJson(robot, {"a warning"}));
+  const auto json = nlohmann::json::parse(PageRobotJson(robot, {"a warning"}));
   EXPECT_EQ(json["name"], "rig");
   EXPECT_EQ(json["warnings"], nlohmann::json::array({"a warning"}));
   const auto& joints = json["joints"];

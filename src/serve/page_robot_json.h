@@ -14,6 +14,6 @@ namespace urdfsnap::serve {
 // joints; the default is the value it starts at (0, or the middle of the limits when 0 is
 // outside them); a mimic joint has "mimic": {"joint", "multiplier", "offset"} and gets no slider
 // (it follows its leader), the others "mimic": null. Joints in document order.
-std::string RobotJson(const model::Robot& robot, const std::vector<std::string>& warnings);
+std::string PageRobotJson(const model::Robot& robot, const std::vector<std::string>& warnings);
 
 }  // namespace urdfsnap::serve

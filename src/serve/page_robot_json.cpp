@@ -1,5 +1,5 @@
 // The joint table and link names of /api/robot, built with nlohmann::json.
-#include "serve/robot_json.h"
+#include "serve/page_robot_json.h"
 
 #include <numbers>
 
@@ -9,7 +9,7 @@
 
 namespace urdfsnap::serve {
 
-std::string RobotJson(const model::Robot& robot, const std::vector<std::string>& warnings) {
+std::string PageRobotJson(const model::Robot& robot, const std::vector<std::string>& warnings) {
   // joint_state_publisher's start values are what ResolveJointPositions gives for no values
   Warnings ignored;
   const std::vector<double> defaults = model::ResolveJointPositions(robot, {}, true, ignored);

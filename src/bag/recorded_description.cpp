@@ -1,6 +1,6 @@
 // ReadRobotDescription: ReadBagMessages on one topic, its size checked before it is decoded, the
 // first message kept (the bag is read to its end: rosbag2 gives no way to stop a read early).
-#include "bag/robot_description.h"
+#include "bag/recorded_description.h"
 
 #include <map>
 #include <optional>

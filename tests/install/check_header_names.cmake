@@ -1,0 +1,27 @@
+# No two headers under src/ share a file name: a name says what a header holds, so two rooms'
+# headers of one name (model/robot_json.h beside serve/robot_json.h) hold two things under one
+# name. Lists each shared name with its headers and fails.
+# usage: cmake -DSOURCE_DIR=<src folder> -P check_header_names.cmake
+file(GLOB_RECURSE headers RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/*.h)
+list(SORT headers)
+set(names)
+foreach(header ${headers})
+  get_filename_component(name ${header} NAME)
+  list(APPEND names ${name})
+  list(APPEND headers_named_${name} ${header})
+endforeach()
+list(REMOVE_DUPLICATES names)
+set(shared)
+foreach(name ${names})
+  list(LENGTH headers_named_${name} count)
+  if(count GREATER 1)
+    list(JOIN headers_named_${name} ", " places)
+    list(APPEND shared "${name}: ${places}")
+  endif()
+endforeach()
+list(LENGTH headers header_count)
+if(shared)
+  list(JOIN shared "\n  " lines)
+  message(FATAL_ERROR "headers of one name under ${SOURCE_DIR}:\n  ${lines}")
+endif()
+message(STATUS "${header_count} headers under ${SOURCE_DIR}, no two of one name")
