@@ -2,6 +2,7 @@
 #include "camera/camera_info.h"
 
 #include <cmath>
+#include <optional>
 
 #include <yaml-cpp/yaml.h>
 
@@ -92,6 +93,31 @@ Intrinsics CameraInfo::RectifiedIntrinsics() const {
   return {P(0, 0), P(1, 1), P(0, 2), P(1, 2)};
 }
 
+namespace {
+
+// "the focal lengths fx and fy must be positive, got 0 and 500" unless they are.
+std::optional<std::string> FocalProblem(const Intrinsics& k) {
+  if (k.fx > 0 && k.fy > 0) return std::nullopt;
+  return "the focal lengths fx and fy must be positive, got " + FormatNumber(k.fx) + " and " + FormatNumber(k.fy);
+}
+
+}  // namespace
+
+void CheckCameraInfoMessage(CameraInfo& info, const std::string& where) {
+  if (info.width < 1 || info.height < 1 || info.width > image::kMaxImageSide || info.height > image::kMaxImageSide) {
+    throw Error(where + ": camera image size " + image::SizeText(info.width, info.height) + " is outside 1x1 to " +
+                image::SizeText(image::kMaxImageSide, image::kMaxImageSide));
+  }
+  std::string why;
+  const std::optional<Distortion> distortion = MakeDistortion(info.distortion_model, info.D, why);
+  if (!distortion) throw Error(where + ": " + why);
+  info.distortion = *distortion;
+  if (const auto problem = FocalProblem(info.RawIntrinsics())) throw Error(where + ": k: " + *problem);
+  if (!info.P.isZero()) {
+    if (const auto problem = FocalProblem(info.RectifiedIntrinsics())) throw Error(where + ": p: " + *problem);
+  }
+}
+
 CameraInfo ParseCameraInfo(std::string_view text, const std::string& path) {
   // `ros2 topic echo` ends each message with "---"; the first document is the message
   YAML::Node root = LoadYaml(std::string(text), path);
@@ -120,10 +146,9 @@ CameraInfo ParseCameraInfo(std::string_view text, const std::string& path) {
   if (header.IsMap() && header["frame_id"].IsScalar()) info.frame_id = header["frame_id"].Scalar();
 
   const auto check_focal = [&](const Intrinsics& k, std::initializer_list<const char*> keys) {
-    if (!(k.fx > 0) || !(k.fy > 0)) {
+    if (const auto problem = FocalProblem(k)) {
       const auto [node, key] = r.Find(keys);
-      r.Fail(node, key + ": the focal lengths fx and fy must be positive, got " + FormatNumber(k.fx) +
-                       " and " + FormatNumber(k.fy));
+      r.Fail(node, key + ": " + *problem);
     }
   };
   check_focal(info.RawIntrinsics(), kIntrinsicKeys);

@@ -33,6 +33,12 @@ struct CameraInfo {
   Intrinsics RectifiedIntrinsics() const;
 };
 
+// Checks a CameraInfo made from a sensor_msgs/CameraInfo message (`where` names it) as
+// ParseCameraInfo checks a file, and fills in `distortion` from distortion_model and D. Throws
+// urdfsnap::Error "WHERE: ..." for a size outside 1 to kMaxImageSide, an unsupported distortion
+// model or coefficient count, or a non-positive focal length.
+void CheckCameraInfoMessage(CameraInfo& info, const std::string& where);
+
 // Reads the CameraInfo file at `path`. Throws urdfsnap::Error "PATH:LINE: ..." naming the key for
 // an unreadable file, bad YAML, a missing or malformed size or matrix, a non-positive focal
 // length, an unsupported distortion model or a coefficient count that does not fit it.

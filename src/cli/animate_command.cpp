@@ -41,7 +41,6 @@
 #include "request/request_inputs.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
-#include "tf/bag_transforms.h"
 #include "video/frame_encoder.h"
 #include "video/numbered_files.h"
 #include "video/open_frame_encoder.h"
@@ -159,7 +158,6 @@ struct PreparedAnimation {
   motion::Trajectory trajectory;
   motion::FramePlan plan;
   std::optional<motion::FramePoses> poses;
-  std::optional<motion::RootPoses> camera_tf;   // where the bag's TF puts the robot from a --camera-frame outside it
   std::optional<animation::AnimationFrames> frames;
 };
 
@@ -193,21 +191,13 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
                 "draws with --bag " + o.trajectory + " --at SECONDS");
   }
   const render::RenderSettings& settings = robot.settings;
-  // a camera frame outside the robot (a camera's optical frame in the bag's TF) moves per frame
-  if (settings.camera && !settings.camera->frame.empty() && robot.robot->FindLink(settings.camera->frame) < 0 &&
-      bag) {
-    a.camera_tf.emplace(!a.scene.transforms->frames().empty() ? a.scene.transforms
-                                           : std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(o.trajectory)),
-                        settings.camera->frame, robot.robot->links().front().name,
-                        a.trajectory.stamp_at_zero.value_or(0), o.trajectory, "--camera-frame");
-    if (!o.print_frame.empty()) {
-      throw Error("--print-frame: the camera is placed by TF from '" + settings.camera->frame +
-                  "', which `render` cannot do");
-    }
+  if (a.scene.camera_tf && !o.print_frame.empty()) {
+    throw Error("--print-frame: the camera is placed by TF from '" + settings.camera->frame +
+                "', which `render` draws with --bag " + o.trajectory + " --at SECONDS");
   }
   a.frames.emplace(*robot.renderer, a.plan, *a.poses,
                    animation::CameraRequest{settings.view, settings.size, fit, settings.fit_margin, o.turntable, settings.camera,
-                                            a.camera_tf ? &*a.camera_tf : nullptr},
+                                            a.scene.camera_tf ? &*a.scene.camera_tf : nullptr},
                    warnings, a.scene.Additions());
 }
 

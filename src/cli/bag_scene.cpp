@@ -38,8 +38,10 @@ void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest r
   const std::string root = robot.links().front().name;
   // the bag's TF is read only when something shows it: a bag's /tf need not be readable otherwise
   const bool tf_fixed_frame = !bag.empty() && !fixed_frame.empty() && robot.FindLink(fixed_frame) < 0;
-  const bool tf_shown =
-      tf_fixed_frame || tf_options.enabled || (!target_frame.empty() && robot.FindLink(target_frame) < 0);
+  const std::optional<render::CameraSettings>& camera = resolved.settings.camera;
+  const bool tf_camera = !bag.empty() && camera && !camera->frame.empty() && robot.FindLink(camera->frame) < 0;
+  const bool tf_shown = tf_fixed_frame || tf_camera || tf_options.enabled ||
+                        (!target_frame.empty() && robot.FindLink(target_frame) < 0);
   out.transforms = std::make_shared<const tf::TfBuffer>(!bag.empty() && tf_shown ? tf::ReadBagTransforms(bag)
                                                                                  : tf::TfBuffer());
   if (tf_fixed_frame) {
@@ -54,6 +56,7 @@ void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest r
     resolved.fixed_frame_given = fixed_frame_given;
     out.robot = session.Prepare(resolved, warnings);
   }
+  if (tf_camera) out.camera_tf.emplace(out.transforms, camera->frame, root, stamp_at_zero, bag, "--camera-frame");
   const motion::TfDisplayFrames frames(*out.robot.robot, out.transforms, stamp_at_zero, bag);
   if (tf_options.enabled) out.tf.emplace(frames, tf_options);
   if (target_frame.empty()) return;

@@ -2,7 +2,8 @@
 // Fixed Frame) resolved through the bag's TF when it is not a link of the robot (odom, map: the
 // robot is then placed where TF puts its root at each moment), the TF display showing the bag's
 // frames, robot and others, and the view's Target Frame (--follow) followed through the motion.
-// Shared by `animate` (with or without a bag) and `render --bag`.
+// A camera (--camera-frame) may hang off a frame of the bag's TF. Shared by `animate` (with or
+// without a bag) and `render --bag`.
 #pragma once
 
 #include <memory>
@@ -28,6 +29,9 @@ struct BagScene {
   std::optional<motion::RootPoses> root;   // set for a fixed frame outside the robot
   std::optional<animation::TfDisplay> tf;  // set when the TF display is on
   std::optional<animation::FollowedFrame> follow;   // set for a target frame
+  // set for a camera whose --camera-frame is a frame of the bag's TF, not a link: where TF puts
+  // the robot's root in it at each moment (animation::CameraRequest::camera_tf)
+  std::optional<motion::RootPoses> camera_tf;
   std::optional<animation::FrameDisplays> displays;   // set for message displays (AddSceneDisplays)
 
   // What the scene adds to each frame, for animation::AnimationFrames (which feeds the displays).

@@ -1,8 +1,9 @@
 // `render --bag FILE --at SECONDS`: one still of a recording as a player shows it at that moment.
 // The robot is the bag's /robot_description when no MODEL is given; its joints take the latest
-// /joint_states value at or before the time, and TF (the fixed frame, the TF display) is looked up
-// as tf2 does at that time. The still is frame 0 of a one-frame animation (animation::
-// AnimationFrames), so that it is exactly what `animate --start SECONDS` draws first.
+// /joint_states value at or before the time, and TF (the fixed frame, the TF display, a
+// --camera-frame of the bag's TF) is looked up as tf2 does at that time. The still is frame 0 of a
+// one-frame animation (animation::AnimationFrames), so that it is exactly what `animate --start
+// SECONDS` draws first.
 #pragma once
 
 #include <optional>
@@ -30,8 +31,11 @@ struct BagStillOptions {
   std::string at;    // --at, checked as a number when the still is made
   std::string topic = bag::kDefaultJointStateTopic;
   std::string description_topic = bag::kDefaultDescriptionTopic;
+  std::string underlay_topic;   // --underlay-topic: the camera image behind the robot, "" for none
+  std::string camera_info_topic;   // --camera-info-topic: the camera's calibration, "" for none
 
-  // Adds --bag, --at, --topic and --description-topic to `command`.
+  // Adds --bag, --at, --topic, --description-topic, --underlay-topic and --camera-info-topic to
+  // `command`.
   void AddOptions(CLI::App& command);
 };
 
@@ -43,7 +47,10 @@ class BagStill {
   // (also one outside the recording) and as the bag's readers and RenderSession::Prepare do.
   // `model_from_bag`: the request's model is the description the bag recorded (see PrepareBagScene).
   // The message displays of the .rviz file and `displays` show the bag's messages up to the moment
-  // (AddSceneDisplays).
+  // (AddSceneDisplays). With --underlay-topic the camera's underlay is that topic's image at the
+  // moment (ReadBagCameraImage), with --camera-info-topic its calibration the topic's CameraInfo
+  // then (ReadBagCameraInfo); each an error beside --underlay or --camera-info, and the underlay
+  // without a camera.
   BagStill(const BagStillOptions& options, request::RenderSession& session, const request::RenderRequest& request,
            bool model_from_bag, const DisplayOptions& displays, Warnings& warnings);
   BagStill(const BagStill&) = delete;

@@ -2,7 +2,7 @@
 #include "cli/ignored_options.h"
 
 #include "bag/joint_state_bag.h"
-#include "bag/robot_description.h"
+#include "bag/recorded_description.h"
 
 namespace urdfsnap::cli {
 

@@ -45,7 +45,8 @@ CameraFiles ReadCameraFiles(const RenderRequest& r) {
 
 std::optional<render::CameraSettings> ParseCameraSettings(const RenderRequest& r, const CameraFiles& files,
                                                           const OptionLabel& label, render::RenderSettings& settings) {
-  if (r.camera_info.empty() && r.camera_frame.empty() && r.camera_pose.empty()) {
+  // a calibration may come from elsewhere than --camera-info's file (render --bag's topic)
+  if (!files.info && r.camera_frame.empty() && r.camera_pose.empty()) {
     for (const auto& [given, name] : {std::pair{!r.near.empty(), "near"}, {!r.far.empty(), "far"},
                                       {r.distort, "distort"}, {!r.underlay.empty(), "underlay"},
                                       {!r.underlay_alpha.empty(), "underlay-alpha"}}) {
@@ -56,7 +57,7 @@ std::optional<render::CameraSettings> ParseCameraSettings(const RenderRequest& r
     }
     return std::nullopt;
   }
-  if (r.distort && r.camera_info.empty()) {
+  if (r.distort && !files.info) {
     throw Error(label("distort") + " needs " + label("camera-info") + " (the lens's distortion coefficients)");
   }
   camera::Clipping clipping;

@@ -26,7 +26,7 @@ struct CameraFiles {
 CameraFiles ReadCameraFiles(const RenderRequest& request);
 
 // The camera `request` asks for, or nullopt when it names none (no --camera-info, --camera-frame
-// or --camera-pose). Without --camera-info the camera has square pixels, the principal point at
+// or --camera-pose; a calibration in `files.info` counts as --camera-info). Without --camera-info the camera has square pixels, the principal point at
 // the centre and `settings.view`'s field of view at `settings.size`; with it, `settings.size`
 // becomes the calibration's. `files` must be ReadCameraFiles of a request naming the same files;
 // reads no file. Throws urdfsnap::Error naming the option through `label` for a bad value, a

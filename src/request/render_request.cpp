@@ -49,7 +49,7 @@ const std::array kTextOptions{
                &R::camera_info, true},
     TextOption{"camera-frame",
                "link the camera is attached to, in ROS's optical convention: z forward, x right, y "
-               "down (default: the fixed frame)",
+               "down; with a bag also a frame of its TF (default: the fixed frame)",
                &R::camera_frame, false},
     TextOption{"camera-pose",
                "camera pose X,Y,Z,QX,QY,QZ,QW in m (optical convention) in the camera frame, or in "

@@ -487,7 +487,7 @@ TEST_F(AnimateTest, ACameraFrameOutsideTheRobotFollowsTheBagsTf) {
   EXPECT_GT(Apart(RobotCentre(image::ReadPng(Path("c/0.png"))), RobotCentre(image::ReadPng(Path("c/4.png")))), 35);
   const Result words = RunUrdfsnap("animate " + rover + camera + " --print-frame 1");
   EXPECT_EQ(words.output, "urdfsnap: error: --print-frame: the camera is placed by TF from 'odom', which `render` "
-                          "cannot do\n");
+                          "draws with --bag " + rover + " --at SECONDS\n");
   // a frame TF does not connect to the robot
   const Result other = RunUrdfsnap("animate " + rover + " --camera-frame map -o " + Path("map/%d.png"));
   EXPECT_EQ(other.status, 2);

@@ -92,6 +92,27 @@ TEST_F(BagRenderTest, AStillIsTheFrameAnimateDrawsAtThatMoment) {
   }
 }
 
+TEST_F(BagRenderTest, ACameraInTheBagsTfIsPlacedAtTheMoment) {
+  // a camera fixed in odom 6 m above the loop's centre, looking down: animate moves it per frame
+  // through the bag's TF (tests/cli/animate_test.cpp); the still at 4 s is animate's frame 4 in
+  // every image, byte for byte
+  const std::string bag = test::TestBag("rover_loop.mcap");
+  const std::string camera = " --camera-frame odom --camera-pose 0,1,6,1,0,0,0 --size 160x120 --no-grid";
+  Ok("animate " + bag + camera + " --fps 1 -o " + Path("a/%d.png") + " --depth " + Path("d/%d.png") +
+     " --keypoints " + Path("k/%d.json"));
+  Ok("render --bag " + bag + " --at 4" + camera + " -o " + Path("still.png") + " --depth " + Path("still_d.png") +
+     " --keypoints " + Path("still.json"));
+  EXPECT_EQ(ReadBytes(Path("a/4.png")), ReadBytes(Path("still.png")));
+  EXPECT_EQ(ReadBytes(Path("d/4.png")), ReadBytes(Path("still_d.png")));
+  EXPECT_EQ(ReadBytes(Path("k/4.json")), ReadBytes(Path("still.json")));
+  // the rover has moved 2 m across the picture since 0 s
+  const Centre start = RobotCentre(image::DecodePng(Render("--bag " + bag + " --at 0" + camera), "start"));
+  const Centre now = RobotCentre(image::ReadPng(Path("still.png")));
+  ASSERT_GT(now.pixels, 100);
+  EXPECT_GT(std::hypot(now.x - start.x, now.y - start.y), 35);
+  Fails("render --bag " + bag + " --camera-frame map", "--camera-frame 'map': neither a link of the robot nor a frame");
+}
+
 TEST_F(BagRenderTest, TheTfDisplayShowsTheBagsFramesBesideTheRobots) {
   // at 4 s the rover is across the loop, 2 m from odom; with the TF display odom's axes and name,
   // and the arrow from base_link to it, are drawn away from the robot

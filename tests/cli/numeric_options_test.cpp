@@ -164,6 +164,8 @@ const std::vector<CommandOption>& Options() {
         {"render", "--at", Kind::kText},
         {"render", "--topic", Kind::kText},
         {"render", "--description-topic", Kind::kText},
+        {"render", "--underlay-topic", Kind::kText},
+        {"render", "--camera-info-topic", Kind::kText},
         {"render", "--keypoints", Kind::kText},
         {"render", "--mask-dilate", Kind::kNumber, "MRM -o OUT --mask M.png --mask-dilate {v}"},
         {"animate", "--mask", Kind::kText},

@@ -11,6 +11,7 @@
 // log time = stamp + 1 ms, and positions shoulder = 0.01 i, elbow = -0.02 i, wrist = 0.5 (the C++
 // tests recompute these).
 import { execFileSync } from "node:child_process";
+import zlib from "node:zlib";
 import { mkdirSync, writeFileSync, readFileSync, rmSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -317,6 +318,95 @@ const tfBags = {
 for (const [name, messages] of Object.entries(tfBags)) {
   writeFileSync(join(out, name), await writeBag({ channels: tfChannels, messages }));
 }
+// Camera images of 40x24 pixels for the underlay tests (tests/cli/bag_underlay_test.cpp recomputes
+// them): picture A at 0 s, picture B at 1 s on /camera/rgb8 (rows padded by 4 bytes); picture A in
+// every other encoding RViz shows, as a PNG and tests/data/jpeg/gradients.jpg (40x24) as
+// CompressedImage; and hostile messages (a step that lies, data too short, an unknown encoding);
+// CameraInfo messages.
+const kCameraWidth = 40, kCameraHeight = 24;
+function picture(x, y, b) {
+  return b ? [255 - x * 6, 255 - y * 10, x * 6] : [x * 6, y * 10, 255 - x * 6];
+}
+function pngFile(width, height, rgb) {
+  const chunk = (type, data) => {
+    const body = Buffer.concat([Buffer.from(type, "latin1"), data]);
+    const length = Buffer.alloc(4);
+    length.writeUInt32BE(data.length);
+    const crc = Buffer.alloc(4);
+    crc.writeUInt32BE(zlib.crc32(body));
+    return Buffer.concat([length, body, crc]);
+  };
+  const header = Buffer.alloc(13);
+  header.writeUInt32BE(width, 0);
+  header.writeUInt32BE(height, 4);
+  header.set([8, 2, 0, 0, 0], 8);   // 8-bit RGB
+  const rows = [];
+  for (let y = 0; y < height; ++y) rows.push(Buffer.from([0]), Buffer.from(rgb.subarray(y * width * 3, (y + 1) * width * 3)));
+  return Buffer.concat([Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]), chunk("IHDR", header),
+    chunk("IDAT", zlib.deflateSync(Buffer.concat(rows))), chunk("IEND", Buffer.alloc(0))]);
+}
+function cameraImages() {
+  const imageWriter = new MessageWriter([ros2humble["sensor_msgs/Image"], ros2humble["std_msgs/Header"], ros2humble["builtin_interfaces/Time"]]);
+  const compressedWriter = new MessageWriter([ros2humble["sensor_msgs/CompressedImage"], ros2humble["std_msgs/Header"], ros2humble["builtin_interfaces/Time"]]);
+  const w = kCameraWidth, h = kCameraHeight;
+  // pixel bytes of picture A or B: `pixel(rgb, x, y)` gives one pixel's bytes; rows padded by `pad`
+  const pixels = (pixel, bytes, pad = 0, b = false) => {
+    const data = new Uint8Array((w * bytes + pad) * h);
+    for (let y = 0; y < h; ++y) for (let x = 0; x < w; ++x) data.set(pixel(picture(x, y, b), x, y), y * (w * bytes + pad) + x * bytes);
+    return data;
+  };
+  const image = (encoding, bytes, data, { step = w * bytes, height = h, is_bigendian = 0 } = {}) => (sec) =>
+    imageWriter.writeMessage({ header: { stamp: { sec, nanosec: 0 }, frame_id: "camera" }, height, width: w, encoding, is_bigendian, step, data });
+  const grey = (x, y) => 5 * x + y;   // mono8 and the 16/32-bit scaled images: one value per pixel
+  const word16 = (v, big) => (big ? [v >> 8, v & 255] : [v & 255, v >> 8]);
+  const float32 = (v) => new Uint8Array(new Float32Array([v]).buffer);
+  const jpeg = readFileSync(join(dirname(fileURLToPath(import.meta.url)), "../data/jpeg/gradients.jpg"));
+  const topics = {
+    "/camera/rgb8": [image("rgb8", 3, pixels((p) => p, 3, 4), { step: w * 3 + 4 }),
+                     image("rgb8", 3, pixels((p) => p, 3, 4, true), { step: w * 3 + 4 })],
+    "/camera/bgr8": [image("bgr8", 3, pixels(([r, g, b]) => [b, g, r], 3))],
+    "/camera/rgba8": [image("rgba8", 4, pixels(([r, g, b]) => [r, g, b, 7], 4))],
+    "/camera/bgra8": [image("bgra8", 4, pixels(([r, g, b]) => [b, g, r, 7], 4))],
+    "/camera/mono8": [image("mono8", 1, pixels((p, x, y) => [grey(x, y)], 1))],
+    "/camera/mono16": [image("mono16", 2, pixels((p, x, y) => word16(1000 + 10 * grey(x, y), true), 2), { is_bigendian: 1 })],
+    "/camera/depth": [image("32FC1", 4, pixels((p, x, y) => float32(x === 0 && y === 0 ? NaN : 0.5 + grey(x, y) / 1000), 4))],
+    "/camera/short": [image("rgb8", 3, pixels((p) => p, 3).subarray(0, w * 3 * h - 1))],
+    "/camera/step_lies": [image("rgb8", 3, pixels((p) => p, 3), { step: w * 3 - 1 })],
+    "/camera/huge": [image("rgb8", 3, new Uint8Array(12), { height: 4000000000 })],
+    "/camera/yuv": [image("yuv422", 2, pixels(() => [0, 0], 2))],
+  };
+  const compressed = {
+    "/camera/png": compressedWriter.writeMessage({ header: { stamp: { sec: kStartSec, nanosec: 0 }, frame_id: "camera" }, format: "png", data: pngFile(w, h, pixels((p) => p, 3)) }),
+    "/camera/jpeg": compressedWriter.writeMessage({ header: { stamp: { sec: kStartSec, nanosec: 0 }, frame_id: "camera" }, format: "jpeg", data: jpeg }),
+    "/camera/not_an_image": compressedWriter.writeMessage({ header: { stamp: { sec: kStartSec, nanosec: 0 }, frame_id: "camera" }, format: "tiff", data: new Uint8Array(64) }),
+  };
+  // a calibration of the 40x24 camera (tests/cli/bag_underlay_test.cpp repeats it as a file), and
+  // one whose focal length is zero
+  const infoWriter = new MessageWriter([ros2humble["sensor_msgs/CameraInfo"], ros2humble["sensor_msgs/RegionOfInterest"],
+    ros2humble["std_msgs/Header"], ros2humble["builtin_interfaces/Time"]]);
+  const info = (fx) => infoWriter.writeMessage({
+    header: { stamp: { sec: kStartSec, nanosec: 0 }, frame_id: "camera" }, height: h, width: w,
+    distortion_model: "plumb_bob", d: [-0.2, 0.05, 0.001, -0.002, 0],
+    k: [fx, 0, 21.25, 0, 31, 11.75, 0, 0, 1], r: [1, 0, 0, 0, 1, 0, 0, 0, 1],
+    p: [fx + 1, 0, 20.5, 0, 0, 32, 12.25, 0, 0, 0, 1, 0], binning_x: 0, binning_y: 0,
+    roi: { x_offset: 0, y_offset: 0, height: 0, width: 0, do_rectify: false } });
+  const infos = { "/camera/camera_info": info(30), "/camera/zero_focal": info(0) };
+  const channels = [], messages = [];
+  for (const [topic, bytes] of Object.entries(infos)) {
+    channels.push({ topic, schema: { name: "sensor_msgs/msg/CameraInfo", encoding: "ros2msg", data: new Uint8Array() } });
+    messages.push([2 + channels.length, nanos({ sec: kStartSec, nanosec: 1000 }), bytes]);
+  }
+  for (const [topic, writers] of Object.entries(topics)) {
+    channels.push({ topic, schema: { name: "sensor_msgs/msg/Image", encoding: "ros2msg", data: new Uint8Array() } });
+    writers.forEach((write, k) => messages.push([2 + channels.length, nanos({ sec: kStartSec + k, nanosec: 1000 }), write(kStartSec + k)]));
+  }
+  for (const [topic, bytes] of Object.entries(compressed)) {
+    channels.push({ topic, schema: { name: "sensor_msgs/msg/CompressedImage", encoding: "ros2msg", data: new Uint8Array() } });
+    messages.push([2 + channels.length, nanos({ sec: kStartSec, nanosec: 1000 }), bytes]);
+  }
+  return { channels, messages };
+}
+
 // the rover sample (models/rover_description) driving a loop of 1 m radius anticlockwise in
 // `seconds` at `hz`: its wheels on /joint_states (each turning by the distance it rolls over its
 // 0.1 m radius), its head panning, odom -> base_link on /tf, its description on /robot_description;
@@ -324,15 +414,17 @@ for (const [name, messages] of Object.entries(tfBags)) {
 // of the /robot_description message
 const roverUrdf = readFileSync(join(dirname(fileURLToPath(import.meta.url)), "../../models/rover_description/urdf/rover.urdf"), "utf8");
 const stringWriter = new MessageWriter([ros2humble["std_msgs/String"]]);
-function roverLoop(seconds, hz, { tf = (i, base) => [base], description = stringWriter.writeMessage({ data: roverUrdf }) } = {}) {
+// of the /robot_description message, `extra` more channels (numbered from 3) and their messages
+function roverLoop(seconds, hz, { tf = (i, base) => [base], description = stringWriter.writeMessage({ data: roverUrdf }), extra = { channels: [], messages: [] } } = {}) {
   const radius = 1, track = 0.46, wheel = 0.1;
   const channels = [
     jointStateChannel,
     { topic: "/tf", schema: tfSchema },
     { topic: "/robot_description", schema: { name: "std_msgs/msg/String", encoding: "ros2msg", data: new TextEncoder().encode(kStringSchema) } },
+    ...extra.channels,
   ];
   const start = { sec: kStartSec, nanosec: 0 };
-  const messages = [[2, nanos(start), description]];
+  const messages = [[2, nanos(start), description], ...extra.messages];
   const count = Math.round(seconds * hz);
   for (let i = 0; i <= count; ++i) {
     const t = i / hz;
@@ -350,6 +442,7 @@ function roverLoop(seconds, hz, { tf = (i, base) => [base], description = string
   return writeBag({ channels, messages, chunkSize: 1 << 20 });
 }
 writeFileSync(join(out, "rover_loop.mcap"), await roverLoop(8, 20));
+writeFileSync(join(out, "rover_camera.mcap"), await roverLoop(2, 10, { extra: cameraImages() }));
 // hostile rover bags: each is the loop with one thing wrong at message 3 (or in its description)
 const atThree = (change) => ({ tf: (i, base) => (i === 3 ? change(base) : [base]) });
 // a description whose CDR string claims 100 MB (the length after the 4-byte encapsulation header)
