@@ -13,7 +13,8 @@ points=${3:-30000}
 seconds=${4:-20}
 source "$(dirname "$0")/../bench_work.sh" display_bag_bench
 "$root/scripts/node-deps.sh"
-node "$root/tests/node/make_display_bags.mjs" "$work" "$points" "$seconds"
+# --single-threaded: see scripts/make-test-bags.sh
+node --single-threaded "$root/tests/node/make_display_bags.mjs" "$work" "$points" "$seconds"
 bag=$work/displays_moving.mcap
 frames=$((seconds * 30 + 1))
 
