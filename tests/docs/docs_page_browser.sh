@@ -24,7 +24,7 @@ page() {
   local name=$1; shift
   echo "== $name"
   "$urdfsnap" docs "$@" --no-shard -o "$work/$name"
-  node "$root/tests/node/docs_page_browser.mjs" "$work/$name" "$(movable "$@")" ${shots:+"$shots/$name.png"} || status=1
+  node --single-threaded "$root/tests/node/docs_page_browser.mjs" "$work/$name" "$(movable "$@")" ${shots:+"$shots/$name.png"} || status=1
 }
 page mrm "$root/models/mrm_description/urdf/mrm.xacro"
 page meshbot "$root/models/meshbot_description/urdf/meshbot.urdf"

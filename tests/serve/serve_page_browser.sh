@@ -22,7 +22,7 @@ server=$!
 for _ in $(seq 100); do grep -qs serving "$work/out" && break; sleep 0.1; done
 url=$(sed -n 's|^urdfsnap: serving \(http://.*\)$|\1|p' "$work/out")
 [ -n "$url" ] || { echo "the server did not start:"; cat "$work/err"; exit 1; }
-node "$root/tests/node/serve_page_browser.mjs" "$url" "$work/mrm.urdf" "$work/mrm.good.urdf" "$work"
+node --single-threaded "$root/tests/node/serve_page_browser.mjs" "$url" "$work/mrm.urdf" "$work/mrm.good.urdf" "$work"
 
 # the copied suite case renders the frame the page showed
 { echo "cases:"; cat "$work/case.yaml"; } >"$work/suite.yaml"
