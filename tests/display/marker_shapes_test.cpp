@@ -104,6 +104,17 @@ TEST(MarkerShapesTest, LinesAreRibbonsOfScaleXWithPerPointColours) {
   scene = Draw(list);
   ASSERT_EQ(scene.lines[0].points.size(), 4u);
   EXPECT_EQ(scene.lines[0].colours[3], list.colour);
+
+  // billboard_line.cpp setColor: an opaque marker colour replaces (per-point alphas do not show);
+  // a translucent one blends with each point's alpha
+  strip.colours = {{1, 0, 0, 0}, {0, 1, 0, 0.5f}, {0, 0, 1, 1}};
+  scene = Draw(strip);
+  EXPECT_EQ(scene.lines[0].colours[0], Eigen::Vector4f(1, 0, 0, 1));
+  EXPECT_EQ(scene.lines[0].colours[1], Eigen::Vector4f(0, 1, 0, 1));
+  strip.colour.w() = 0.5f;
+  scene = Draw(strip);
+  EXPECT_EQ(scene.lines[0].colours[0], Eigen::Vector4f(1, 0, 0, 0));
+  EXPECT_EQ(scene.lines[0].colours[1], Eigen::Vector4f(0, 1, 0, 0.5f));
 }
 
 TEST(MarkerShapesTest, PointsAreSquaresInMetresAndListsAreBoxesAndSpheres) {
@@ -189,10 +200,32 @@ TEST(MarkerShapesTest, MeshResourceTakesTheMarkersColourOrTheFilesOwn) {
   ASSERT_EQ(scene.items.size(), 1u);
   EXPECT_EQ(scene.items[0].rgba, part.diffuse);
 
-  m.colour = {1, 0, 0, 0.5f};   // the file's colours, tinted
+  // mesh_resource_marker.cpp: the file's colours at the marker's alpha, tinted at min(a, 0.5)
+  m.colour = {1, 0, 0, 1};
   scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
   ASSERT_EQ(scene.items.size(), 2u);
+  EXPECT_EQ(scene.items[0].rgba, part.diffuse);
+  EXPECT_EQ(scene.items[1].rgba, Eigen::Vector4f(1, 0, 0, 0.5f));
+  m.colour = {1, 0, 0, 0.3f};
+  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
+  ASSERT_EQ(scene.items.size(), 2u);
+  EXPECT_EQ(scene.items[0].rgba, Eigen::Vector4f(0.1f, 0.2f, 0.3f, 0.3f));
   EXPECT_EQ(scene.items[1].rgba, m.colour);
+
+  // a sub-mesh without a material (STL) has Ogre's default white one, whose only pass is the tint
+  file->parts[0].takes_urdf_material = true;
+  m.colour = Eigen::Vector4f::Zero();
+  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
+  ASSERT_EQ(scene.items.size(), 1u);
+  EXPECT_EQ(scene.items[0].rgba, Eigen::Vector4f::Ones());
+  m.colour = {0, 1, 0, 1};
+  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
+  ASSERT_EQ(scene.items.size(), 1u);
+  EXPECT_EQ(scene.items[0].rgba, m.colour);
+  m.colour = {0, 1, 0, 0.8f};
+  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
+  ASSERT_EQ(scene.items.size(), 1u);
+  EXPECT_EQ(scene.items[0].rgba, Eigen::Vector4f(0, 1, 0, 0.5f));
 
   const MarkerResources missing{[](const std::string& uri) -> std::shared_ptr<const geometry::MeshFile> {
     throw Error(uri + ": no such package");
