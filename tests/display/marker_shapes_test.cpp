@@ -1,6 +1,8 @@
 // Every marker type's scene items: where and how large RViz's marker classes make them.
 #include "display/marker_shapes.h"
 
+#include <vector>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -194,38 +196,24 @@ TEST(MarkerShapesTest, MeshResourceTakesTheMarkersColourOrTheFilesOwn) {
   EXPECT_EQ(scene.items[0].rgba, m.colour);
   EXPECT_TRUE(Extent(scene.items[0]).isApprox(Eigen::Vector3d(1, 0.1, 0.2), 1e-6));
 
+  // with embedded materials: the colours of the items drawn for the marker in `colour`
   m.mesh_use_embedded_materials = true;
-  m.colour = Eigen::Vector4f::Zero();
-  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
-  ASSERT_EQ(scene.items.size(), 1u);
-  EXPECT_EQ(scene.items[0].rgba, part.diffuse);
-
+  using Colours = std::vector<Eigen::Vector4f>;
+  const auto drawn = [&](const Eigen::Vector4f& colour) {
+    m.colour = colour;
+    Colours colours;
+    for (const scene::DrawItem& item : Draw(m, Eigen::Isometry3d::Identity(), resources).items) colours.push_back(item.rgba);
+    return colours;
+  };
+  EXPECT_EQ(drawn(Eigen::Vector4f::Zero()), Colours{part.diffuse});
   // mesh_resource_marker.cpp: the file's colours at the marker's alpha, tinted at min(a, 0.5)
-  m.colour = {1, 0, 0, 1};
-  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
-  ASSERT_EQ(scene.items.size(), 2u);
-  EXPECT_EQ(scene.items[0].rgba, part.diffuse);
-  EXPECT_EQ(scene.items[1].rgba, Eigen::Vector4f(1, 0, 0, 0.5f));
-  m.colour = {1, 0, 0, 0.3f};
-  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
-  ASSERT_EQ(scene.items.size(), 2u);
-  EXPECT_EQ(scene.items[0].rgba, Eigen::Vector4f(0.1f, 0.2f, 0.3f, 0.3f));
-  EXPECT_EQ(scene.items[1].rgba, m.colour);
-
+  EXPECT_EQ(drawn({1, 0, 0, 1}), (Colours{part.diffuse, {1, 0, 0, 0.5f}}));
+  EXPECT_EQ(drawn({1, 0, 0, 0.3f}), (Colours{{0.1f, 0.2f, 0.3f, 0.3f}, {1, 0, 0, 0.3f}}));
   // a sub-mesh without a material (STL) has Ogre's default white one, whose only pass is the tint
   file->parts[0].takes_urdf_material = true;
-  m.colour = Eigen::Vector4f::Zero();
-  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
-  ASSERT_EQ(scene.items.size(), 1u);
-  EXPECT_EQ(scene.items[0].rgba, Eigen::Vector4f::Ones());
-  m.colour = {0, 1, 0, 1};
-  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
-  ASSERT_EQ(scene.items.size(), 1u);
-  EXPECT_EQ(scene.items[0].rgba, m.colour);
-  m.colour = {0, 1, 0, 0.8f};
-  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
-  ASSERT_EQ(scene.items.size(), 1u);
-  EXPECT_EQ(scene.items[0].rgba, Eigen::Vector4f(0, 1, 0, 0.5f));
+  EXPECT_EQ(drawn(Eigen::Vector4f::Zero()), Colours{Eigen::Vector4f::Ones()});
+  EXPECT_EQ(drawn({0, 1, 0, 1}), Colours{Eigen::Vector4f(0, 1, 0, 1)});
+  EXPECT_EQ(drawn({0, 1, 0, 0.8f}), Colours{Eigen::Vector4f(0, 1, 0, 0.5f)});
 
   const MarkerResources missing{[](const std::string& uri) -> std::shared_ptr<const geometry::MeshFile> {
     throw Error(uri + ": no such package");
