@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 
 #include "display/arrow_shapes.h"
 #include "texture/glyph_atlas.h"
@@ -100,17 +102,48 @@ void AddPointList(const Marker& m, const Eigen::Isometry3d& X_FM, scene::PointSe
   if (!points.positions.empty()) scene.points.push_back(std::move(points));
 }
 
-// triangle_list_marker.cpp: every three points one triangle, the points scaled by scale, with
-// per-vertex colours (alpha from the marker's colour) or the marker's colour, unlit.
+// triangle_list_marker.cpp without colours: a lit material of the marker's colour, culling off
+// and each triangle's normal from its winding, so a face seen from behind is lit from behind:
+// black. Drawn as each triangle twice, once per winding, both with that normal.
+void AddLitTriangles(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
+  auto mesh = std::make_shared<geometry::TriangleMesh>();
+  const Eigen::Vector3f scale = m.scale.cast<float>();
+  for (size_t i = 0; i + 2 < m.points.size(); i += 3) {
+    const Eigen::Vector3f a = m.points[i].cwiseProduct(scale), b = m.points[i + 1].cwiseProduct(scale),
+                          c = m.points[i + 2].cwiseProduct(scale);
+    const Eigen::Vector3f normal = (b - a).cross(c - a).normalized();
+    for (const Eigen::Vector3f& p : {a, b, c}) {
+      mesh->positions.push_back(p);
+      mesh->normals.push_back(normal);
+    }
+    const auto first = static_cast<std::uint32_t>(mesh->positions.size() - 3);
+    mesh->indices.insert(mesh->indices.end(), {first, first + 1, first + 2, first, first + 2, first + 1});
+  }
+  AddShape(mesh, Eigen::Affine3d(X_FM), m.colour, scene);
+}
+
+// triangle_list_marker.cpp: every three points one triangle, the points scaled by scale. With a
+// colour per vertex or per triangle: unlit, seen from both sides, alpha the marker's times the
+// colour's, blended only when (per vertex) a vertex's own alpha or (per triangle) the marker's is
+// below 0.9998, else the material replaces and alpha does not show. Without: lit (AddLitTriangles).
 void AddTriangleList(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
+  const size_t count = m.points.size();
+  const bool per_vertex = m.colours.size() == count, per_face = !per_vertex && m.colours.size() == count / 3;
+  if (!per_vertex && !per_face) {
+    AddLitTriangles(m, X_FM, scene);
+    return;
+  }
+  const auto colour_of = [&](size_t i) { return m.colours[per_vertex ? i : i / 3]; };
+  bool blended = per_face && m.colour.w() < kOpaqueAlpha;
+  for (size_t i = 0; per_vertex && i < count; ++i) blended = blended || colour_of(i).w() < kOpaqueAlpha;
   scene::FlatTriangles triangles;
   const Eigen::Affine3f X = (X_FM * Eigen::Scaling(m.scale)).cast<float>();
-  triangles.positions.reserve(m.points.size());
-  triangles.colours.reserve(m.points.size());
-  for (size_t i = 0; i < m.points.size(); ++i) {
+  triangles.positions.reserve(count);
+  triangles.colours.reserve(count);
+  for (size_t i = 0; i < count; ++i) {
     triangles.positions.push_back(X * m.points[i]);
-    Eigen::Vector4f colour = PointColour(m, i);
-    colour.w() = m.colour.w();
+    Eigen::Vector4f colour = colour_of(i);
+    colour.w() = blended ? m.colour.w() * colour.w() : 1.f;
     triangles.colours.push_back(colour);
   }
   if (!triangles.positions.empty()) scene.triangles.push_back(std::move(triangles));

@@ -146,18 +146,47 @@ TEST(MarkerShapesTest, PointsAreSquaresInMetresAndListsAreBoxesAndSpheres) {
   }
 }
 
-TEST(MarkerShapesTest, TriangleListScalesPointsAndTakesTheMarkersAlpha) {
+// triangle_list_marker.cpp
+TEST(MarkerShapesTest, TriangleListScalesPointsAndBlendsAsRvizDecides) {
   Marker m = Make(Marker::kTriangleList);
   m.scale = {2, 2, 2};
   m.colour.w() = 0.5f;
   m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  // opaque colours per vertex: the material replaces, whatever the marker's alpha
   m.colours = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
-  const scene::Scene scene = Draw(m);
+  scene::Scene scene = Draw(m);
   ASSERT_EQ(scene.triangles.size(), 1u);
   EXPECT_EQ(scene.triangles[0].positions[1], Eigen::Vector3f(2, 0, 0));
+  EXPECT_EQ(scene.triangles[0].colours[2], Eigen::Vector4f(0, 0, 1, 1));
+  // one translucent vertex: blended, each alpha the marker's times the colour's
+  m.colours[1].w() = 0.5f;
+  scene = Draw(m);
+  EXPECT_EQ(scene.triangles[0].colours[1], Eigen::Vector4f(0, 1, 0, 0.25f));
   EXPECT_EQ(scene.triangles[0].colours[2], Eigen::Vector4f(0, 0, 1, 0.5f));
+  // a colour per triangle: blended by the marker's alpha
+  m.colours = {{1, 1, 0, 1}};
+  scene = Draw(m);
+  EXPECT_EQ(scene.triangles[0].colours[0], Eigen::Vector4f(1, 1, 0, 0.5f));
   m.points.pop_back();
   EXPECT_THAT(MarkerProblem(m), HasSubstr("not divisible by 3"));
+}
+
+// Without colours: lit in the marker's colour, each triangle both ways round with its own normal,
+// so that the back (culling off in RViz) is lit from behind, black.
+TEST(MarkerShapesTest, TriangleListWithoutColoursIsLitWithItsWindingsNormal) {
+  Marker m = Make(Marker::kTriangleList);
+  m.scale = {2, 2, 2};
+  m.pose.position = {0, 0, 1};
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const scene::Scene scene = Draw(m);
+  EXPECT_TRUE(scene.triangles.empty());
+  ASSERT_EQ(scene.items.size(), 1u);
+  EXPECT_EQ(scene.items[0].rgba, m.colour);
+  EXPECT_TRUE(scene.items[0].X_FG.translation().isApprox(Eigen::Vector3d(0, 0, 1)));
+  const geometry::TriangleMesh& mesh = *scene.items[0].mesh;
+  EXPECT_EQ(mesh.positions[1], Eigen::Vector3f(2, 0, 0));
+  EXPECT_EQ(mesh.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 1}));
+  for (const Eigen::Vector3f& n : mesh.normals) EXPECT_EQ(n, Eigen::Vector3f(0, 0, 1));
 }
 
 TEST(MarkerShapesTest, TextIsCentredOnThePoseAndScaleZHigh) {
