@@ -145,7 +145,13 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
   glGetIntegerv(GL_SAMPLES, &samples);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
   // the splat's texture is a sample wide per pixel: wider than GL allows, the sets are drawn by GL
-  const bool can_splat = static_cast<long>(viewport[2]) * std::max(samples, 1) <= max_texture;
+  // and fewer points than kFewestPoints are drawn by GL too (cheaper; the same pixels)
+  std::size_t splattable = 0;
+  for (const scene::PointSet* points : sets) {
+    if (PointSplat::Splattable(*points)) splattable += points->positions.size();
+  }
+  const bool can_splat = static_cast<long>(viewport[2]) * std::max(samples, 1) <= max_texture &&
+                         splattable >= PointSplat::kFewestPoints;
   bool splatting = false;
   for (const scene::PointSet* points : sets) {
     if (!can_splat || !PointSplat::Splattable(*points)) {

@@ -3,7 +3,8 @@
 // Squares and Spheres as camera-facing squares, Boxes as shaded boxes along the set's axes. The points
 // are streamed in batches, four vertices per square and 24 per box sharing one index buffer, so
 // the GPU memory stays bounded however many points a set holds. Opaque camera-facing sets are
-// splatted on the CPU instead (point_splat.h) and composited by one draw. Internal to the render
+// splatted on the CPU instead (point_splat.h) and composited by one draw, when a frame has enough
+// of their points to make that cheaper (PointSplat::kFewestPoints). Internal to the render
 // library; needs a current GL context.
 #pragma once
 
@@ -28,7 +29,8 @@ class PointSetDrawing {
   // blending and depth writes the caller has set. Leaves back-face culling on.
   void Draw(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P);
   // Draws the opaque `sets` into the bound framebuffer (depth-tested, writing depth, not blending):
-  // the camera-facing ones splatted together and composited once, Boxes through Draw.
+  // the camera-facing ones splatted together and composited once (when they have at least
+  // PointSplat::kFewestPoints points), Boxes and fewer points through Draw.
   void DrawOpaque(const std::vector<const scene::PointSet*>& sets, const Eigen::Matrix4d& V,
                   const Eigen::Matrix4d& P);
 
