@@ -1,8 +1,8 @@
 // The GL drawing of scene::PointSet in RViz's point-cloud styles (rviz/ogre_helpers/point_cloud.cpp
 // and its materials in ogre_media/materials): Points as GL points of N pixels, Squares, Flat
 // Squares and Spheres as camera-facing squares, Boxes as shaded boxes along the set's axes. The points
-// are streamed in batches, four vertices per square and 24 per box sharing one index buffer, so
-// the GPU memory stays bounded however many points a set holds. Opaque camera-facing sets are
+// are streamed in batches, one vertex per point: an instance of a square's 4 or a box's 24 corners
+// (gl_VertexID in the shaders), so the GPU memory stays bounded however many points a set holds. Opaque camera-facing sets are
 // splatted on the CPU instead (point_splat.h) and composited by one draw, when a frame has enough
 // of their points to make that cheaper (PointSplat::kFewestPoints). Internal to the render
 // library; needs a current GL context.
@@ -36,7 +36,7 @@ class PointSetDrawing {
 
  private:
   void Composite();
-  void Upload(const scene::PointSet& points, size_t first, size_t count, int copies);
+  void Upload(const scene::PointSet& points, size_t first, size_t count);
   ShaderProgram point_;
   ShaderProgram quad_;
   ShaderProgram box_;
