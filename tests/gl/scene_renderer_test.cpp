@@ -304,6 +304,25 @@ TEST_F(RendererTest, ItemsOfOneMeshEachHaveTheirPoseColourAndWindingAndBlendFart
   EXPECT_NEAR(blended[2], 12, 1);
 }
 
+// Triangle lists (TRIANGLE_LIST markers) are unlit and seen from both sides, in their corners'
+// colours, the translucent ones blended over what is drawn.
+TEST_F(RendererTest, TriangleListsAreUnlitTwoSidedAndBlendBelowAlphaOne) {
+  Scene scene;
+  const auto add = [&](float z, bool facing, const Eigen::Vector4f& rgba) {
+    FlatTriangles triangles;
+    triangles.positions = {{0, -0.3f, z}, {0, 0.3f, z}, {0, 0, z + 0.3f}};
+    if (!facing) std::swap(triangles.positions[0], triangles.positions[1]);   // its back to the camera
+    triangles.colours.assign(3, rgba);
+    scene.triangles.push_back(triangles);
+  };
+  add(0.2f, true, {1, 0, 0, 1});
+  add(-0.5f, false, {0, 1, 0, 1});
+  add(-0.5f, true, {0, 0, 1, 0.5f});   // over the green one
+  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
+  EXPECT_EQ(Pixel(image, 32, 14), (Rgb{255, 0, 0}));
+  EXPECT_EQ(Pixel(image, 32, 33), (Rgb{0, 127, 128}));   // half blue over green
+}
+
 TEST_F(RendererTest, LabelIsWhiteUnlitTextHangingBelowItsAnchor) {
   Scene scene;
   scene.labels.push_back(LetterH());
