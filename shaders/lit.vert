@@ -4,9 +4,9 @@
 // points from the surface back to the camera. Drawn instanced: each instance's matrices and
 // material are vertex attributes (gl/internal/gpu_mesh.h, MeshInstance), so that many markers of
 // one shape are one draw (RViz's Ogre draws each marker on its own; the pixels are the same).
-// Compiled twice (gl/scene_renderer.cpp): with TEXTURED
-// defined for textured surfaces, and without, where no texture coordinate is fetched or
-// interpolated (a third less to set up and interpolate per triangle).
+// Compiled twice (gl/scene_renderer.cpp): with TEXTURED defined for textured surfaces, and
+// without, where no texture coordinate is fetched or interpolated (a third less to set up and
+// interpolate per triangle).
 #version 330 core
 
 layout(location = 0) in vec3 position;
