@@ -155,8 +155,11 @@ void AddText(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene
   if (m.text.empty()) return;
   const auto atlas = texture::BuildGlyphAtlas(texture::FindLiberationSans(), scene::CodePointsOf({m.text}));
   const float height = static_cast<float>(m.scale.z());
-  scene.labels.push_back({atlas->texture, scene::LayOutText(*atlas, m.text, height, scene::TextAnchor::kCentre),
-                          X_FM.translation(), m.colour});
+  // the label's texture shares the atlas's ownership, so that whoever keeps the label's texture
+  // keeps the atlas (and BuildGlyphAtlas returns it again rather than rasterising anew)
+  scene.labels.push_back({std::shared_ptr<const texture::TextureImage>(atlas, atlas->texture.get()),
+                          scene::LayOutText(*atlas, m.text, height, scene::TextAnchor::kCentre), X_FM.translation(),
+                          m.colour});
 }
 
 // The image a mesh part's own material shows in its texture units (mesh_loader.cpp, as for the
@@ -169,11 +172,11 @@ std::shared_ptr<const texture::TextureImage> PartTexture(const geometry::MeshPar
 
 // mesh_resource_marker.cpp: the file's sub-meshes scaled by scale. Without embedded materials
 // every sub-mesh takes the marker's colour. With them, a colour of (0, 0, 0, 0) leaves the file's
-// own colours (sub-meshes without a material, as in STL files, Ogre's default white); any other
-// colour ("update_color") gives each file material (its textures kept) the marker's alpha and a second, blended tint
-// pass of the marker's colour at alpha min(a, 0.5), and the default material, whose one pass is
-// also its tint pass, the marker's colour: opaque when a >= 0.9998 (scene blending replace), else
-// blended at min(a, 0.5).
+// own colours and textures (sub-meshes without a material, as in STL files, Ogre's default
+// white); any other colour ("update_color") gives each file material the marker's alpha and a
+// second, blended tint pass of the marker's colour at alpha min(a, 0.5), and the default
+// material, whose one pass is also its tint pass, the marker's colour: opaque when a >= 0.9998
+// (scene blending replace), else blended at min(a, 0.5).
 void AddMesh(const Marker& m, const Eigen::Isometry3d& X_FM, const MarkerResources& resources,
              scene::Scene& scene) {
   const std::shared_ptr<const geometry::MeshFile> file = resources.load_mesh(m.mesh_resource);
