@@ -1,15 +1,22 @@
 // Each marker type's geometry, following the RViz 1.14 marker class named at each function.
 #include "display/marker_shapes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 
 #include "display/arrow_shapes.h"
 #include "texture/glyph_atlas.h"
+#include "texture/texture_file.h"
 #include "scene/primitive_meshes.h"
 #include "scene/text_layout.h"
 
 namespace urdfsnap::display {
 namespace {
+
+// Below this alpha RViz's marker materials blend and stop writing depth (Ogre's SBT_TRANSPARENT_ALPHA)
+constexpr float kOpaqueAlpha = 0.9998f;
 
 bool Finite(const Eigen::Vector3d& v) { return v.allFinite(); }
 
@@ -48,15 +55,20 @@ void AddArrowMarker(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene
 }
 
 // line_strip_marker.cpp, line_list_marker.cpp: a BillboardLine of width scale.x through the
-// points (a strip joins neighbours, a list pairs them).
+// points (a strip joins neighbours, a list pairs them). BillboardLine::setColor blends only when
+// the marker's own alpha is below 0.9998; otherwise its material replaces what is behind, so
+// per-point alphas (often a ColorRGBA left at its default 0) do not show.
 void AddLineMarker(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
+  const bool blended = m.colour.w() < kOpaqueAlpha;
   scene::LineSet lines;
   lines.rgba = m.colour;
   lines.width = static_cast<float>(m.scale.x());
   const Eigen::Affine3f X = X_FM.cast<float>();
   const auto add = [&](size_t i) {
     lines.points.push_back(X * m.points[i]);
-    lines.colours.push_back(PointColour(m, i));
+    Eigen::Vector4f colour = PointColour(m, i);
+    if (!blended) colour.w() = 1;
+    lines.colours.push_back(colour);
   };
   if (m.type == Marker::kLineList) {
     for (size_t i = 0; i < m.points.size(); ++i) add(i);
@@ -90,56 +102,103 @@ void AddPointList(const Marker& m, const Eigen::Isometry3d& X_FM, scene::PointSe
   if (!points.positions.empty()) scene.points.push_back(std::move(points));
 }
 
-// triangle_list_marker.cpp: every three points one triangle, the points scaled by scale, with
-// per-vertex colours (alpha from the marker's colour) or the marker's colour, unlit.
+// triangle_list_marker.cpp without colours: a lit material of the marker's colour, culling off
+// and each triangle's normal from its winding, so a face seen from behind is lit from behind:
+// black. Drawn as each triangle twice, once per winding, both with that normal.
+void AddLitTriangles(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
+  auto mesh = std::make_shared<geometry::TriangleMesh>();
+  const Eigen::Vector3f scale = m.scale.cast<float>();
+  for (size_t i = 0; i + 2 < m.points.size(); i += 3) {
+    const Eigen::Vector3f a = m.points[i].cwiseProduct(scale), b = m.points[i + 1].cwiseProduct(scale),
+                          c = m.points[i + 2].cwiseProduct(scale);
+    const Eigen::Vector3f normal = (b - a).cross(c - a).normalized();
+    for (const Eigen::Vector3f& p : {a, b, c}) {
+      mesh->positions.push_back(p);
+      mesh->normals.push_back(normal);
+    }
+    const auto first = static_cast<std::uint32_t>(mesh->positions.size() - 3);
+    mesh->indices.insert(mesh->indices.end(), {first, first + 1, first + 2, first, first + 2, first + 1});
+  }
+  AddShape(mesh, Eigen::Affine3d(X_FM), m.colour, scene);
+}
+
+// triangle_list_marker.cpp: every three points one triangle, the points scaled by scale. With a
+// colour per vertex or per triangle: unlit, seen from both sides, alpha the marker's times the
+// colour's, blended only when (per vertex) a vertex's own alpha or (per triangle) the marker's is
+// below 0.9998, else the material replaces and alpha does not show. Without: lit (AddLitTriangles).
 void AddTriangleList(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
+  const size_t count = m.points.size();
+  const bool per_vertex = m.colours.size() == count, per_face = !per_vertex && m.colours.size() == count / 3;
+  if (!per_vertex && !per_face) {
+    AddLitTriangles(m, X_FM, scene);
+    return;
+  }
+  const auto colour_of = [&](size_t i) { return m.colours[per_vertex ? i : i / 3]; };
+  bool blended = per_face && m.colour.w() < kOpaqueAlpha;
+  for (size_t i = 0; per_vertex && i < count; ++i) blended = blended || colour_of(i).w() < kOpaqueAlpha;
   scene::FlatTriangles triangles;
   const Eigen::Affine3f X = (X_FM * Eigen::Scaling(m.scale)).cast<float>();
-  triangles.positions.reserve(m.points.size());
-  triangles.colours.reserve(m.points.size());
-  for (size_t i = 0; i < m.points.size(); ++i) {
+  triangles.positions.reserve(count);
+  triangles.colours.reserve(count);
+  for (size_t i = 0; i < count; ++i) {
     triangles.positions.push_back(X * m.points[i]);
-    Eigen::Vector4f colour = PointColour(m, i);
-    colour.w() = m.colour.w();
+    Eigen::Vector4f colour = colour_of(i);
+    colour.w() = blended ? m.colour.w() * colour.w() : 1.f;
     triangles.colours.push_back(colour);
   }
   if (!triangles.positions.empty()) scene.triangles.push_back(std::move(triangles));
 }
 
-// text_view_facing_marker.cpp: MovableText in Liberation Sans, scale.z high, centred
-// horizontally and vertically on the pose, in the marker's colour.
+// text_view_facing_marker.cpp: MovableText in Liberation Sans, scale.z high, its block of lines
+// centred horizontally and vertically on the pose (H_CENTER, V_CENTER), in the marker's colour.
 void AddText(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
   if (m.text.empty()) return;
   const auto atlas = texture::BuildGlyphAtlas(texture::FindLiberationSans(), scene::CodePointsOf({m.text}));
   const float height = static_cast<float>(m.scale.z());
-  std::vector<scene::GlyphQuad> quads = scene::LayOutText(*atlas, m.text, height);
-  for (scene::GlyphQuad& q : quads) {   // LayOutText hangs the line below the anchor: centre it
-    q.min.y() += height / 2;
-    q.max.y() += height / 2;
-  }
   // the label's texture shares the atlas's ownership, so that whoever keeps the label's texture
   // keeps the atlas (and BuildGlyphAtlas returns it again rather than rasterising anew)
-  scene.labels.push_back({std::shared_ptr<const texture::TextureImage>(atlas, atlas->texture.get()), std::move(quads),
-                          X_FM.translation(), m.colour});
+  scene.labels.push_back({std::shared_ptr<const texture::TextureImage>(atlas, atlas->texture.get()),
+                          scene::LayOutText(*atlas, m.text, height, scene::TextAnchor::kCentre), X_FM.translation(),
+                          m.colour});
+}
+
+// The image a mesh part's own material shows in its texture units (mesh_loader.cpp, as for the
+// robot's meshes: geometry::MeshPart), Ogre's warning texture when no diffuse map names a file;
+// none without texture units. Throws when the file cannot be read.
+std::shared_ptr<const texture::TextureImage> PartTexture(const geometry::MeshPart& part) {
+  if (part.texture_units == 0) return nullptr;
+  return part.texture.empty() ? texture::WarningTexture() : texture::LoadTextureFile(part.texture);
 }
 
 // mesh_resource_marker.cpp: the file's sub-meshes scaled by scale. Without embedded materials
-// every sub-mesh takes the marker's colour; with them, the file's own colours (STL sub-meshes,
-// which have none, white), and a marker colour other than (0, 0, 0, 0) laid over them as a
-// second, blended pass.
+// every sub-mesh takes the marker's colour. With them, a colour of (0, 0, 0, 0) leaves the file's
+// own colours and textures (sub-meshes without a material, as in STL files, Ogre's default
+// white); any other colour ("update_color") gives each file material the marker's alpha and a
+// second, blended tint pass of the marker's colour at alpha min(a, 0.5), and the default
+// material, whose one pass is also its tint pass, the marker's colour: opaque when a >= 0.9998
+// (scene blending replace), else blended at min(a, 0.5).
 void AddMesh(const Marker& m, const Eigen::Isometry3d& X_FM, const MarkerResources& resources,
              scene::Scene& scene) {
   const std::shared_ptr<const geometry::MeshFile> file = resources.load_mesh(m.mesh_resource);
   const Eigen::Affine3d X_FG = X_FM * Eigen::Scaling(m.scale);
-  const bool tinted = !m.mesh_use_embedded_materials || m.colour != Eigen::Vector4f::Zero();
+  const bool recolour = m.colour != Eigen::Vector4f::Zero();
+  const float alpha = m.colour.w();
+  Eigen::Vector4f tint = m.colour;
+  tint.w() = std::min(alpha, 0.5f);
   for (const geometry::MeshPart& part : file->parts) {
     const std::shared_ptr<const geometry::TriangleMesh> mesh(file, &part.mesh);
-    if (m.mesh_use_embedded_materials) {
-      const Eigen::Vector4f own = part.takes_urdf_material ? Eigen::Vector4f::Ones() : part.diffuse;
-      scene.items.push_back({mesh, X_FG, own, -1, nullptr, 1,
-                             part.takes_urdf_material ? Eigen::Vector3f::Zero() : part.emissive});
+    if (!m.mesh_use_embedded_materials) {
+      AddShape(mesh, X_FG, m.colour, scene);
+    } else if (part.takes_urdf_material) {
+      Eigen::Vector4f own = Eigen::Vector4f::Ones();
+      if (recolour) own << m.colour.head<3>(), alpha >= kOpaqueAlpha ? 1.f : tint.w();
+      AddShape(mesh, X_FG, own, scene);
+    } else {
+      Eigen::Vector4f own = part.diffuse;
+      if (recolour) own.w() = alpha;
+      scene.items.push_back({mesh, X_FG, own, -1, PartTexture(part), part.texture_units, part.emissive});
+      if (recolour) AddShape(mesh, X_FG, tint, scene);
     }
-    if (tinted) AddShape(mesh, X_FG, m.colour, scene);
   }
 }
 

@@ -1,5 +1,7 @@
-// MovableText's layout rules for one line of centred text hanging below its anchor.
+// MovableText's layout rules: lines of text centred on or hanging below an anchor.
 #include "scene/text_layout.h"
+
+#include <algorithm>
 
 namespace urdfsnap::scene {
 
@@ -29,7 +31,9 @@ std::set<char32_t> CodePointsOf(const std::vector<std::string>& texts) {
   return code_points;
 }
 
-std::vector<GlyphQuad> LayOutText(const texture::GlyphAtlas& atlas, const std::string& text, float char_height) {
+std::vector<GlyphQuad> LayOutText(const texture::GlyphAtlas& atlas, const std::string& text, float char_height,
+                                  TextAnchor anchor) {
+  constexpr float kLineSpacing = 0.01f;   // MovableText's mLineSpacing
   const std::u32string characters = DecodeUtf8(text);
   // Ogre's Font::getGlyphAspectRatio is 1 for a code point without a cell
   const auto advance = [&](char32_t c) {
@@ -37,17 +41,30 @@ std::vector<GlyphQuad> LayOutText(const texture::GlyphAtlas& atlas, const std::s
     const auto it = atlas.glyphs.find(c);
     return (it == atlas.glyphs.end() ? 1.f : it->second.aspect) * char_height;
   };
-  // the whole line's width first, to centre it (H_CENTER: starting_left = -total_width / 2)
-  float width = 0;
-  for (char32_t c : characters) width += advance(c);
-  std::vector<GlyphQuad> quads;
-  float left = -width / 2;
+  // the block's size first, to place it (H_CENTER: starting_left = -total_width / 2)
+  float width = 0, line_width = 0, height = char_height;
   for (char32_t c : characters) {
+    if (c == U'\n') {
+      height += char_height + kLineSpacing;
+      line_width = 0;
+    } else {
+      line_width += advance(c);
+    }
+    width = std::max(width, line_width);
+  }
+  std::vector<GlyphQuad> quads;
+  const float start = -width / 2;
+  float left = start, top = anchor == TextAnchor::kCentre ? height / 2 : 0.f;
+  for (char32_t c : characters) {
+    if (c == U'\n') {
+      left = start;
+      top -= char_height + kLineSpacing;
+      continue;
+    }
     const float right = left + advance(c);
-    // V_BELOW: the cells' top edge is the anchor
     if (const auto it = atlas.glyphs.find(c); c != U' ' && it != atlas.glyphs.end()) {
       const texture::GlyphCell& cell = it->second;
-      quads.push_back({{left, -char_height}, {right, 0.f}, {cell.u0, cell.v1}, {cell.u1, cell.v0}});
+      quads.push_back({{left, top - char_height}, {right, top}, {cell.u0, cell.v1}, {cell.u1, cell.v0}});
     }
     left = right;
   }

@@ -24,10 +24,16 @@ std::u32string DecodeUtf8(const std::string& text);
 // The characters of every text, plus 'A' (whose width a space takes): what an atlas must hold.
 std::set<char32_t> CodePointsOf(const std::vector<std::string>& texts);
 
-// Lays out `text` centred horizontally on the origin and hanging below it (RViz's TF names use
-// H_CENTER, V_BELOW): each character a cell `char_height` high and `aspect * char_height` wide,
-// a space as wide as an 'A'. A character without a cell in `atlas` leaves a gap one character
-// height wide, as in Ogre.
-std::vector<GlyphQuad> LayOutText(const texture::GlyphAtlas& atlas, const std::string& text, float char_height);
+// MovableText's vertical alignments: V_BELOW (the block hangs below the anchor: TF names) and
+// V_CENTER (the block is centred on it: TEXT_VIEW_FACING markers).
+enum class TextAnchor { kBelow, kCentre };
+
+// Lays out `text` as MovableText with H_CENTER does: each character a cell `char_height` high and
+// `aspect * char_height` wide, a space as wide as an 'A', a character without a cell in `atlas` a
+// gap one character height wide (as in Ogre). A '\n' starts a new line char_height + 0.01 lower
+// (mLineSpacing); every line starts at the left edge of the widest one, which is centred on the
+// anchor.
+std::vector<GlyphQuad> LayOutText(const texture::GlyphAtlas& atlas, const std::string& text, float char_height,
+                                  TextAnchor anchor = TextAnchor::kBelow);
 
 }  // namespace urdfsnap::scene

@@ -1,12 +1,15 @@
-// `render --message` and `--display`: a MarkerArray with one marker of each type drawn on mrm and
-// compared with its golden image (tests/golden/every_marker.png); bad message files and options
-// are errors naming the file and line, broken markers warnings naming the marker.
+// `render --message` and `--display`: MarkerArrays drawn on mrm and compared with their golden
+// images: one marker of each type (tests/golden/every_marker.png) and RViz's looks the public
+// reference scenes do not show (marker lists, line alphas, text lines, transparency, tinted meshes:
+// tests/golden/marker_looks.png); bad message files and options are errors naming the file and
+// line, broken markers warnings naming the marker.
 //
-// The golden image, after an intended change (look at it before committing):
+// The golden images, after an intended change (look at them before committing), NAME every_marker
+// or marker_looks:
 //   build/urdfsnap render models/mrm_description/urdf/mrm.urdf --package
 //     meshbot_description=models/meshbot_description --message
-//     tests/data/markers/every_marker.yaml:visualization_msgs/msg/MarkerArray --yaw 0.3 --pitch 0.6
-//     --distance 5.5 --focal 0.6,0,0.4 -o tests/golden/every_marker.png
+//     tests/data/markers/NAME.yaml:visualization_msgs/msg/MarkerArray --yaw 0.3 --pitch 0.6
+//     --distance 5.5 --focal 0.6,0,0.4 -o tests/golden/NAME.png
 #include <cstdlib>
 #include <filesystem>
 
@@ -19,8 +22,6 @@
 namespace urdfsnap::cli_test {
 namespace {
 
-const std::string kEveryMarker =
-    (kSource / "tests/data/markers/every_marker.yaml").string() + ":visualization_msgs/msg/MarkerArray";
 const std::string kView = " --yaw 0.3 --pitch 0.6 --distance 5.5 --focal 0.6,0,0.4";
 
 // Pixels whose channels differ by more than 24 (antialiased edges move a little between Mesa
@@ -29,21 +30,34 @@ double ChangedShare(const image::Image& a, const image::Image& b) {
   return image::CompareImages(a, b, 24).fraction_over;
 }
 
-class DisplayCliTest : public CliTest {};
+class DisplayCliTest : public CliTest {
+ protected:
+  // Draws tests/data/markers/NAME.yaml on mrm, without a warning, and compares it with
+  // tests/golden/NAME.png; the markers are there at all: the robot alone differs in many pixels.
+  void ExpectGolden(const std::string& name) {
+    const std::string message =
+        (kSource / "tests/data/markers" / (name + ".yaml")).string() + ":visualization_msgs/msg/MarkerArray";
+    const Result r = RunUrdfsnap("render " + kMrm + " --package meshbot_description=" +
+                                 (kSource / "models/meshbot_description").string() + " --message " + message + kView +
+                                 " -o " + Path(name + ".png"));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output, "");   // every marker drawn, no warning
+    const image::Image golden = image::ReadPng((kSource / "tests/golden" / (name + ".png")).string());
+    const image::Image actual = image::ReadPng(Path(name + ".png"));
+    EXPECT_LT(ChangedShare(actual, golden), 0.005);
+    ASSERT_EQ(RunUrdfsnap("render " + kMrm + kView + " -o " + Path("robot.png")).status, 0);
+    EXPECT_GT(ChangedShare(actual, image::ReadPng(Path("robot.png"))), 0.03);
+  }
+};
 
 TEST_F(DisplayCliTest, EveryMarkerTypeMatchesItsGolden) {
   URDFSNAP_REQUIRE_GL();
-  const Result r = RunUrdfsnap("render " + kMrm + " --package meshbot_description=" +
-                               (kSource / "models/meshbot_description").string() + " --message " + kEveryMarker + kView + " -o " +
-                               Path("every.png"));
-  ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_EQ(r.output, "");   // every marker drawn, no warning
-  const image::Image golden = image::ReadPng((kSource / "tests/golden/every_marker.png").string());
-  const image::Image actual = image::ReadPng(Path("every.png"));
-  EXPECT_LT(ChangedShare(actual, golden), 0.005);
-  // the markers are there at all: the robot alone differs from it in many pixels
-  ASSERT_EQ(RunUrdfsnap("render " + kMrm + kView + " -o " + Path("robot.png")).status, 0);
-  EXPECT_GT(ChangedShare(actual, image::ReadPng(Path("robot.png"))), 0.03);
+  ExpectGolden("every_marker");
+}
+
+TEST_F(DisplayCliTest, RvizLooksBeyondThePublicScenesMatchTheirGolden) {
+  URDFSNAP_REQUIRE_GL();
+  ExpectGolden("marker_looks");
 }
 
 TEST_F(DisplayCliTest, BadMessageFilesAreErrorsAtTheirLine) {

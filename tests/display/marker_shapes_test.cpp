@@ -1,6 +1,8 @@
 // Every marker type's scene items: where and how large RViz's marker classes make them.
 #include "display/marker_shapes.h"
 
+#include <vector>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -104,6 +106,17 @@ TEST(MarkerShapesTest, LinesAreRibbonsOfScaleXWithPerPointColours) {
   scene = Draw(list);
   ASSERT_EQ(scene.lines[0].points.size(), 4u);
   EXPECT_EQ(scene.lines[0].colours[3], list.colour);
+
+  // billboard_line.cpp setColor: an opaque marker colour replaces (per-point alphas do not show);
+  // a translucent one blends with each point's alpha
+  strip.colours = {{1, 0, 0, 0}, {0, 1, 0, 0.5f}, {0, 0, 1, 1}};
+  scene = Draw(strip);
+  EXPECT_EQ(scene.lines[0].colours[0], Eigen::Vector4f(1, 0, 0, 1));
+  EXPECT_EQ(scene.lines[0].colours[1], Eigen::Vector4f(0, 1, 0, 1));
+  strip.colour.w() = 0.5f;
+  scene = Draw(strip);
+  EXPECT_EQ(scene.lines[0].colours[0], Eigen::Vector4f(1, 0, 0, 0));
+  EXPECT_EQ(scene.lines[0].colours[1], Eigen::Vector4f(0, 1, 0, 0.5f));
 }
 
 TEST(MarkerShapesTest, PointsAreSquaresInMetresAndListsAreBoxesAndSpheres) {
@@ -133,18 +146,47 @@ TEST(MarkerShapesTest, PointsAreSquaresInMetresAndListsAreBoxesAndSpheres) {
   }
 }
 
-TEST(MarkerShapesTest, TriangleListScalesPointsAndTakesTheMarkersAlpha) {
+// triangle_list_marker.cpp
+TEST(MarkerShapesTest, TriangleListScalesPointsAndBlendsAsRvizDecides) {
   Marker m = Make(Marker::kTriangleList);
   m.scale = {2, 2, 2};
   m.colour.w() = 0.5f;
   m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  // opaque colours per vertex: the material replaces, whatever the marker's alpha
   m.colours = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
-  const scene::Scene scene = Draw(m);
+  scene::Scene scene = Draw(m);
   ASSERT_EQ(scene.triangles.size(), 1u);
   EXPECT_EQ(scene.triangles[0].positions[1], Eigen::Vector3f(2, 0, 0));
+  EXPECT_EQ(scene.triangles[0].colours[2], Eigen::Vector4f(0, 0, 1, 1));
+  // one translucent vertex: blended, each alpha the marker's times the colour's
+  m.colours[1].w() = 0.5f;
+  scene = Draw(m);
+  EXPECT_EQ(scene.triangles[0].colours[1], Eigen::Vector4f(0, 1, 0, 0.25f));
   EXPECT_EQ(scene.triangles[0].colours[2], Eigen::Vector4f(0, 0, 1, 0.5f));
+  // a colour per triangle: blended by the marker's alpha
+  m.colours = {{1, 1, 0, 1}};
+  scene = Draw(m);
+  EXPECT_EQ(scene.triangles[0].colours[0], Eigen::Vector4f(1, 1, 0, 0.5f));
   m.points.pop_back();
   EXPECT_THAT(MarkerProblem(m), HasSubstr("not divisible by 3"));
+}
+
+// Without colours: lit in the marker's colour, each triangle both ways round with its own normal,
+// so that the back (culling off in RViz) is lit from behind, black.
+TEST(MarkerShapesTest, TriangleListWithoutColoursIsLitWithItsWindingsNormal) {
+  Marker m = Make(Marker::kTriangleList);
+  m.scale = {2, 2, 2};
+  m.pose.position = {0, 0, 1};
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const scene::Scene scene = Draw(m);
+  EXPECT_TRUE(scene.triangles.empty());
+  ASSERT_EQ(scene.items.size(), 1u);
+  EXPECT_EQ(scene.items[0].rgba, m.colour);
+  EXPECT_TRUE(scene.items[0].X_FG.translation().isApprox(Eigen::Vector3d(0, 0, 1)));
+  const geometry::TriangleMesh& mesh = *scene.items[0].mesh;
+  EXPECT_EQ(mesh.positions[1], Eigen::Vector3f(2, 0, 0));
+  EXPECT_EQ(mesh.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 1}));
+  for (const Eigen::Vector3f& n : mesh.normals) EXPECT_EQ(n, Eigen::Vector3f(0, 0, 1));
 }
 
 TEST(MarkerShapesTest, TextIsCentredOnThePoseAndScaleZHigh) {
@@ -183,16 +225,24 @@ TEST(MarkerShapesTest, MeshResourceTakesTheMarkersColourOrTheFilesOwn) {
   EXPECT_EQ(scene.items[0].rgba, m.colour);
   EXPECT_TRUE(Extent(scene.items[0]).isApprox(Eigen::Vector3d(1, 0.1, 0.2), 1e-6));
 
+  // with embedded materials: the colours of the items drawn for the marker in `colour`
   m.mesh_use_embedded_materials = true;
-  m.colour = Eigen::Vector4f::Zero();
-  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
-  ASSERT_EQ(scene.items.size(), 1u);
-  EXPECT_EQ(scene.items[0].rgba, part.diffuse);
-
-  m.colour = {1, 0, 0, 0.5f};   // the file's colours, tinted
-  scene = Draw(m, Eigen::Isometry3d::Identity(), resources);
-  ASSERT_EQ(scene.items.size(), 2u);
-  EXPECT_EQ(scene.items[1].rgba, m.colour);
+  using Colours = std::vector<Eigen::Vector4f>;
+  const auto drawn = [&](const Eigen::Vector4f& colour) {
+    m.colour = colour;
+    Colours colours;
+    for (const scene::DrawItem& item : Draw(m, Eigen::Isometry3d::Identity(), resources).items) colours.push_back(item.rgba);
+    return colours;
+  };
+  EXPECT_EQ(drawn(Eigen::Vector4f::Zero()), Colours{part.diffuse});
+  // mesh_resource_marker.cpp: the file's colours at the marker's alpha, tinted at min(a, 0.5)
+  EXPECT_EQ(drawn({1, 0, 0, 1}), (Colours{part.diffuse, {1, 0, 0, 0.5f}}));
+  EXPECT_EQ(drawn({1, 0, 0, 0.3f}), (Colours{{0.1f, 0.2f, 0.3f, 0.3f}, {1, 0, 0, 0.3f}}));
+  // a sub-mesh without a material (STL) has Ogre's default white one, whose only pass is the tint
+  file->parts[0].takes_urdf_material = true;
+  EXPECT_EQ(drawn(Eigen::Vector4f::Zero()), Colours{Eigen::Vector4f::Ones()});
+  EXPECT_EQ(drawn({0, 1, 0, 1}), Colours{Eigen::Vector4f(0, 1, 0, 1)});
+  EXPECT_EQ(drawn({0, 1, 0, 0.8f}), Colours{Eigen::Vector4f(0, 1, 0, 0.5f)});
 
   const MarkerResources missing{[](const std::string& uri) -> std::shared_ptr<const geometry::MeshFile> {
     throw Error(uri + ": no such package");

@@ -88,6 +88,21 @@ TEST(TextLayoutTest, CentredOnTheAnchorAndHangingBelowIt) {
   EXPECT_EQ(quads[2].uv_max, Eigen::Vector2f(m.u1, m.v0));
 }
 
+// movable_text.cpp: a newline starts a line char_height + 0.01 lower at the widest line's left
+// edge; V_CENTER centres the whole block of lines on the anchor.
+TEST(TextLayoutTest, LinesStartAtTheWidestLinesLeftEdgeAndTheBlockIsCentred) {
+  const texture::GlyphAtlas atlas = Atlas({"mm\nl"});
+  const std::vector<GlyphQuad> quads = LayOutText(atlas, "mm\nl", 0.2f, TextAnchor::kCentre);
+  ASSERT_EQ(quads.size(), 3u);   // no quad for the newline
+  const float width = 2 * atlas.glyphs.at(U'm').aspect * 0.2f, height = 0.2f + 0.2f + 0.01f;
+  EXPECT_NEAR(quads[0].min.x(), -width / 2, 1e-6);
+  EXPECT_NEAR(quads[1].max.x(), width / 2, 1e-6);
+  EXPECT_NEAR(quads[2].min.x(), -width / 2, 1e-6);   // 'l' starts the second line at the left
+  EXPECT_NEAR(quads[0].max.y(), height / 2, 1e-6);
+  EXPECT_NEAR(quads[2].max.y(), height / 2 - 0.21f, 1e-6);
+  EXPECT_NEAR(quads[2].min.y(), -height / 2, 1e-6);
+}
+
 TEST(TextLayoutTest, SpaceIsAsWideAsACapitalAAndUnknownCharactersAreOneHeight) {
   const texture::GlyphAtlas atlas = Atlas({"a b"});
   const std::vector<GlyphQuad> spaced = LayOutText(atlas, "a b", 1.f);
