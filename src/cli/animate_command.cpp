@@ -290,7 +290,7 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
   const video::FormatDefaults defaults =
       video::DefaultsFor(o.output.empty() ? video::OutputFormat::kMp4 : video::OutputFormatOf(o.output));
   if (o.fps.empty()) o.fps = FormatNumber(defaults.fps);
-  if (r.size.empty()) r.size = defaults.size;
+  if (r.size.empty() && r.camera_info.empty()) r.size = defaults.size;   // a calibration gives its own
   const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
@@ -451,7 +451,6 @@ void AddAnimateCommand(CLI::App& app) {
   o->render.AddOptions(*cmd);
   o->displays.AddOptions(*cmd);
   o->camera.AddOptions(*cmd, "each frame's moment");
-  o->render.request.size.clear();   // not given: the output format's size (video::DefaultsFor)
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the encoder");
   cmd->callback([o] { Run(*o); });
 }
