@@ -1,18 +1,22 @@
 // Robot surfaces: RViz's fixed-function Gouraud lighting, evaluated per vertex.
 // One white directional head-light along the camera's view direction, no ambient, no specular:
 // colour = emissive + diffuse * max(0, n . l), clamped to 1 as fixed-function lighting is, where l
-// points from the surface back to the camera. Compiled twice (gl/renderer.cpp): with TEXTURED
-// defined for textured surfaces, and without, where no texture coordinate is fetched or
-// interpolated (a third less to set up and interpolate per triangle).
+// points from the surface back to the camera. Drawn instanced: each instance's matrices and
+// material are vertex attributes (gl/internal/gpu_mesh.h, MeshInstance), so that many markers of
+// one shape are one draw (RViz's Ogre draws each marker on its own; the pixels are the same).
+// Compiled twice (gl/scene_renderer.cpp): with TEXTURED defined for textured surfaces, and
+// without, where no texture coordinate is fetched or interpolated (a third less to set up and
+// interpolate per triangle).
 #version 330 core
 
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 
-uniform mat4 model_view_projection;
-uniform mat3 normal_to_view;   // inverse transpose of the model-view matrix (handles scaling)
-uniform vec4 diffuse;          // rgba; alpha is passed through for blending
-uniform vec3 emissive;         // the material's self-illumination
+// per instance
+layout(location = 3) in mat4 model_view_projection;
+layout(location = 7) in mat3 normal_to_view;   // inverse transpose of the model-view matrix (handles scaling)
+layout(location = 10) in vec4 diffuse;         // rgba; alpha is passed through for blending
+layout(location = 11) in vec3 emissive;        // the material's self-illumination
 
 out vec4 vertex_colour;
 

@@ -5,7 +5,9 @@
 // robot, kept by a MarkerDisplay; per frame the markers are turned into scene items (as every
 // animation frame does) and drawn with 4x multisampling and read back. Median wall time of the
 // whole frame and of the scene building alone, and the CPU time of all threads.
-// usage: urdfsnap_markers_bench [MARKERS [FRAMES [SAMPLES]]]   (defaults 1000, 30 and 4)
+// usage: urdfsnap_markers_bench [MARKERS [FRAMES [SAMPLES [TYPE]]]]   (defaults 1000, 30, 4 and
+// every type; TYPE a visualization_msgs/Marker type number, e.g. 2 for SPHERE, to time or profile
+// that type alone)
 // Timings only: no test asserts on them.
 #include <cstdio>
 #include <cstdlib>
@@ -26,13 +28,13 @@ constexpr int kTypes[] = {Marker::kArrow,     Marker::kCube,     Marker::kSphere
                           Marker::kLineStrip, Marker::kLineList, Marker::kCubeList,   Marker::kSphereList,
                           Marker::kPoints,    Marker::kTextViewFacing, Marker::kTriangleList};
 
-// Marker i: its type in turn, on a 0.25 m grid around the robot, 0.1 m in size.
-Marker MixedMarker(int i) {
+// Marker i: of `type`, or when that is negative each type in turn, on a 0.25 m grid around the robot, 0.1 m in size.
+Marker MixedMarker(int i, int type) {
   Marker m;
   m.header.frame_id = "base_link";
   m.ns = "bench";
   m.id = i;
-  m.type = kTypes[i % std::size(kTypes)];
+  m.type = type >= 0 ? type : kTypes[i % std::size(kTypes)];
   m.pose.position = {-4 + 0.25 * (i % 32), -4 + 0.25 * (i / 32 % 32), 0.1 * (i / 1024)};
   m.scale = {0.1, 0.1, 0.1};
   m.colour = {0.2f + 0.6f * (i % 3) / 2, 0.5f, 1.f - 0.6f * (i % 5) / 4, 1};
@@ -49,11 +51,12 @@ Marker MixedMarker(int i) {
 int main(int argc, char** argv) {
   const int count = argc > 1 ? std::atoi(argv[1]) : 1000;
   const int frames = argc > 2 ? std::atoi(argv[2]) : 30;
+  const int type = argc > 4 ? std::atoi(argv[4]) : -1;
   const std::string model = std::string(URDFSNAP_SOURCE_DIR) + "/models/mrm_description/urdf/mrm.urdf";
   Warnings warnings;
   const scene::Scene posed = bench::ZeroPoseScene(model);
   display::MarkerDisplay markers("/markers", {true, {}}, {});
-  for (int i = 0; i < count; ++i) markers.Apply(MixedMarker(i), 0, "bench", warnings);
+  for (int i = 0; i < count; ++i) markers.Apply(MixedMarker(i, type), 0, "bench", warnings);
   const display::FrameLookup base = [](const std::string&, std::int64_t) {
     return std::optional<Eigen::Isometry3d>(Eigen::Isometry3d::Identity());
   };
@@ -72,8 +75,10 @@ int main(int argc, char** argv) {
   std::printf("mrm at 640x480, 4x MSAA, %s; median of %d frames\n", renderer.description().c_str(), frames);
   std::printf("| frame | wall ms per frame | CPU ms per frame |\n|---|---|---|\n");
   std::printf("| mrm alone, draw + read back | %.2f | |\n", 1000 * robot_only);
-  std::printf("| %d mixed markers to scene items | %.2f | |\n", count, 1000 * build);
-  std::printf("| mrm + %d mixed markers, scene + draw + read back | %.2f | %.2f |\n", count, 1000 * whole, 1000 * cpu);
+  const std::string what = type >= 0 ? "markers of type " + std::to_string(type) : "mixed markers";
+  std::printf("| %d %s to scene items | %.2f | |\n", count, what.c_str(), 1000 * build);
+  std::printf("| mrm + %d %s, scene + draw + read back | %.2f | %.2f |\n", count, what.c_str(), 1000 * whole,
+              1000 * cpu);
   if (!warnings.empty()) std::fprintf(stderr, "%s\n", warnings.messages().front().c_str());
   return 0;
 }

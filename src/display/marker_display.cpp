@@ -62,6 +62,7 @@ void MarkerDisplay::Apply(Marker marker, std::int64_t time_ns, const std::string
 
 void MarkerDisplay::Draw(std::int64_t time_ns, const FrameLookup& lookup, scene::Scene& scene,
                          Warnings& warnings) const {
+  const size_t first_label = scene.labels.size();
   for (const auto& [key, kept] : markers_) {
     const Marker& m = kept.marker;
     if (Expired(m, kept.received_ns, time_ns)) continue;
@@ -81,6 +82,10 @@ void MarkerDisplay::Draw(std::int64_t time_ns, const FrameLookup& lookup, scene:
       warnings.Add(kept.where + ": " + name + ": " + e.what() + "; not drawn");
     }
   }
+  std::vector<std::shared_ptr<const texture::TextureImage>> drawn_text;
+  for (size_t i = first_label; i < scene.labels.size(); ++i) drawn_text.push_back(scene.labels[i].texture);
+  const std::lock_guard<std::mutex> lock(drawn_text_mutex_);
+  drawn_text_ = std::move(drawn_text);
 }
 
 }  // namespace urdfsnap::display

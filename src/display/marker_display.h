@@ -6,7 +6,10 @@
 #pragma once
 
 #include <map>
+#include <memory>
+#include <mutex>
 #include <utility>
+#include <vector>
 
 #include "display/display.h"
 #include "display/display_settings.h"
@@ -46,6 +49,10 @@ class MarkerDisplay : public Display {
   MarkerSettings settings_;
   MarkerResources resources_;
   std::map<std::pair<std::string, int>, Kept> markers_;
+  // the text markers' textures (each holding its glyph atlas) of the last Draw, kept until the next
+  // one: text drawn frame after frame is then laid out once and uploaded to GL once, not per frame
+  mutable std::mutex drawn_text_mutex_;
+  mutable std::vector<std::shared_ptr<const texture::TextureImage>> drawn_text_;
 };
 
 }  // namespace urdfsnap::display

@@ -117,7 +117,10 @@ void AddText(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene
     q.min.y() += height / 2;
     q.max.y() += height / 2;
   }
-  scene.labels.push_back({atlas->texture, std::move(quads), X_FM.translation(), m.colour});
+  // the label's texture shares the atlas's ownership, so that whoever keeps the label's texture
+  // keeps the atlas (and BuildGlyphAtlas returns it again rather than rasterising anew)
+  scene.labels.push_back({std::shared_ptr<const texture::TextureImage>(atlas, atlas->texture.get()), std::move(quads),
+                          X_FM.translation(), m.colour});
 }
 
 // mesh_resource_marker.cpp: the file's sub-meshes scaled by scale. Without embedded materials

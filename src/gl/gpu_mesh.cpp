@@ -1,8 +1,9 @@
-// Upload, drawing and view culling of triangle meshes.
+// Upload, drawing (once or instanced) and view culling of triangle meshes.
 #include "gl/internal/gpu_mesh.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -81,6 +82,30 @@ bool GpuMesh::OutsideClipVolume(const Eigen::Matrix4d& model_view_projection) co
 void GpuMesh::Draw() const {
   glBindVertexArray(vertex_array_);
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+}
+
+void GpuMesh::DrawInstances(unsigned instances, int count) const {
+  glBindVertexArray(vertex_array_);
+  glBindBuffer(GL_ARRAY_BUFFER, instances);
+  // a mat4 takes four attribute locations (one per column), a mat3 three
+  struct Attribute {
+    int columns, rows;
+    std::size_t offset;
+  };
+  const Attribute attributes[] = {{4, 4, offsetof(MeshInstance, model_view_projection)},
+                                  {3, 3, offsetof(MeshInstance, normal_to_view)},
+                                  {1, 4, offsetof(MeshInstance, diffuse)},
+                                  {1, 3, offsetof(MeshInstance, emissive)}};
+  GLuint location = 3;
+  for (const Attribute& a : attributes) {
+    for (int column = 0; column < a.columns; ++column, ++location) {
+      glEnableVertexAttribArray(location);
+      glVertexAttribPointer(location, a.rows, GL_FLOAT, GL_FALSE, sizeof(MeshInstance),
+                            reinterpret_cast<const void*>(a.offset + column * a.rows * sizeof(float)));
+      glVertexAttribDivisor(location, 1);
+    }
+  }
+  glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, count);
 }
 
 }  // namespace urdfsnap::gl

@@ -1,4 +1,5 @@
-// Batches of points into GL vertices: position and 8-bit rgba, repeated per corner.
+// Batches of points into GL: position and 8-bit rgba once per point, a vertex of its own for GL
+// points and an instance (whose corners come from gl_VertexID) for squares and boxes.
 #include "gl/internal/point_set_drawing.h"
 
 #include <algorithm>
@@ -19,9 +20,13 @@ struct PointVertex {
 };
 static_assert(sizeof(PointVertex) == 16);
 
-// Squares per draw call: the index buffer holds this many (4 vertices, 6 indices each), and a
-// batch streams at most 4 * kBatchSquares vertices (4 MiB).
-constexpr size_t kBatchSquares = 65536;
+// Points per draw call: a batch streams at most this many (4 MiB), so the GPU memory stays bounded.
+constexpr size_t kBatchPoints = 262144;
+
+// The corners of a square (strip order, two triangles (0, 1, 2) and (2, 1, 3)) and of a box (six
+// such faces, shaders/point_box.vert), as gl_VertexID within an instance.
+constexpr std::uint32_t kQuadIndices[6] = {0, 1, 2, 2, 1, 3};
+constexpr GLsizei kSquareIndices = 6, kBoxIndices = 36;
 
 std::uint8_t Channel(float value) {
   return static_cast<std::uint8_t>(std::clamp(value, 0.f, 1.f) * 255.f + 0.5f);
@@ -45,11 +50,9 @@ PointSetDrawing::PointSetDrawing()
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(PointVertex),
                         reinterpret_cast<const void*>(offsetof(PointVertex, rgba)));
-  // each square is two triangles of its strip-ordered corners: (0, 1, 2) and (2, 1, 3)
   std::vector<std::uint32_t> indices;
-  indices.reserve(kBatchSquares * 6);
-  for (std::uint32_t q = 0; q < kBatchSquares; ++q) {
-    for (std::uint32_t i : {0u, 1u, 2u, 2u, 1u, 3u}) indices.push_back(4 * q + i);
+  for (std::uint32_t face = 0; face < 6; ++face) {
+    for (std::uint32_t i : kQuadIndices) indices.push_back(4 * face + i);
   }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[1]);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
@@ -64,15 +67,14 @@ PointSetDrawing::~PointSetDrawing() {
   glDeleteVertexArrays(1, &vertex_array_);
 }
 
-// Streams points [first, first + count) as `copies` identical vertices each.
-void PointSetDrawing::Upload(const scene::PointSet& points, size_t first, size_t count, int copies) {
-  staging_.resize(count * copies * sizeof(PointVertex));
+// Streams points [first, first + count).
+void PointSetDrawing::Upload(const scene::PointSet& points, size_t first, size_t count) {
+  staging_.resize(count * sizeof(PointVertex));
   auto* out = reinterpret_cast<PointVertex*>(staging_.data());
   for (size_t i = first; i < first + count; ++i) {
     const Eigen::Vector3f& p = points.positions[i];
     const Eigen::Vector4f& c = points.colours[i];
-    const PointVertex vertex{{p.x(), p.y(), p.z()}, {Channel(c[0]), Channel(c[1]), Channel(c[2]), Channel(c[3])}};
-    for (int k = 0; k < copies; ++k) *out++ = vertex;
+    *out++ = {{p.x(), p.y(), p.z()}, {Channel(c[0]), Channel(c[1]), Channel(c[2]), Channel(c[3])}};
   }
   glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(staging_.size()), staging_.data(), GL_STREAM_DRAW);
@@ -84,19 +86,19 @@ void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d&
   if (n == 0) return;
   const Eigen::Matrix4f MVP = (P * V).cast<float>();
   const ShaderProgram* program = &quad_;
-  int copies = 4;                  // vertices per point
+  GLsizei corners = kSquareIndices;   // indices per instance; 0 for GL points, one vertex each
   int shape = 0;                   // point.frag's: 0 flat, 1 outlined square, 2 shaded disc
   switch (points.style) {
     case Style::kPoints:
       program = &point_;
-      copies = 1;
+      corners = 0;
       break;
     case Style::kSquares: shape = 1; break;
     case Style::kFlatSquares: break;
     case Style::kSpheres: shape = 2; break;
     case Style::kBoxes:
       program = &box_;
-      copies = 24;
+      corners = kBoxIndices;
       shape = 1;
       break;
   }
@@ -123,14 +125,15 @@ void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d&
     glDisable(GL_CULL_FACE);
   }
   glBindVertexArray(vertex_array_);
-  const size_t batch = copies == 1 ? 4 * kBatchSquares : 4 * kBatchSquares / copies;
-  for (size_t first = 0; first < n; first += batch) {
-    const size_t count = std::min(batch, n - first);
-    Upload(points, first, count, copies);
-    if (copies == 1) {
+  // a point's position and colour are per vertex for GL points, per instance for squares and boxes
+  for (GLuint attribute : {0u, 1u}) glVertexAttribDivisor(attribute, corners > 0 ? 1 : 0);
+  for (size_t first = 0; first < n; first += kBatchPoints) {
+    const size_t count = std::min(kBatchPoints, n - first);
+    Upload(points, first, count);
+    if (corners == 0) {
       glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
     } else {
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * copies / 4 * 6), GL_UNSIGNED_INT, nullptr);
+      glDrawElementsInstanced(GL_TRIANGLES, corners, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(count));
     }
   }
   glDisable(GL_PROGRAM_POINT_SIZE);
@@ -145,7 +148,13 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
   glGetIntegerv(GL_SAMPLES, &samples);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
   // the splat's texture is a sample wide per pixel: wider than GL allows, the sets are drawn by GL
-  const bool can_splat = static_cast<long>(viewport[2]) * std::max(samples, 1) <= max_texture;
+  // and fewer points than kFewestPoints are drawn by GL too (cheaper; the same pixels)
+  std::size_t splattable = 0;
+  for (const scene::PointSet* points : sets) {
+    if (PointSplat::Splattable(*points)) splattable += points->positions.size();
+  }
+  const bool can_splat = static_cast<long>(viewport[2]) * std::max(samples, 1) <= max_texture &&
+                         splattable >= PointSplat::kFewestPoints;
   bool splatting = false;
   for (const scene::PointSet* points : sets) {
     if (!can_splat || !PointSplat::Splattable(*points)) {

@@ -14,6 +14,7 @@
 #include "gl/gl_context.h"
 #include "gl/internal/gpu_mesh.h"
 #include "gl/internal/gpu_texture.h"
+#include "gl/internal/mesh_batches.h"
 #include "gl/internal/point_set_drawing.h"
 #include "gl/internal/shader_program.h"
 
@@ -130,6 +131,7 @@ struct SceneRenderer::Impl {
         line("line.vert", "line.frag") {
     glGenVertexArrays(1, &stream_array);
     glGenBuffers(1, &stream_buffer);
+    glGenBuffers(1, &instance_buffer);
   }
   ~Impl() {
     // this context's objects are deleted in it (the members below too), not in whichever
@@ -139,6 +141,7 @@ struct SceneRenderer::Impl {
     } catch (const Error&) {
       // nothing to delete them in: they go with the context
     }
+    glDeleteBuffers(1, &instance_buffer);
     glDeleteBuffers(1, &stream_buffer);
     glDeleteVertexArrays(1, &stream_array);
   }
@@ -161,27 +164,27 @@ struct SceneRenderer::Impl {
     for (; index < 2; ++index) glDisableVertexAttribArray(index);
   }
 
-  // A texture shown by no unit leaves the colour as it is: such a surface is drawn untextured.
-  void DrawMesh(const scene::DrawItem& item, const Eigen::Matrix4d& V, const Eigen::Matrix4d& PV) {
-    const int units = item.texture ? std::clamp(item.texture_units, 0, kMaxTextureUnits) : 0;
-    const Eigen::Matrix4d M = item.X_FG.matrix();
-    const GpuMesh& mesh = meshes.Get(item.mesh);
-    if (mesh.OutsideClipVolume(PV * M)) return;
-    const ShaderProgram& program = units > 0 ? lit_textured.Get() : lit;
+  // Draws the instances of `batch` with the lit program, textured when its items are.
+  void DrawBatch(const MeshBatch& batch) {
+    const ShaderProgram& program = batch.key.texture_units > 0 ? lit_textured.Get() : lit;
     program.Use();
-    program.Set("model_view_projection", Eigen::Matrix4f((PV * M).cast<float>()));
-    const Eigen::Matrix3d MV = (V * M).topLeftCorner<3, 3>();
-    program.Set("normal_to_view", Eigen::Matrix3f(MV.inverse().transpose().cast<float>()));
-    program.Set("diffuse", item.rgba);
-    program.Set("emissive", item.emissive);
-    if (units > 0) {
-      program.Set("texture_units", units);
+    if (batch.key.texture_units > 0) {
+      program.Set("texture_units", batch.key.texture_units);
       program.Set("image", 0);
-      textures.Get(item.texture).Bind(0);
+      textures.Get(batch.item->texture).Bind(0);
     }
     // a mirroring scale turns the winding around; Ogre flips culling for such nodes, and so do we
-    glFrontFace(M.topLeftCorner<3, 3>().determinant() < 0 ? GL_CW : GL_CCW);
-    mesh.Draw();
+    glFrontFace(batch.key.mirrored ? GL_CW : GL_CCW);
+    glBindBuffer(GL_ARRAY_BUFFER, instance_buffer);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(batch.instances.size() * sizeof(MeshInstance)),
+                 batch.instances.data(), GL_STREAM_DRAW);
+    batch.mesh->DrawInstances(instance_buffer, static_cast<int>(batch.instances.size()));
+  }
+
+  // Draws the batches of `batches` in order and empties it.
+  void DrawBatches(MeshBatches& batches) {
+    for (const MeshBatch& batch : batches.batches()) DrawBatch(batch);
+    batches.Clear();
   }
 
   // 1-pixel lines, or with a width the camera-facing ribbons of RibbonVertices
@@ -277,11 +280,12 @@ struct SceneRenderer::Impl {
     std::vector<Transparent> transparent;
     for (const auto& item : scene.items) {
       if (item.rgba.w() >= kOpaqueAlpha) {
-        DrawMesh(item, V, PV);
+        batches.Add(item, meshes.Get(item.mesh), kMaxTextureUnits, V, PV, MeshBatches::Join::kAny);
       } else {
         transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
       }
     }
+    DrawBatches(batches);
     std::vector<const scene::PointSet*> opaque_points;
     for (const auto& points : scene.points) {
       if (Opaque(points)) {
@@ -305,12 +309,17 @@ struct SceneRenderer::Impl {
     for (const auto& text_label : scene.labels) {
       transparent.push_back({(text_label.anchor - eye).squaredNorm(), &text_label});
     }
+    // Ogre's transparent queue (OgreRenderQueueSortingGrouping.cpp, QueuedRenderableCollection::sort
+    // with OM_SORT_DESCENDING): stably sorted far to near by each renderable's squared view depth,
+    // which for an entity's sub-meshes is its scene node's distance from the camera
+    // (OgreSubEntity.cpp, getSquaredViewDepth): a marker's pose, a robot link's visual origin
     std::stable_sort(transparent.begin(), transparent.end(),
                      [](const Transparent& a, const Transparent& b) { return a.depth > b.depth; });
     return transparent;
   }
 
-  // Draws `transparent` in its order, blended, depth-tested but not writing depth.
+  // Draws `transparent` in its order, blended, depth-tested but not writing depth. Neighbours in
+  // that order with the same mesh are one instanced draw, which blends its instances in order.
   void DrawBlended(const std::vector<Transparent>& transparent, const Eigen::Matrix4d& V,
                    const Eigen::Matrix4d& P, const Eigen::Vector3d& eye) {
     const Eigen::Matrix4d PV = P * V;
@@ -319,8 +328,11 @@ struct SceneRenderer::Impl {
     glDepthMask(GL_FALSE);
     for (const auto& t : transparent) {
       if (const auto* item = std::get_if<const scene::DrawItem*>(&t.what)) {
-        DrawMesh(**item, V, PV);
-      } else if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
+        batches.Add(**item, meshes.Get((*item)->mesh), kMaxTextureUnits, V, PV, MeshBatches::Join::kLast);
+        continue;
+      }
+      DrawBatches(batches);
+      if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
         DrawLines(**lines, PV, eye);
       } else if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
         point_sets().Draw(**points, V, P);
@@ -330,6 +342,7 @@ struct SceneRenderer::Impl {
         DrawLabel(*std::get<const scene::TextLabel*>(t.what), V, P);
       }
     }
+    DrawBatches(batches);
     glDepthMask(GL_TRUE);
   }
 
@@ -381,6 +394,8 @@ struct SceneRenderer::Impl {
     return *point_sets_made;
   }
   unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
+  unsigned instance_buffer = 0;                    // per-draw MeshInstances
+  MeshBatches batches;                             // the lit meshes of the draw being gathered
   std::unique_ptr<Framebuffer> framebuffer;
   std::unique_ptr<LabelFramebuffer> label_framebuffer;
   GpuCache<geometry::TriangleMesh, GpuMesh> meshes;

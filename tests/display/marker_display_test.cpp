@@ -124,5 +124,21 @@ TEST(MarkerDisplayTest, BrokenMarkersAndUnknownFramesAreWarningsNamingTheMessage
   EXPECT_THAT(warnings.messages().back(), HasSubstr("m5: marker 'a/2': no transform from frame 'nowhere'"));
 }
 
+// A text marker's glyphs are rasterised once while it is drawn frame after frame: the display keeps
+// the last frame's atlases, so the next frame's label shows the same texture (which the renderer
+// then uploads once).
+TEST(MarkerDisplayTest, TextKeepsItsGlyphTextureFromFrameToFrame) {
+  MarkerDisplay display("/m", {}, {});
+  Warnings warnings;
+  Marker text = Cube("t", 1);
+  text.type = Marker::kTextViewFacing;
+  text.text = "kept";
+  display.Apply(text, kSecond, "w", warnings);
+  const std::weak_ptr<const texture::TextureImage> first = DrawAt(display, kSecond, warnings).labels.at(0).texture;
+  ASSERT_FALSE(first.expired());   // the frame's scene is gone; the display still holds its texture
+  EXPECT_EQ(DrawAt(display, kSecond, warnings).labels.at(0).texture, first.lock());
+  EXPECT_TRUE(warnings.empty());
+}
+
 }  // namespace
 }  // namespace urdfsnap::display

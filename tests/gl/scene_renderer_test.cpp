@@ -277,6 +277,52 @@ std::array<int, 4> InkBox(const image::Image& image) {
   return box;
 }
 
+// Items of one mesh are one instanced draw (gl/internal/mesh_batches.h), each instance with its own
+// pose, colour and winding; translucent ones still blend farthest first whatever the scene's order.
+TEST_F(RendererTest, ItemsOfOneMeshEachHaveTheirPoseColourAndWindingAndBlendFarthestFirst) {
+  Scene scene;
+  const auto mesh = UpperTriangle();   // one mesh: one batch per kind
+  const auto add = [&](const Eigen::Affine3d& X_FG, const Eigen::Vector4f& rgba) {
+    DrawItem item;
+    item.mesh = mesh;
+    item.X_FG = X_FG;
+    item.rgba = rgba;
+    scene.items.push_back(item);
+  };
+  const Eigen::Translation3d below(0, 0, -0.7);
+  add(Eigen::Affine3d(below), {0, 0, 1, 1});                                                 // blue
+  add(below * Eigen::Scaling(1.0, -1.0, 1.0) * Eigen::Translation3d(0, 0.7, 0), {1, 1, 0, 1});   // mirrored, left: yellow
+  add(Eigen::Affine3d::Identity(), {0, 1, 0, 0.5f});                                         // near: green
+  add(Eigen::Affine3d(Eigen::Translation3d(-0.5, 0, 0)), {1, 0, 0, 0.5f});                   // far: red
+  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
+  EXPECT_EQ(Pixel(image, 32, 36), (Rgb{0, 0, 255}));
+  EXPECT_EQ(Pixel(image, 12, 36), (Rgb{255, 255, 0}));
+  // red over the background, then green over that
+  const Rgb blended = Pixel(image, 32, 14);
+  EXPECT_NEAR(blended[0], 76, 1);
+  EXPECT_NEAR(blended[1], 140, 1);
+  EXPECT_NEAR(blended[2], 12, 1);
+}
+
+// Triangle lists (TRIANGLE_LIST markers) are unlit and seen from both sides, in their corners'
+// colours, the translucent ones blended over what is drawn.
+TEST_F(RendererTest, TriangleListsAreUnlitTwoSidedAndBlendBelowAlphaOne) {
+  Scene scene;
+  const auto add = [&](float z, bool facing, const Eigen::Vector4f& rgba) {
+    FlatTriangles triangles;
+    triangles.positions = {{0, -0.3f, z}, {0, 0.3f, z}, {0, 0, z + 0.3f}};
+    if (!facing) std::swap(triangles.positions[0], triangles.positions[1]);   // its back to the camera
+    triangles.colours.assign(3, rgba);
+    scene.triangles.push_back(triangles);
+  };
+  add(0.2f, true, {1, 0, 0, 1});
+  add(-0.5f, false, {0, 1, 0, 1});
+  add(-0.5f, true, {0, 0, 1, 0.5f});   // over the green one
+  const image::Image image = renderer_->Render(scene, FrontView(), 64, 48).colour;
+  EXPECT_EQ(Pixel(image, 32, 14), (Rgb{255, 0, 0}));
+  EXPECT_EQ(Pixel(image, 32, 33), (Rgb{0, 127, 128}));   // half blue over green
+}
+
 TEST_F(RendererTest, LabelIsWhiteUnlitTextHangingBelowItsAnchor) {
   Scene scene;
   scene.labels.push_back(LetterH());
@@ -364,14 +410,14 @@ TEST_F(RendererTest, MultisamplesLieWhereTheyLieInRvizsWindow) {
 
 TEST_F(RendererTest, MisspeltShaderUniformIsAnError) {
   renderer_->Render(Scene{}, FrontView(), 8, 8);   // makes the renderer's context current
-  const ShaderProgram lit("lit.vert", "lit.frag");
-  lit.Use();
-  lit.Set("diffuse", Eigen::Vector4f(1, 0, 0, 1));
+  const ShaderProgram line("line.vert", "line.frag");
+  line.Use();
+  line.Set("model_view_projection", Eigen::Matrix4f::Identity().eval());
   try {
-    lit.Set("difuse", Eigen::Vector4f(1, 0, 0, 1));
+    line.Set("model_view_projektion", Eigen::Matrix4f::Identity().eval());
     FAIL() << "no error for a misspelt uniform";
   } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "shader program lit.vert + lit.frag has no active uniform 'difuse'");
+    EXPECT_STREQ(e.what(), "shader program line.vert + line.frag has no active uniform 'model_view_projektion'");
   }
 }
 
@@ -385,7 +431,6 @@ TEST_F(RendererTest, DefineSelectsTheShaderVariant) {
   textured.Set("image", 0);
   const ShaderProgram plain("lit.vert", "lit.frag");
   plain.Use();
-  plain.Set("diffuse", Eigen::Vector4f(1, 0, 0, 1));
   try {
     plain.Set("image", 0);
     FAIL() << "the untextured program samples an image";

@@ -47,6 +47,7 @@
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                \
   X(PFNGLDRAWBUFFERSPROC, glDrawBuffers)                              \
   X(PFNGLDRAWELEMENTSPROC, glDrawElements)                            \
+  X(PFNGLDRAWELEMENTSINSTANCEDPROC, glDrawElementsInstanced)          \
   X(PFNGLENABLEPROC, glEnable)                                        \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)      \
   X(PFNGLFINISHPROC, glFinish)                                        \
@@ -91,6 +92,7 @@
   X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                    \
   X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                    \
   X(PFNGLUSEPROGRAMPROC, glUseProgram)                                \
+  X(PFNGLVERTEXATTRIBDIVISORPROC, glVertexAttribDivisor)              \
   X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer)              \
   X(PFNGLVIEWPORTPROC, glViewport)
 

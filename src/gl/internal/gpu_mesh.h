@@ -1,5 +1,6 @@
 // A TriangleMesh uploaded to the GPU (vertex array with interleaved position, normal and texture
-// coordinates, and an index buffer) with a sphere around its vertices, so that a mesh wholly
+// coordinates, and an index buffer), drawn once or as many instances (MeshInstance: one pose,
+// colour and normal matrix each, read per instance by shaders/lit.vert), with a sphere around its vertices, so that a mesh wholly
 // outside the view is not sent down the pipeline at all (Ogre culls such objects too; llvmpipe
 // would shade and clip every vertex of it on the render thread to draw nothing). Internal to the
 // render library; needs a current GL context.
@@ -11,6 +12,17 @@
 
 namespace urdfsnap::gl {
 
+// One drawing of a mesh, as shaders/lit.vert reads it per instance (attributes 3 to 11): where the
+// mesh goes (model-view-projection matrix), how its normals turn into the view (the inverse
+// transpose of the model-view matrix, which undoes scaling), its diffuse rgba and emissive rgb.
+// Column-major, as GL takes matrices; 128 bytes.
+struct MeshInstance {
+  float model_view_projection[16];
+  float normal_to_view[9];
+  float diffuse[4];
+  float emissive[3];
+};
+
 class GpuMesh {
  public:
   explicit GpuMesh(const geometry::TriangleMesh& mesh);
@@ -20,6 +32,10 @@ class GpuMesh {
 
   // Draws the triangles with the program in use (attribute 0 position, 1 normal, 2 uv).
   void Draw() const;
+  // Draws `count` instances, the MeshInstances at the start of buffer `instances`, in their order
+  // (so blended instances keep it), with the program in use (attributes 0 to 2 as Draw's, 3 to 11
+  // the instance's).
+  void DrawInstances(unsigned instances, int count) const;
 
   // Whether the mesh lies wholly outside the clip volume of `model_view_projection` (the mesh's
   // coordinates to clip space): its bounding sphere is beyond one of the volume's six planes, so

@@ -1,9 +1,10 @@
 // The GL drawing of scene::PointSet in RViz's point-cloud styles (rviz/ogre_helpers/point_cloud.cpp
 // and its materials in ogre_media/materials): Points as GL points of N pixels, Squares, Flat
 // Squares and Spheres as camera-facing squares, Boxes as shaded boxes along the set's axes. The points
-// are streamed in batches, four vertices per square and 24 per box sharing one index buffer, so
-// the GPU memory stays bounded however many points a set holds. Opaque camera-facing sets are
-// splatted on the CPU instead (point_splat.h) and composited by one draw. Internal to the render
+// are streamed in batches, one vertex per point: an instance of a square's 4 or a box's 24 corners
+// (gl_VertexID in the shaders), so the GPU memory stays bounded however many points a set holds. Opaque camera-facing sets are
+// splatted on the CPU instead (point_splat.h) and composited by one draw, when a frame has enough
+// of their points to make that cheaper (PointSplat::kFewestPoints). Internal to the render
 // library; needs a current GL context.
 #pragma once
 
@@ -28,13 +29,14 @@ class PointSetDrawing {
   // blending and depth writes the caller has set. Leaves back-face culling on.
   void Draw(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P);
   // Draws the opaque `sets` into the bound framebuffer (depth-tested, writing depth, not blending):
-  // the camera-facing ones splatted together and composited once, Boxes through Draw.
+  // the camera-facing ones splatted together and composited once (when they have at least
+  // PointSplat::kFewestPoints points), Boxes and fewer points through Draw.
   void DrawOpaque(const std::vector<const scene::PointSet*>& sets, const Eigen::Matrix4d& V,
                   const Eigen::Matrix4d& P);
 
  private:
   void Composite();
-  void Upload(const scene::PointSet& points, size_t first, size_t count, int copies);
+  void Upload(const scene::PointSet& points, size_t first, size_t count);
   ShaderProgram point_;
   ShaderProgram quad_;
   ShaderProgram box_;
