@@ -45,11 +45,14 @@ scene::Scene AnimationFrames::Scene(const render::RobotRenderer& robot, std::int
 }
 
 std::optional<render::CameraSettings> AnimationFrames::Camera(std::int64_t k, Warnings& warnings) const {
-  if (!camera_ || !camera_tf_) return camera_;
-  // X_TR: the robot's root in the camera's TF frame T; the camera then hangs off the root link
+  if (!camera_) return camera_;
   render::CameraSettings placed = *camera_;
-  placed.pose = camera_tf_->At(plan_.TrajectoryTime(k), warnings).inverse() * camera_->pose;
-  placed.frame = camera_tf_->root();
+  if (camera_tf_) {
+    // X_TR: the robot's root in the camera's TF frame T; the camera then hangs off the root link
+    placed.pose = camera_tf_->At(plan_.TrajectoryTime(k), warnings).inverse() * camera_->pose;
+    placed.frame = camera_tf_->root();
+  }
+  if (additions_.underlay) additions_.underlay->Attach(plan_.TrajectoryTime(k), placed, warnings);
   return placed;
 }
 

@@ -10,6 +10,7 @@
 #include "common/warnings.h"
 #include "animation/followed_frame.h"
 #include "animation/frame_displays.h"
+#include "animation/frame_underlay.h"
 #include "animation/tf_display.h"
 #include "motion/frame_plan.h"
 #include "motion/frame_poses.h"
@@ -35,12 +36,14 @@ struct CameraRequest {
 
 // What a recording adds to each frame, each kept by reference when given: where TF places the
 // robot in a fixed frame outside it, the TF display of its frames, the frame the view follows, the
-// message displays (fed as frames advance: their scenes are asked for in time order).
+// message displays (fed as frames advance: their scenes are asked for in time order), the camera
+// image behind a calibrated camera (fed likewise: cameras asked for in time order).
 struct SceneAdditions {
   const motion::RootPoses* root = nullptr;
   const TfDisplay* tf = nullptr;
   const FollowedFrame* follow = nullptr;
   FrameDisplays* displays = nullptr;
+  FrameUnderlay* underlay = nullptr;
 };
 
 class AnimationFrames {
@@ -76,7 +79,9 @@ class AnimationFrames {
   // The frame the view follows, if any (none with a fitted camera).
   const FollowedFrame* followed() const { return additions_.follow; }
   // The calibrated camera frame `k` is seen through, if one was asked for (View is then unused):
-  // the same for every frame unless its frame is a TF frame of the bag, which moves it per frame.
+  // the same for every frame unless its frame is a TF frame of the bag, which moves it per frame,
+  // or a bag's camera image is behind it (the image of the frame's moment: frames asked for in
+  // time order; throws urdfsnap::Error as FrameUnderlay::Attach does).
   std::optional<render::CameraSettings> Camera(std::int64_t k, Warnings& warnings) const;
 
  private:

@@ -99,13 +99,15 @@ void ReadFile(Storage storage, const std::string& readable, const std::string& f
 
 }  // namespace
 
+std::string TimeText(std::uint64_t time_ns) {
+  char time[48];
+  std::snprintf(time, sizeof time, "%" PRIu64 ".%09" PRIu64, time_ns / 1'000'000'000, time_ns % 1'000'000'000);
+  return time;
+}
+
 std::string DescribeMessage(const std::string& file, const std::string& topic, std::uint64_t index,
                             std::uint64_t log_time) {
-  char time[48];
-  std::snprintf(time, sizeof time, "%" PRIu64 ".%09" PRIu64, log_time / 1'000'000'000,
-                log_time % 1'000'000'000);
-  return file + ": message " + std::to_string(index) + " on '" + topic + "' (log time " + time +
-         " s)";
+  return file + ": message " + std::to_string(index) + " on '" + topic + "' (log time " + TimeText(log_time) + " s)";
 }
 
 void ReadBagMessages(const std::string& path, const std::function<bool(const BagTopic&)>& wanted,

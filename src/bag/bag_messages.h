@@ -36,6 +36,9 @@ struct BagMessage {
 void ReadBagMessages(const std::string& path, const std::function<bool(const BagTopic&)>& wanted,
                      const std::function<void(const BagMessage&)>& on_message);
 
+// "1712345678.123456789": a time in nanoseconds since 1970 as seconds, for messages.
+std::string TimeText(std::uint64_t time_ns);
+
 // "bag.mcap: message 12 on '/joint_states' (log time 1712345678.123456789 s)": where a message
 // is, for errors about its content.
 std::string DescribeMessage(const std::string& file, const std::string& topic, std::uint64_t index,

@@ -19,6 +19,7 @@
 #include "bag/joint_state_bag.h"
 #include "bag/recorded_description.h"
 #include "cli/bag_batch.h"
+#include "cli/bag_camera_image.h"
 #include "cli/bag_model.h"
 #include "cli/bag_scene.h"
 #include "cli/command.h"
@@ -71,6 +72,7 @@ struct AnimateOptions {
   ShardOptions sharding;      // a frame sequence's contiguous range of frames
   RenderOptions render;
   DisplayOptions displays;   // with the .rviz file's: message displays in every frame
+  BagCameraOptions camera;   // a bag's camera image behind every frame, its calibration
   GlOptions gl_options;
 };
 
@@ -166,19 +168,32 @@ struct PreparedAnimation {
 void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, PreparedAnimation& a,
                       Warnings& warnings) {
   const request::RenderRequest& r = o.render.request;
-  request::ResolvedRequest resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
-  // --fit frames every frame at once, below, not the first pose alone
-  const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
-  const model::NamedValues joints = resolved.joints;
-  const bool clamp = resolved.clamp;
+  // a calibration from the bag (--camera-info-topic) is resolved once the first frame's moment is known
+  std::optional<request::ResolvedRequest> resolved;
+  if (o.camera.camera_info_topic.empty()) resolved = request::ResolveRequest(r, request::CommandLineLabel, warnings);
   if (!o.trajectory.empty()) a.trajectory = motion::ReadTrajectory(o.trajectory, {o.topic}, warnings);
   // a bag: the fixed frame through its TF (odom, map place the robot as RViz's Fixed Frame does),
   // and the TF display of its frames
   const bool bag = !o.trajectory.empty() && motion::IsBag(o.trajectory);
-  PrepareBagScene(session, std::move(resolved), bag ? o.trajectory : "", a.trajectory.stamp_at_zero.value_or(0),
-                  o.model_from_bag, warnings, a.scene);
+  o.camera.RequireBag(bag, "give a recording as MODEL or --trajectory");
+  const double stamp_at_zero = a.trajectory.stamp_at_zero.value_or(0);
   a.plan = Plan(o, a.trajectory);
-  AddSceneDisplays(o.displays, bag ? o.trajectory : "", a.trajectory.stamp_at_zero.value_or(0), a.scene, warnings);
+  if (!resolved) {
+    resolved = ResolveWithBagCamera(r, o.camera, o.trajectory,
+                                    std::llround((stamp_at_zero + a.plan.TrajectoryTime(0)) * 1e9), warnings);
+  }
+  // --fit frames every frame at once, below, not the first pose alone
+  const render::Fit fit = std::exchange(resolved->settings.fit, render::Fit::kNone);
+  const model::NamedValues joints = resolved->joints;
+  const bool clamp = resolved->clamp;
+  PrepareBagScene(session, std::move(*resolved), bag ? o.trajectory : "", stamp_at_zero, o.model_from_bag, warnings,
+                  a.scene);
+  AddSceneDisplays(o.displays, bag ? o.trajectory : "", stamp_at_zero, a.scene, warnings);
+  AddBagUnderlay(o.camera, r, o.trajectory, stamp_at_zero, a.scene);
+  if (a.scene.underlay && !o.print_frame.empty()) {
+    throw Error("--print-frame: the frames show the bag's camera images, which `render` draws with --bag " +
+                o.trajectory + " --at SECONDS");
+  }
   if (a.scene.displays && bag && !o.print_frame.empty()) {
     throw Error("--print-frame: the frames show the bag's messages, which `render` draws with --bag " + o.trajectory +
                 " --at SECONDS");
@@ -275,7 +290,7 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
   const video::FormatDefaults defaults =
       video::DefaultsFor(o.output.empty() ? video::OutputFormat::kMp4 : video::OutputFormatOf(o.output));
   if (o.fps.empty()) o.fps = FormatNumber(defaults.fps);
-  if (r.size.empty()) r.size = defaults.size;
+  if (r.size.empty() && r.camera_info.empty()) r.size = defaults.size;   // a calibration gives its own
   const shard::ShardChoice choice = ChooseShard(o);
   if (!o.depth.empty()) animation::CheckDepthPattern(o.depth, "--depth");
   if (!o.labels.empty()) animation::CheckLabelsPattern(o.labels, "--labels");
@@ -435,7 +450,7 @@ void AddAnimateCommand(CLI::App& app) {
   o->sharding.AddOptions(*cmd, "frames of a frame sequence (a video is never split)");
   o->render.AddOptions(*cmd);
   o->displays.AddOptions(*cmd);
-  o->render.request.size.clear();   // not given: the output format's size (video::DefaultsFor)
+  o->camera.AddOptions(*cmd, "each frame's moment");
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the encoder");
   cmd->callback([o] { Run(*o); });
 }

@@ -15,7 +15,7 @@ namespace urdfsnap::cli {
 
 animation::SceneAdditions BagScene::Additions() {
   return {root ? &*root : nullptr, tf ? &*tf : nullptr, follow ? &*follow : nullptr,
-          displays ? &*displays : nullptr};
+          displays ? &*displays : nullptr, underlay ? &*underlay : nullptr};
 }
 
 void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,

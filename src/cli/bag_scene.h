@@ -13,6 +13,7 @@
 #include "animation/animation_frames.h"
 #include "animation/followed_frame.h"
 #include "animation/frame_displays.h"
+#include "animation/frame_underlay.h"
 #include "animation/tf_display.h"
 #include "cli/display_options.h"
 #include "common/warnings.h"
@@ -33,6 +34,7 @@ struct BagScene {
   // the robot's root in it at each moment (animation::CameraRequest::camera_tf)
   std::optional<motion::RootPoses> camera_tf;
   std::optional<animation::FrameDisplays> displays;   // set for message displays (AddSceneDisplays)
+  std::optional<animation::FrameUnderlay> underlay;   // set for a bag's camera image (AddBagUnderlay)
 
   // What the scene adds to each frame, for animation::AnimationFrames (which feeds the displays).
   animation::SceneAdditions Additions();

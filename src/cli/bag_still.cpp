@@ -28,18 +28,11 @@ void BagStillOptions::AddOptions(CLI::App& command) {
   command.add_option("--description-topic", description_topic,
                      "with --bag and no MODEL, the std_msgs/msg/String topic whose first message is "
                      "the robot description (default /robot_description)");
-  command.add_option("--underlay-topic", underlay_topic,
-                     "with --bag and a camera, draw the robot over this sensor_msgs/msg/Image or "
-                     "CompressedImage topic's latest image at or before --at, as --underlay does with a "
-                     "file (default: none)");
-  command.add_option("--camera-info-topic", camera_info_topic,
-                     "with --bag, the camera's calibration is this sensor_msgs/msg/CameraInfo topic's "
-                     "latest message at or before --at, instead of a --camera-info file (default: none)");
+  camera.AddOptions(command, "--at");
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
                    bool model_from_bag, const DisplayOptions& displays, Warnings& warnings) {
-  request::RequestFiles files = request::ReadRequestFiles(r, warnings);
   trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
   const double at = o.at.empty() ? 0 : request::ParseFinite(o.at, "--at");
   plan_.trajectory_start = motion::TrajectorySeconds(trajectory_, at, "--at");
@@ -50,21 +43,14 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   // the moment as a stamp, nanoseconds since 1970
   const auto moment_ns =
       static_cast<std::int64_t>(std::llround((trajectory_.stamp_at_zero.value_or(0) + plan_.trajectory_start) * 1e9));
-  if (!o.camera_info_topic.empty()) {
-    if (!r.camera_info.empty()) throw Error("--camera-info and --camera-info-topic: give one calibration");
-    files.camera.info = ReadBagCameraInfo(o.bag, o.camera_info_topic, moment_ns);
-    // ReadRequestFiles reads an underlay only for a camera the options name
-    if (!r.underlay.empty() && !files.camera.underlay) {
-      files.camera.underlay = std::make_shared<const image::Image>(image::ReadPng(r.underlay));
-    }
-  }
-  request::ResolvedRequest resolved = request::ResolveRequest(r, files, request::CommandLineLabel);
+  request::ResolvedRequest resolved = ResolveWithBagCamera(r, o.camera, o.bag, moment_ns, warnings);
   const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
   const model::NamedValues joints = resolved.joints;   // -j and --joints: for joints the bag does not name
   const motion::JointRules rules{resolved.clamp};
   PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), model_from_bag,
                   warnings, scene_);
   AddSceneDisplays(displays, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_, warnings);
+  AddBagUnderlay(o.camera, r, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_);
   request::Prepared& prepared = scene_.robot;
   poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);
   const render::RenderSettings& s = prepared.settings;
@@ -74,16 +60,8 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
                   warnings, scene_.Additions());
   prepared.positions = frames_->Positions(0, warnings);
   prepared.settings.view = frames_->View(0);
-  prepared.settings.camera = frames_->Camera(0, warnings);   // a camera in the bag's TF placed at the moment
-  if (!o.underlay_topic.empty()) {
-    if (!prepared.settings.camera) {
-      throw Error("--underlay-topic needs a camera: --camera-info, --camera-frame or --camera-pose");
-    }
-    if (!r.underlay.empty()) throw Error("--underlay and --underlay-topic: give one camera image");
-    BagCameraImage image = ReadBagCameraImage(o.bag, o.underlay_topic, moment_ns);
-    prepared.settings.camera->underlay = std::make_shared<const image::Image>(std::move(image.picture));
-    prepared.settings.camera->underlay_file = image.where;
-  }
+  // a camera in the bag's TF placed at the moment, the bag's camera image of the moment behind it
+  prepared.settings.camera = frames_->Camera(0, warnings);
 }
 
 scene::Scene BagStill::Scene(Warnings& warnings) const {

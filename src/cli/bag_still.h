@@ -14,6 +14,7 @@
 #include "animation/animation_frames.h"
 #include "bag/joint_state_bag.h"
 #include "bag/recorded_description.h"
+#include "cli/bag_camera_image.h"
 #include "cli/bag_scene.h"
 #include "cli/display_options.h"
 #include "common/warnings.h"
@@ -31,8 +32,7 @@ struct BagStillOptions {
   std::string at;    // --at, checked as a number when the still is made
   std::string topic = bag::kDefaultJointStateTopic;
   std::string description_topic = bag::kDefaultDescriptionTopic;
-  std::string underlay_topic;   // --underlay-topic: the camera image behind the robot, "" for none
-  std::string camera_info_topic;   // --camera-info-topic: the camera's calibration, "" for none
+  BagCameraOptions camera;   // --underlay-topic, --camera-info-topic
 
   // Adds --bag, --at, --topic, --description-topic, --underlay-topic and --camera-info-topic to
   // `command`.
@@ -48,9 +48,8 @@ class BagStill {
   // `model_from_bag`: the request's model is the description the bag recorded (see PrepareBagScene).
   // The message displays of the .rviz file and `displays` show the bag's messages up to the moment
   // (AddSceneDisplays). With --underlay-topic the camera's underlay is that topic's image at the
-  // moment (ReadBagCameraImage), with --camera-info-topic its calibration the topic's CameraInfo
-  // then (ReadBagCameraInfo); each an error beside --underlay or --camera-info, and the underlay
-  // without a camera.
+  // moment (AddBagUnderlay), with --camera-info-topic its calibration the topic's CameraInfo then
+  // (ResolveWithBagCamera): what `animate` draws in a frame at the moment.
   BagStill(const BagStillOptions& options, request::RenderSession& session, const request::RenderRequest& request,
            bool model_from_bag, const DisplayOptions& displays, Warnings& warnings);
   BagStill(const BagStill&) = delete;

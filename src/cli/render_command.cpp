@@ -58,12 +58,7 @@ void Run(RenderCommandOptions& o) {
   // a recording: MODEL may be the bag itself, and without a MODEL the bag's robot description
   if (o.bag.bag.empty() && !o.model.path.empty() && motion::IsBag(o.model.path)) o.bag.bag = std::exchange(o.model.path, "");
   if (o.bag.bag.empty() && !o.bag.at.empty()) throw Error("--at: a moment of a recording; give the recording with --bag");
-  for (const auto& [topic, option] : {std::pair{&o.bag.underlay_topic, "--underlay-topic"},
-                                      std::pair{&o.bag.camera_info_topic, "--camera-info-topic"}}) {
-    if (o.bag.bag.empty() && !topic->empty()) {
-      throw Error(std::string(option) + ": a topic of a recording; give the recording with --bag");
-    }
-  }
+  o.bag.camera.RequireBag(!o.bag.bag.empty(), "give the recording with --bag");
   if (o.bag.bag.empty() && o.model.path.empty()) throw Error("render: give MODEL (a URDF or xacro file) or --bag");
   std::optional<BagModel> bag_model;
   if (o.model.path.empty()) bag_model.emplace(o.bag.bag, o.bag.description_topic);

@@ -1,6 +1,8 @@
 // Display construction and message routing by topic.
 #include "display/display_set.h"
 
+#include <utility>
+
 #include "bag/cdr_reader.h"
 #include "common/error.h"
 #include "display/make_display.h"
@@ -13,6 +15,12 @@ DisplaySet::DisplaySet(const std::vector<DisplaySettings>& settings, const std::
     names_.push_back(s.name);
     displays_.push_back(MakeDisplay(s, fixed_frame, resources));
   }
+}
+
+Display& DisplaySet::Add(std::string name, std::unique_ptr<Display> display) {
+  names_.push_back(std::move(name));
+  displays_.push_back(std::move(display));
+  return *displays_.back();
 }
 
 bool DisplaySet::Subscribes(const std::string& topic) const {

@@ -22,6 +22,11 @@ class DisplaySet {
  public:
   DisplaySet(const std::vector<DisplaySettings>& settings, const std::string& fixed_frame,
              const MarkerResources& resources);
+  DisplaySet() = default;
+
+  // Adds a display made elsewhere (one a command reads, such as a camera image), named `name` in
+  // warnings; it stays where it is while the set lives.
+  Display& Add(std::string name, std::unique_ptr<Display> display);
 
   // Whether any display subscribes to `topic`.
   bool Subscribes(const std::string& topic) const;

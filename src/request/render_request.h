@@ -11,13 +11,16 @@
 
 namespace urdfsnap::request {
 
+// The image size when --size is not given: the RViz reference screenshots'.
+inline constexpr const char* kDefaultSize = "640x480";
+
 // View and display options as text, exactly as given; an empty string or false means "not given"
 // (keep RViz's default or the .rviz file's value). RenderSession checks and applies them.
 struct RenderRequest {
   ModelRequest model;
   std::string joint_file;    // YAML/JSON joint file, applied before `joints`
   model::NamedValues joints;  // NAME=VALUE in rad or m; a later entry wins
-  std::string size = "640x480";
+  std::string size;   // WxH; not given: kDefaultSize, or the calibration's size with --camera-info
   std::string rviz;
   std::string yaw, pitch, distance, focal, fov;
   std::string fixed_frame, background, alpha, tf_scale;

@@ -64,7 +64,7 @@ render::RenderSettings ReadBaseSettings(const RenderRequest& r, Warnings& warnin
 
 void ApplyOptions(const RenderRequest& r, const CameraFiles& camera_files, const OptionLabel& label,
                   render::RenderSettings& settings) {
-  settings.size = ParseImageSize(r.size, label("size"));
+  settings.size = ParseImageSize(r.size.empty() ? kDefaultSize : r.size, label("size"));
   ApplyView(r, label, settings.view);
   ApplyScene(r, label, settings.scene);
   if (!r.follow.empty()) settings.target_frame = r.follow;
@@ -93,6 +93,9 @@ void WarnOfOptionsWithoutEffect(const RenderRequest& r, const OptionLabel& label
   }
   // a camera replaces the orbit view (and --camera-info its field of view); --fit is an error there
   if (r.camera_info.empty() && r.camera_frame.empty() && r.camera_pose.empty()) return;
+  if (!r.camera_info.empty() && !r.size.empty()) {
+    WarnIgnored(warnings, label("size") + " " + r.size, "the size comes from the calibration (" + label("camera-info") + ")");
+  }
   for (const auto& [given, name] : {std::pair{!r.yaw.empty(), "yaw"}, {!r.pitch.empty(), "pitch"},
                                     {!r.distance.empty(), "distance"}, {!r.focal.empty(), "focal"},
                                     {!r.follow.empty(), "follow"}, {!r.fov.empty() && !r.camera_info.empty(), "fov"}}) {

@@ -182,9 +182,10 @@ struct Server::Impl {
         query.erase(found);
       }
       r = RequestFromQuery(query, options.base);
-      const render::ImageSize size = request::ParseImageSize(r.size, "--size");
+      const std::string size_text = r.size.empty() ? request::kDefaultSize : r.size;
+      const render::ImageSize size = request::ParseImageSize(size_text, "--size");
       if (size.width > options.max_size.width || size.height > options.max_size.height) {
-        throw Error("--size '" + r.size + "': urdfsnap serve renders at most " +
+        throw Error("--size '" + size_text + "': urdfsnap serve renders at most " +
                     std::to_string(options.max_size.width) + "x" +
                     std::to_string(options.max_size.height) + " pixels (--max-size)");
       }

@@ -112,6 +112,51 @@ TEST_F(BagUnderlayTest, TheLatestImageAtOrBeforeTheMomentIsBehindTheRobot) {
   EXPECT_EQ(Render(down + " --underlay-alpha 1").rgb, a.rgb);
 }
 
+// /camera/moving's picture k: stamped at k / 2 s, logged 0.15 s later.
+image::Image Moving(int k) {
+  return Expected([k](int x, int y) { return std::array{x * 6, y * 10, k * 40}; });
+}
+
+TEST_F(BagUnderlayTest, AnImageIsShownOnceReceivedAsRvizShowsIt) {
+  // picture 1 is stamped at 0.5 s but arrives at 0.65 s: until then picture 0 is the newest received
+  EXPECT_EQ(Render(away_ + "/camera/moving --at 0.6").rgb, Moving(0).rgb);
+  EXPECT_EQ(Render(away_ + "/camera/moving --at 0.7").rgb, Moving(1).rgb);
+  EXPECT_EQ(Render(away_ + "/camera/moving --at 2").rgb, Moving(3).rgb);   // picture 4 arrives at 2.15 s
+  Fails("--bag " + bag_ + " " + away_ + "/camera/moving --at 0.1",
+        "no image on '/camera/moving' received at or before the moment drawn (stamp 1700000000.");
+}
+
+TEST_F(BagUnderlayTest, AnimateShowsEachFramesImageAsRenderAtThatMomentDoes) {
+  // frames at 0.2 s, 0.4 s, ... 2 s: each the image received by then, in one pass over the bag
+  const auto animate = [&](const std::string& view, const std::string& name) {
+    const Result result = RunUrdfsnap("animate " + bag_ + " " + view + " --underlay-topic /camera/moving --start 0.2 "
+                                      "--fps 5 -q -o " + Path(name + "/%02d.png"));
+    EXPECT_EQ(result.status, 0) << result.output;
+  };
+  animate("--camera-pose 0,0,10,0,0,0,1 --size 40x24", "away");
+  for (int k = 0; k < 10; ++k) {
+    const int shown = (4 * k + 1) / 10;   // frame k at 0.2 (k + 1) s; picture j arrives at j / 2 + 0.15 s
+    EXPECT_EQ(image::ReadPng(Path("away/0" + std::to_string(k) + ".png")).rgb, Moving(shown).rgb) << k;
+  }
+  // the robot over the images: a frame is the still `render --bag --at` draws at its moment, byte for byte
+  const std::string down = "--camera-pose 0,0,1.2,1,0,0,0 --size 40x24 --fov 90";
+  animate(down, "down");
+  for (const auto& [k, at] : {std::pair{0, "0.2"}, std::pair{2, "0.6"}, std::pair{9, "2"}}) {
+    std::ifstream frame(Path("down/0" + std::to_string(k) + ".png"), std::ios::binary);
+    Render(down + " --underlay-topic /camera/moving --at " + at);
+    std::ifstream still(Path("render_" + std::to_string(renders_ - 1) + ".png"), std::ios::binary);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(frame), {}), std::string(std::istreambuf_iterator<char>(still), {}))
+        << "frame " << k;
+  }
+  // a frame before the first image is an error naming the moment
+  const Result early = RunUrdfsnap("animate " + bag_ + " " + down + " --underlay-topic /camera/moving --fps 5 -q -o " +
+                                   Path("early.mp4"));
+  EXPECT_EQ(early.status, 2);
+  EXPECT_NE(early.output.find("no image on '/camera/moving' received at or before the moment drawn"), std::string::npos)
+      << early.output;
+  EXPECT_FALSE(fs::exists(Path("early.mp4")));
+}
+
 TEST_F(BagUnderlayTest, GreyAndDepthImagesAreScaledAsRvizShowsThem) {
   EXPECT_EQ(Render(away_ + "/camera/mono8").rgb,
             Expected([](int x, int y) { return std::array{Grey(x, y), Grey(x, y), Grey(x, y)}; }).rgb);

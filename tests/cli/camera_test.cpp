@@ -157,6 +157,22 @@ TEST_F(CameraTest, UnderlayShowsBehindAndThroughTheRobot) {
   EXPECT_LT(grown, 2 * 3 * (108 + 43) + 4 * 9);
 }
 
+TEST_F(CameraTest, ASizeBesideACalibrationIsIgnoredWithAWarning) {
+  URDFSNAP_REQUIRE_GL();
+  // the calibration's 400x240 either way; only a --size given is warned of, not the default
+  EXPECT_EQ(Render(""), "");
+  EXPECT_EQ(Render("--size 640x480"),
+            "urdfsnap: warning: --size 640x480 is ignored: the size comes from the calibration (--camera-info)\n");
+  EXPECT_EQ(image::ReadGray16Png(Path("l.png")).width, 400);
+  // animate's size from its output format is no given size either
+  const Result animate = RunUrdfsnap("animate " + Write("box.urdf", kBoxRobot) + " --camera-info " +
+                                     Path("cam.yaml") + " " + kLookingDown + " --turntable --duration 0.1 --fps 10 -q -o " +
+                                     Path("a/%02d.png"));
+  EXPECT_EQ(animate.status, 0) << animate.output;
+  EXPECT_EQ(animate.output, "");
+  EXPECT_EQ(image::ReadGray16Png(Path("a/00.png")).width, 400);
+}
+
 TEST_F(CameraTest, CameraOptionErrorsAreOneLine) {
   const std::string model = Write("box.urdf", kBoxRobot) + " -o " + Path("x.png") + " ";
   const std::string info = " --camera-info " + Write("cam.yaml", kCameraInfo);

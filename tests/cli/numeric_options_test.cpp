@@ -166,6 +166,8 @@ const std::vector<CommandOption>& Options() {
         {"render", "--description-topic", Kind::kText},
         {"render", "--underlay-topic", Kind::kText},
         {"render", "--camera-info-topic", Kind::kText},
+        {"animate", "--underlay-topic", Kind::kText},
+        {"animate", "--camera-info-topic", Kind::kText},
         {"render", "--keypoints", Kind::kText},
         {"render", "--mask-dilate", Kind::kNumber, "MRM -o OUT --mask M.png --mask-dilate {v}"},
         {"animate", "--mask", Kind::kText},

@@ -322,7 +322,8 @@ for (const [name, messages] of Object.entries(tfBags)) {
 // them): picture A at 0 s, picture B at 1 s on /camera/rgb8 (rows padded by 4 bytes); picture A in
 // every other encoding RViz shows, as a PNG and tests/data/jpeg/gradients.jpg (40x24) as
 // CompressedImage; and hostile messages (a step that lies, data too short, an unknown encoding);
-// CameraInfo messages.
+// CameraInfo messages; a moving sequence on /camera/moving. Each is logged at its stamp, but the
+// moving ones later.
 const kCameraWidth = 40, kCameraHeight = 24;
 function picture(x, y, b) {
   return b ? [255 - x * 6, 255 - y * 10, x * 6] : [x * 6, y * 10, 255 - x * 6];
@@ -398,11 +399,20 @@ function cameraImages() {
   }
   for (const [topic, writers] of Object.entries(topics)) {
     channels.push({ topic, schema: { name: "sensor_msgs/msg/Image", encoding: "ros2msg", data: new Uint8Array() } });
-    writers.forEach((write, k) => messages.push([2 + channels.length, nanos({ sec: kStartSec + k, nanosec: 1000 }), write(kStartSec + k)]));
+    writers.forEach((write, k) => messages.push([2 + channels.length, nanos({ sec: kStartSec + k, nanosec: 0 }), write(kStartSec + k)]));
+  }
+  // a moving camera: picture k (blue k * 40) stamped at k / 2 s and logged 0.15 s later, as a camera
+  // driver's images arrive
+  channels.push({ topic: "/camera/moving", schema: { name: "sensor_msgs/msg/Image", encoding: "ros2msg", data: new Uint8Array() } });
+  for (let k = 0; k < 5; ++k) {
+    const data = pixels(([r, g]) => [r, g, k * 40], 3);
+    const stamp = { sec: kStartSec + Math.floor(k / 2), nanosec: (k % 2) * 500_000_000 };
+    messages.push([2 + channels.length, nanos(stamp) + 150_000_000n,
+      imageWriter.writeMessage({ header: { stamp, frame_id: "camera" }, height: h, width: w, encoding: "rgb8", is_bigendian: 0, step: w * 3, data })]);
   }
   for (const [topic, bytes] of Object.entries(compressed)) {
     channels.push({ topic, schema: { name: "sensor_msgs/msg/CompressedImage", encoding: "ros2msg", data: new Uint8Array() } });
-    messages.push([2 + channels.length, nanos({ sec: kStartSec, nanosec: 1000 }), bytes]);
+    messages.push([2 + channels.length, nanos({ sec: kStartSec, nanosec: 0 }), bytes]);
   }
   return { channels, messages };
 }
