@@ -25,6 +25,36 @@ render::ImageSize SizeOf(PictureSize size) { return {size.width, size.height}; }
 // The length of RViz's TF axes at marker scale 1 (tf_display.cpp), in metres.
 constexpr double kRvizAxisLength = 0.2;
 
+// The page's TF picture before it is drawn.
+struct TfPicture {
+  scene::Scene scene;
+  scene::OrbitView view;
+  render::ImageSize size;
+  std::vector<LeftOutName> left_out;   // the frames whose names it leaves out
+};
+
+// The TF frames of the robot as shown (`visual`) from the camera that frames it, their axes a
+// share of the picture's height (unless --tf-scale was given) and their names laid out so that
+// none hides another. GL-free.
+TfPicture LayOutTfPicture(const std::shared_ptr<const model::Robot>& robot, const render::RobotRenderer& visual,
+                          const RobotPage& page, const PageLook& look, Warnings& warnings) {
+  TfPicture tf;
+  tf.size = SizeOf(page.tf_size);
+  const auto pose = [&](int) { return page.default_positions; };
+  tf.view = visual.FitView(look.settings.fit, look.settings.fit_margin, look.settings.view, tf.size, 1, pose);
+  scene::SceneOptions options = look.settings.scene;
+  options.tf.enabled = true;
+  options.alpha *= look.tf_alpha;
+  if (!look.tf_scale_given) {
+    const double picture_height = 2 * tf.view.distance * std::tan(tf.view.fov_y / 2);   // metres at the focal point
+    options.tf.marker_scale = look.tf_axis_share * picture_height / kRvizAxisLength;
+  }
+  const render::RobotRenderer frames(robot, options, warnings);
+  tf.scene = frames.Pose(page.default_positions);
+  if (!tf.scene.labels.empty()) tf.left_out = LayOutTfNames(tf.scene, robot->LinkNames(), tf.view, tf.size);
+  return tf;
+}
+
 class PageRenderer {
  public:
   PageRenderer(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
@@ -127,26 +157,12 @@ class PageRenderer {
     Write(robot.Render(gl_, page_.default_positions, view, size).colour, file);
   }
 
-  // The TF frames from the camera that frames the robot, their axes a share of the picture's
-  // height (unless --tf-scale was given) and their names laid out so that none hides another;
-  // drawn when wanted, laid out always: the page names what it leaves out. Returns those names.
+  // The TF picture, drawn when wanted; laid out always: the page names what it leaves out.
+  // Returns those names.
   std::vector<LeftOutName> TfView() {
-    const render::ImageSize size = SizeOf(page_.tf_size);
-    const auto pose = [&](int) { return page_.default_positions; };
-    const scene::OrbitView view = visual_.FitView(look_.settings.fit, look_.settings.fit_margin, look_.settings.view, size, 1, pose);
-    scene::SceneOptions options = look_.settings.scene;
-    options.tf.enabled = true;
-    options.alpha *= look_.tf_alpha;
-    if (!look_.tf_scale_given) {
-      const double picture_height = 2 * view.distance * std::tan(view.fov_y / 2);   // metres at the focal point
-      options.tf.marker_scale = look_.tf_axis_share * picture_height / kRvizAxisLength;
-    }
-    const render::RobotRenderer tf(robot_, options, warnings_);
-    scene::Scene scene = tf.Pose(page_.default_positions);
-    std::vector<LeftOutName> left_out;
-    if (!scene.labels.empty()) left_out = LayOutTfNames(scene, robot_->LinkNames(), view, size);
-    if (Wanted(page_.tf_file)) Write(gl_.Render(scene, view, size.width, size.height).colour, page_.tf_file);
-    return left_out;
+    TfPicture tf = LayOutTfPicture(robot_, visual_, page_, look_, warnings_);
+    if (Wanted(page_.tf_file)) Write(gl_.Render(tf.scene, tf.view, tf.size.width, tf.size.height).colour, page_.tf_file);
+    return tf.left_out;
   }
 
   // The camera's yaw once around, at the distance that frames the robot from every side.
@@ -231,6 +247,11 @@ std::int64_t ImageCount(const std::vector<PageImage>& files) {
   std::int64_t count = 0;
   for (const PageImage& file : files) count += file.images;
   return count;
+}
+
+std::vector<LeftOutName> TfLeftOut(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
+                                   const PageLook& look, Warnings& warnings) {
+  return LayOutTfPicture(robot, render::RobotRenderer(robot, look.settings.scene, warnings), page, look, warnings).left_out;
 }
 
 std::vector<LeftOutName> RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,

@@ -62,4 +62,10 @@ std::vector<LeftOutName> RenderPageImages(const std::shared_ptr<const model::Rob
                       const PageLook& look, const std::vector<PageImage>& files,
                       const std::filesystem::path& folder, Warnings& warnings, const Progress& progress);
 
+// The frame names the TF picture of `page` leaves out, as RenderPageImages returns them, without
+// drawing anything (GL-free): for the page's text when its pictures are made elsewhere (docs
+// --jobs). Throws urdfsnap::Error as RenderPageImages does for files the robot needs.
+std::vector<LeftOutName> TfLeftOut(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
+                                   const PageLook& look, Warnings& warnings);
+
 }  // namespace urdfsnap::docs
