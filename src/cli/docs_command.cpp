@@ -45,7 +45,7 @@ struct DocsOptions {
   bool quiet = false;
   ShardOptions sharding;            // a contiguous part of the page's pictures and animations
   int jobs = 0;                     // --jobs: worker processes; 0 = one per usable core
-  std::optional<std::string> worker_shard;   // a worker's shard, "K/N" (given by its parent)
+  int worker_pieces = 0;            // a worker's: the pieces its parent cut the page into
   std::string worker_folder;        // the parent's folder a worker writes its files into
   RenderOptions render;             // the pose (-j, --joints) and the view and display options
   std::vector<std::string> refused; // the kNotOnDocs options given, in order
@@ -82,6 +82,13 @@ void Report(const std::string& folder, const std::vector<std::string>& differenc
   WriteToStdout(text);
   throw CommandExit{1};
 }
+
+// The pieces `docs --jobs N` cuts a page into per worker (contiguous runs of its pictures and
+// animations, each worker taking the next as it finishes one): enough that the workers end within
+// a piece of each other although the pieces differ in cost (a PR2 page cut into two halves by
+// their images took 12.9 and 16.7 s of CPU), few enough that a joint section is seldom set up in
+// two workers.
+constexpr int kPiecesPerWorker = 8;
 
 // The page as planned: the robot prepared as its pictures show it, its content and its files.
 struct PagePlan {
@@ -121,11 +128,11 @@ PagePlan PlanPage(DocsOptions& o, const gl::BackendChoice& backend, Warnings& wa
   return plan;
 }
 
-// A worker process of a parent's `docs --jobs N` (the hidden --worker-shard and --worker-folder):
-// the pictures and animations of its shard into the parent's folder, its progress on stdout, its
-// warnings on stderr for the parent to gather; no documents.
+// A worker process of a parent's `docs --jobs N` (the hidden --worker-pieces and --worker-folder):
+// the pictures and animations of each piece the parent hands it into the parent's folder, its
+// progress on stdout, its warnings on stderr for the parent to gather; no documents.
 void RunWorker(DocsOptions& o) {
-  cli::StopWhenParentEnds();
+  StopWhenParentEnds();
   const gl::BackendChoice backend = o.gl_options.Choice();
   const auto gl_loading = gl::StartLoadingGl(backend.backend);
   Warnings warnings;
@@ -134,9 +141,12 @@ void RunWorker(DocsOptions& o) {
     o.render.ParseJointWords();
     o.render.request.model = o.model.ToRequest();
     const PagePlan plan = PlanPage(o, backend, warnings);
-    const std::vector<docs::PageImage> files =
-        docs::ShardPageImages(plan.files, shard::ParseShard(*o.worker_shard, "--worker-shard"));
-    docs::RenderPageImages(plan.prepared.robot, plan.page, plan.look, files, o.worker_folder, warnings,
+    const auto next = [&]() -> std::optional<std::vector<docs::PageImage>> {
+      const std::optional<int> piece = NextPiece();
+      if (!piece) return std::nullopt;
+      return docs::ShardPageImages(plan.files, shard::CheckedShard(*piece, o.worker_pieces, "piece"));
+    };
+    docs::RenderPagePieces(plan.prepared.robot, plan.page, plan.look, next, o.worker_folder, warnings,
                            [](std::int64_t done, std::int64_t) { ReportImagesDone(done); });
   } catch (...) {
     PrintWarningsBeforeError(warnings);
@@ -154,7 +164,7 @@ int WorkerCount(const DocsOptions& o, const shard::ShardChoice& choice) {
 }
 
 void Run(DocsOptions& o) {
-  if (o.worker_shard) return RunWorker(o);
+  if (o.worker_pieces > 0) return RunWorker(o);
   if (o.output.empty() == o.check.empty()) {
     throw Error("docs: give -o DIR to write a page, or --check DIR to compare a committed page with a fresh one");
   }
@@ -188,9 +198,10 @@ void Run(DocsOptions& o) {
     // workers start before this process reads the model, which they read too
     std::optional<WorkerProcesses> workers;
     if (jobs > 1) {
-      workers.emplace(jobs, "docs", [&](shard::Shard shard) {
-        return std::vector<std::string>{"--worker-shard", shard::ShardText(shard), "--worker-folder", folder.string()};
-      });
+      const int pieces = kPiecesPerWorker * jobs;
+      workers.emplace(jobs, "docs",
+                      std::vector<std::string>{"--worker-pieces", std::to_string(pieces), "--worker-folder", folder.string()},
+                      pieces);
     }
     const PagePlan plan = PlanPage(o, backend, warnings);
     const std::vector<docs::PageImage> files = docs::ShardPageImages(plan.files, choice.shard);
@@ -279,7 +290,7 @@ void AddDocsCommand(CLI::App& app) {
                   "animations (default: one per core this process may use; 1: in this process). "
                   "With --shard, or a model or joint file on standard input, one process")
       ->check(CLI::Range(1, 256));
-  cmd->add_option("--worker-shard", o->worker_shard)->group("");   // WorkerProcesses' own
+  cmd->add_option("--worker-pieces", o->worker_pieces)->group("");   // WorkerProcesses' own
   cmd->add_option("--worker-folder", o->worker_folder)->group("");
   cmd->callback([o] {
     try {

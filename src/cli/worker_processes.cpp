@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdio>
@@ -66,31 +67,31 @@ std::vector<std::string> OwnCommandLine() {
   return words;
 }
 
-WorkerProcesses::WorkerProcesses(int count, const std::string& command,
-                                 const std::function<std::vector<std::string>(shard::Shard)>& options) {
+WorkerProcesses::WorkerProcesses(int count, const std::string& command, const std::vector<std::string>& options,
+                                 int pieces)
+    : pieces_(pieces) {
   sigset_t stop;
   sigemptyset(&stop);
   sigaddset(&stop, SIGINT);
   sigaddset(&stop, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop, &caller_mask_);
   signal_fd_ = signalfd(-1, &stop, SFD_CLOEXEC);
-  const std::vector<std::string> line = OwnCommandLine();
-  size_t at = 1;
-  while (at < line.size() && line[at] != command) ++at;
+  // a worker that has ended makes writing to its stdin fail (EPIPE), not end this process
+  struct sigaction ignore {};
+  ignore.sa_handler = SIG_IGN;
+  sigaction(SIGPIPE, &ignore, &caller_sigpipe_);
+  std::vector<std::string> arguments = OwnCommandLine();
+  const auto at = std::find(arguments.begin() + std::min<size_t>(1, arguments.size()), arguments.end(), command);
   try {
     if (signal_fd_ < 0) throw Error(SystemError("cannot start worker processes: signalfd"));
-    if (at == line.size()) throw Error("cannot start worker processes: no '" + command + "' in this process's command line");
+    if (at == arguments.end()) throw Error("cannot start worker processes: no '" + command + "' in this process's command line");
+    arguments.insert(at + 1, options.begin(), options.end());
     workers_.resize(count);
-    for (int k = 0; k < count; ++k) {
-      workers_[k].shard = {k + 1, count};
-      std::vector<std::string> arguments(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(at) + 1);
-      for (std::string& option : options(workers_[k].shard)) arguments.push_back(std::move(option));
-      arguments.insert(arguments.end(), line.begin() + static_cast<std::ptrdiff_t>(at) + 1, line.end());
-      Start(workers_[k], arguments);
-    }
+    for (Worker& worker : workers_) Start(worker, arguments);
   } catch (...) {
     StopAll();
     if (signal_fd_ >= 0) close(signal_fd_);
+    sigaction(SIGPIPE, &caller_sigpipe_, nullptr);
     pthread_sigmask(SIG_SETMASK, &caller_mask_, nullptr);
     throw;
   }
@@ -99,35 +100,42 @@ WorkerProcesses::WorkerProcesses(int count, const std::string& command,
 WorkerProcesses::~WorkerProcesses() {
   StopAll();
   close(signal_fd_);
+  sigaction(SIGPIPE, &caller_sigpipe_, nullptr);
   pthread_sigmask(SIG_SETMASK, &caller_mask_, nullptr);
 }
 
 void WorkerProcesses::Start(Worker& worker, const std::vector<std::string>& arguments) {
-  std::array<int, 2> out{-1, -1}, err{-1, -1};
-  if (pipe2(out.data(), O_CLOEXEC) != 0 || pipe2(err.data(), O_CLOEXEC) != 0) {
+  std::array<int, 2> in{-1, -1}, out{-1, -1}, err{-1, -1};
+  if (pipe2(in.data(), O_CLOEXEC) != 0 || pipe2(out.data(), O_CLOEXEC) != 0 || pipe2(err.data(), O_CLOEXEC) != 0) {
     const std::string message = SystemError("cannot start worker processes: pipe");
-    for (const int fd : {out[0], out[1], err[0], err[1]}) {
+    for (const int fd : {in[0], in[1], out[0], out[1], err[0], err[1]}) {
       if (fd >= 0) close(fd);
     }
     throw Error(message);
   }
   posix_spawn_file_actions_t files;
   posix_spawn_file_actions_init(&files);
-  posix_spawn_file_actions_addopen(&files, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&files, in[0], STDIN_FILENO);
   posix_spawn_file_actions_adddup2(&files, out[1], STDOUT_FILENO);
   posix_spawn_file_actions_adddup2(&files, err[1], STDERR_FILENO);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   posix_spawnattr_setsigmask(&attributes, &caller_mask_);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
+  sigset_t sigpipe;   // as the caller had it, not ignored as here
+  sigemptyset(&sigpipe);
+  if (caller_sigpipe_.sa_handler != SIG_IGN) sigaddset(&sigpipe, SIGPIPE);
+  posix_spawnattr_setsigdefault(&attributes, &sigpipe);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
   std::vector<char*> argv;
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
   const int failed = posix_spawn(&worker.pid, "/proc/self/exe", &files, &attributes, argv.data(), environ);
   posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&files);
+  close(in[0]);
   close(out[1]);
   close(err[1]);
+  worker.in = in[1];
   worker.out = out[0];
   worker.err = err[0];
   if (failed != 0) {
@@ -146,7 +154,7 @@ void WorkerProcesses::StopAll() {
       }
       worker.pid = -1;
     }
-    for (int* fd : {&worker.out, &worker.err}) {
+    for (int* fd : {&worker.in, &worker.out, &worker.err}) {
       if (*fd >= 0) close(*fd);
       *fd = -1;
     }
@@ -164,7 +172,9 @@ bool WorkerProcesses::Drain(Worker& worker, int fd, Warnings& warnings) {
       line += c;
       continue;
     }
-    if (fd == worker.out) {
+    if (fd == worker.out && line == "next") {
+      HandOut(worker);
+    } else if (fd == worker.out) {
       worker.done = std::strtoll(line.c_str(), nullptr, 10);
     } else if (line.starts_with(kWarning)) {
       warnings.Add(line.substr(kWarning.size()));
@@ -178,9 +188,20 @@ bool WorkerProcesses::Drain(Worker& worker, int fd, Warnings& warnings) {
   return true;
 }
 
-std::string WorkerProcesses::Failure(const Worker& worker, int status) const {
+void WorkerProcesses::HandOut(Worker& worker) {
+  if (worker.in < 0) return;
+  if (next_piece_ <= pieces_) {
+    const std::string line = std::to_string(next_piece_++) + "\n";
+    if (write(worker.in, line.data(), line.size()) == static_cast<ssize_t>(line.size())) return;
+  }
+  close(worker.in);   // no piece left (or the worker has gone: its end is read from its stdout)
+  worker.in = -1;
+}
+
+std::string WorkerProcesses::Failure(size_t index, int status) const {
+  const Worker& worker = workers_[index];
   if (!worker.error.empty()) return worker.error;
-  const std::string who = "worker " + shard::ShardText(worker.shard);
+  const std::string who = "worker process " + std::to_string(index + 1) + " of " + std::to_string(workers_.size());
   if (WIFSIGNALED(status)) return who + " was ended by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
   return who + " ended with status " + std::to_string(WEXITSTATUS(status)) + " and no error message";
 }
@@ -218,19 +239,30 @@ void WorkerProcesses::Wait(const std::function<void(std::int64_t done)>& progres
     std::int64_t done = 0;
     for (const Worker& worker : workers_) done += worker.done;
     if (progress) progress(done);
-    for (Worker& worker : workers_) {
+    for (size_t index = 0; index < workers_.size(); ++index) {
+      Worker& worker = workers_[index];
       if (worker.pid < 0 || worker.out >= 0 || worker.err >= 0) continue;
       int status = 0;
       while (waitpid(worker.pid, &status, 0) < 0 && errno == EINTR) {
       }
       worker.pid = -1;
+      if (worker.in >= 0) close(worker.in);
+      worker.in = -1;
       --running;
       if (WIFEXITED(status) && WEXITSTATUS(status) == 0) continue;
-      const std::string failure = Failure(worker, status);
+      const std::string failure = Failure(index, status);
       StopAll();
       throw Error(failure);
     }
   }
+}
+
+std::optional<int> NextPiece() {
+  std::printf("next\n");
+  std::fflush(stdout);
+  char line[32];
+  if (std::fgets(line, sizeof line, stdin) == nullptr) return std::nullopt;
+  return static_cast<int>(std::strtol(line, nullptr, 10));
 }
 
 void ReportImagesDone(std::int64_t done) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include "docs/animation_output.h"
@@ -58,14 +59,26 @@ TfPicture LayOutTfPicture(const std::shared_ptr<const model::Robot>& robot, cons
 class PageRenderer {
  public:
   PageRenderer(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
-               const std::vector<PageImage>& files, const std::filesystem::path& folder, Warnings& warnings,
-               const Progress& progress)
+               const std::filesystem::path& folder, Warnings& warnings, const Progress& progress)
       : robot_(robot), page_(page), look_(look), folder_(folder), warnings_(warnings), progress_(progress),
-        total_(ImageCount(files)), gl_(look.settings.samples, look.backend),
-        visual_(robot, look.settings.scene, warnings) {
+        gl_(look.settings.samples, look.backend), visual_(robot, look.settings.scene, warnings) {}
+
+  // Makes `files` of the page, in page order; the progress counts on from the files made before.
+  void Make(const std::vector<PageImage>& files) {
+    wanted_.clear();
     for (const PageImage& file : files) wanted_.insert(file.file);
+    total_ += ImageCount(files);
+    Views();
+    for (const JointSection& section : page_.sections) Section(section);
   }
 
+  // The frame names the TF picture leaves out.
+  const std::vector<LeftOutName>& tf_left_out() {
+    if (!tf_left_out_) tf_left_out_ = TfView();
+    return *tf_left_out_;
+  }
+
+ private:
   void Views() {
     scene::SceneOptions options = look_.settings.scene;
     if (Wanted(page_.hero_file)) Still(visual_, page_.hero_file);
@@ -76,12 +89,10 @@ class PageRenderer {
       Still(render::RobotRenderer(robot_, options, warnings_), page_.collision_file);
     }
 
-    tf_left_out_ = TfView();
+    if (Wanted(page_.tf_file)) tf_left_out_ = TfView();
 
     if (Wanted(page_.turntable_file)) Turntable(visual_);
   }
-
-  const std::vector<LeftOutName>& tf_left_out() const { return tf_left_out_; }
 
   void Section(const JointSection& section) {
     const bool any = Wanted(section.sweep_file) ||
@@ -116,7 +127,6 @@ class PageRenderer {
     }
   }
 
- private:
   // Whether `file` is one to make here (never "": a picture the page does not have).
   bool Wanted(const std::string& file) const { return wanted_.count(file) > 0; }
 
@@ -216,7 +226,7 @@ class PageRenderer {
   Warnings& warnings_;
   Warnings ignored_;   // a section's poses': the page's pose was warned of when it was resolved
   const Progress& progress_;
-  const std::int64_t total_;
+  std::int64_t total_ = 0;
   std::int64_t done_ = 0;
   gl::SceneRenderer gl_;
   // the robot as shown, kept for the whole page: while it holds the mesh files and textures, every
@@ -224,7 +234,7 @@ class PageRenderer {
   // each variant, the PR2's were decoded and uploaded again for each of its 39 joint sections)
   const render::RobotRenderer visual_;
   std::set<std::string> wanted_;
-  std::vector<LeftOutName> tf_left_out_;
+  std::optional<std::vector<LeftOutName>> tf_left_out_;   // laid out with the TF picture, or when asked
 };
 
 }  // namespace
@@ -258,10 +268,16 @@ std::vector<LeftOutName> RenderPageImages(const std::shared_ptr<const model::Rob
                                           const PageLook& look, const std::vector<PageImage>& files,
                                           const std::filesystem::path& folder, Warnings& warnings,
                                           const Progress& progress) {
-  PageRenderer renderer(robot, page, look, files, folder, warnings, progress);
-  renderer.Views();
-  for (const JointSection& section : page.sections) renderer.Section(section);
+  PageRenderer renderer(robot, page, look, folder, warnings, progress);
+  renderer.Make(files);
   return renderer.tf_left_out();
+}
+
+void RenderPagePieces(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
+                      const std::function<std::optional<std::vector<PageImage>>()>& next,
+                      const std::filesystem::path& folder, Warnings& warnings, const Progress& progress) {
+  PageRenderer renderer(robot, page, look, folder, warnings, progress);
+  while (const std::optional<std::vector<PageImage>> files = next()) renderer.Make(*files);
 }
 
 }  // namespace urdfsnap::docs

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,14 @@ std::int64_t ImageCount(const std::vector<PageImage>& files);
 // be read (located at the link), no GL context, an image that cannot be written.
 std::vector<LeftOutName> RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
                       const PageLook& look, const std::vector<PageImage>& files,
+                      const std::filesystem::path& folder, Warnings& warnings, const Progress& progress);
+
+// Renders the pictures and animations of `page` piece by piece, as RenderPageImages does, in one GL
+// context (meshes and textures uploaded once): the files of each piece `next()` gives, until it
+// gives none (nullopt). For the worker processes of `docs --jobs`, which take pieces as they
+// finish others. The progress counts every image made so far.
+void RenderPagePieces(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
+                      const std::function<std::optional<std::vector<PageImage>>()>& next,
                       const std::filesystem::path& folder, Warnings& warnings, const Progress& progress);
 
 // The frame names the TF picture of `page` leaves out, as RenderPageImages returns them, without
