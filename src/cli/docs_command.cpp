@@ -86,8 +86,8 @@ void Report(const std::string& folder, const std::vector<std::string>& differenc
 // The pieces `docs --jobs N` cuts a page into per worker (contiguous runs of its pictures and
 // animations, each worker taking the next as it finishes one): enough that the workers end within
 // a piece of each other although the pieces differ in cost (a PR2 page cut into two halves by
-// their images took 12.9 and 16.7 s of CPU), few enough that a joint section is seldom set up in
-// two workers.
+// their images took 12.9 and 16.7 s of CPU), few enough that asking for one costs nothing. A joint
+// section is never cut (PiecePageImages): its camera is fitted in one worker.
 constexpr int kPiecesPerWorker = 8;
 
 // The page as planned: the robot prepared as its pictures show it, its content and its files.
@@ -144,7 +144,7 @@ void RunWorker(DocsOptions& o) {
     const auto next = [&]() -> std::optional<std::vector<docs::PageImage>> {
       const std::optional<int> piece = NextPiece();
       if (!piece) return std::nullopt;
-      return docs::ShardPageImages(plan.files, shard::CheckedShard(*piece, o.worker_pieces, "piece"));
+      return docs::PiecePageImages(plan.files, shard::CheckedShard(*piece, o.worker_pieces, "piece"));
     };
     docs::RenderPagePieces(plan.prepared.robot, plan.page, plan.look, next, o.worker_folder, warnings,
                            [](std::int64_t done, std::int64_t) { ReportImagesDone(done); });

@@ -240,15 +240,17 @@ class PageRenderer {
 }  // namespace
 
 std::vector<PageImage> PageImages(const RobotPage& page, const PageLook& look) {
-  std::vector<PageImage> files = {{page.hero_file}};
-  if (!page.collision_file.empty()) files.push_back({page.collision_file});
-  files.push_back({page.tf_file});
-  if (!page.turntable_file.empty()) files.push_back({page.turntable_file, look.turntable_frames});
+  std::vector<PageImage> files = {{page.hero_file, 1, 0}};
+  if (!page.collision_file.empty()) files.push_back({page.collision_file, 1, 1});
+  files.push_back({page.tf_file, 1, 2});
+  if (!page.turntable_file.empty()) files.push_back({page.turntable_file, look.turntable_frames, 3});
+  int group = 4;
   for (const JointSection& section : page.sections) {
-    for (const Picture& picture : section.pictures) files.push_back({picture.file});
+    for (const Picture& picture : section.pictures) files.push_back({picture.file, 1, group});
     if (!section.sweep_file.empty()) {
-      files.push_back({section.sweep_file, static_cast<std::int64_t>(section.sweep.size())});
+      files.push_back({section.sweep_file, static_cast<std::int64_t>(section.sweep.size()), group});
     }
+    ++group;
   }
   return files;
 }

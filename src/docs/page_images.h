@@ -44,6 +44,7 @@ using Progress = std::function<void(std::int64_t done, std::int64_t total)>;
 struct PageImage {
   std::string file;
   std::int64_t images = 1;
+  int group = 0;   // PageImages: a joint section's files share one (their camera is fitted once), each view has its own
 };
 
 // Every picture and animation of `page`, in the order RenderPageImages makes them: the robot, its
