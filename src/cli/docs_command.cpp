@@ -203,7 +203,7 @@ void Run(DocsOptions& o) {
                       std::vector<std::string>{"--worker-pieces", std::to_string(pieces), "--worker-folder", folder.string()},
                       pieces);
     }
-    const PagePlan plan = PlanPage(o, backend, warnings);
+    PagePlan plan = PlanPage(o, backend, warnings);
     const std::vector<docs::PageImage> files = docs::ShardPageImages(plan.files, choice.shard);
     PrintShardLine(choice, files.size(), plan.files.size(), "pictures and animations",
                    std::to_string(docs::ImageCount(files)) + " of " + std::to_string(docs::ImageCount(plan.files)) +
@@ -213,8 +213,10 @@ void Run(DocsOptions& o) {
                             o.quiet ? stream::ProgressBar::Display::kNever
                                     : stream::ProgressBar::Display::kIfTerminal);
     if (workers) {
+      const std::vector<docs::LeftOutName> tf_left_out = docs::TfLeftOut(plan.prepared.robot, plan.page, plan.look, warnings);
+      plan.session.reset();   // its meshes and textures: the workers have their own
       workers->Wait([&](std::int64_t done) { bar.Update(done); }, warnings);
-      docs::WritePageDocuments(plan.page, docs::TfLeftOut(plan.prepared.robot, plan.page, plan.look, warnings), folder);
+      docs::WritePageDocuments(plan.page, tf_left_out, folder);
     } else {
       docs::WritePage(plan.prepared.robot, plan.page, plan.look, files, folder, warnings,
                       [&](std::int64_t done, std::int64_t) { bar.Update(done); });
