@@ -232,15 +232,18 @@ TEST_F(DocsTest, TheJointOptionsPoseThePage) {
 // model on standard input is made in one process (a worker could not read it again).
 TEST_F(DocsTest, WorkerProcessesMakeTheSamePageAsOneProcess) {
   URDFSNAP_REQUIRE_GL();
-  const std::string common = " --sections 'link_0[12]*' --animations none";
-  ASSERT_EQ(RunUrdfsnap("docs " + model_ + common + " --jobs 1 -o " + Path("one")).status, 0);
-  const Result three = RunUrdfsnap("docs " + model_ + common + " --jobs 3 -o " + Path("three"));
+  // two joint sections' pictures, no animations: enough pieces for three workers
+  const auto docs = [&](const std::string& model, const std::string& options) {
+    return RunUrdfsnap("docs " + model + " --sections 'link_0[12]*' --animations none " + options);
+  };
+  ASSERT_EQ(docs(model_, "--jobs 1 -o " + Path("one")).status, 0);
+  const Result three = docs(model_, "--jobs 3 -o " + Path("three"));
   ASSERT_EQ(three.status, 0) << three.output;
   EXPECT_EQ(std::count(three.output.begin(), three.output.end(), '\n'), 1) << three.output;  // the summary
   const auto files = Files(Path("one"));
   EXPECT_EQ(Files(Path("three")), files);
-  EXPECT_EQ(RunUrdfsnap("docs " + model_ + common + " --jobs 2 --check " + Path("one")).status, 0);
-  const Result piped = RunUrdfsnap("docs /dev/stdin" + common + " --jobs 2 -o " + Path("piped") + " < " + model_);
+  EXPECT_EQ(docs(model_, "--jobs 2 --check " + Path("one")).status, 0);
+  const Result piped = docs("/dev/stdin", "--jobs 2 -o " + Path("piped") + " < " + model_);
   ASSERT_EQ(piped.status, 0) << piped.output;
   EXPECT_EQ(Files(Path("piped")).size(), files.size());
   EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf", "one", "piped", "three"}));  // no temporary folders
