@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Time and peak memory of `urdfsnap docs` (one process, one GL context) for mrm, the mesh sample
-# robot and the synthetic 42-joint bigbot: wall time, CPU time and peak resident memory, best of 3.
+# Time and peak memory of `urdfsnap docs --jobs 1` (one process, one GL context; robots_bench.sh
+# times the default worker processes) for mrm, the mesh sample robot and the synthetic 42-joint
+# bigbot: wall time, CPU time and peak resident memory, best of 3.
 # usage: bench/docs/docs_bench.sh URDFSNAP
 set -euo pipefail
 snap=$1
@@ -12,7 +13,7 @@ for entry in "mrm models/mrm_description/urdf/mrm.xacro" "meshbot models/meshbot
   best=
   for _ in 1 2 3; do
     rm -rf "$work/page"
-    /usr/bin/time -f '%e %U %S %M' -o "$work/time" "$snap" docs "$root/$model" --no-shard -o "$work/page" 2>/dev/null
+    /usr/bin/time -f '%e %U %S %M' -o "$work/time" "$snap" docs "$root/$model" --no-shard --jobs 1 -o "$work/page" 2>/dev/null
     read -r wall user sys rss <"$work/time"
     if [ -z "$best" ] || awk "BEGIN {exit !($wall < ${best%% *})}"; then best="$wall $user $sys $rss"; fi
   done

@@ -8,7 +8,9 @@
 #   png, mp4  `urdfsnap animate --turntable --duration 4 --fit` (121 frames) to a PNG sequence and
 #             to H.264: frames per second of the whole process, startup included, and its CPU
 #             ms (all threads) per frame
-#   docs      the whole `urdfsnap docs` page (--no-shard): wall s, CPU s and peak MB
+#   docs      the whole `urdfsnap docs` page (--no-shard; its worker processes, one per core, as
+#             by default): wall s, CPU s of all its processes and the peak resident MB of the
+#             whole process tree (summed over the processes, tree_peak.py)
 # then the machine (CPU model, cores) and the load average before and after. On a shared machine
 # wall times follow the load; the CPU figures do not.
 # usage: bench/robots/robots_bench.sh URDFSNAP [RUNS]
@@ -58,9 +60,11 @@ row() {
     timed "$snap" animate "${args[@]}" --turntable --duration 4 --fit --quiet --no-shard -o "$work/anim/$output"
     fps+=("$(awk "BEGIN {printf \"%.0f\", 121 / $wall}")" "$(awk "BEGIN {printf \"%.1f\", 1000 * $cpu / 121}")")
   done
-  # docs
+  # docs: a process tree
   rm -rf "$work/page"
-  timed "$snap" docs "${args[@]}" --no-shard -o "$work/page"
+  "$(dirname "$0")/tree_peak.py" "$work/tree" "$snap" docs "${args[@]}" --no-shard -q -o "$work/page" >/dev/null || {
+    echo "robots_bench: failed: docs of $model" >&2; exit 1; }
+  read -r wall cpu peak _ <"$work/tree"
   # shellcheck disable=SC2059
   printf "$format" "$name" "$triangles" "$render_ms" "$render_cpu" "$render_mb" "$draw_ms" "$draw_cpu" \
     "${fps[@]}" "$(printf %.1f "$wall")" "$(printf %.1f "$cpu")" "$peak"

@@ -1,7 +1,11 @@
 // `urdfsnap docs`: a robot's documentation page (README.md, index.html and their pictures) written
-// into a folder that appears only when complete, or `--check`ed against a fresh one for CI.
+// into a folder that appears only when complete, or `--check`ed against a fresh one for CI. The
+// pictures are made by worker processes at once (--jobs), each a shard of them; this process then
+// writes the documents.
 #include <filesystem>
+#include <future>
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <utility>
 
@@ -10,7 +14,9 @@
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "cli/shard_options.h"
+#include "cli/worker_processes.h"
 #include "common/error.h"
+#include "common/usable_cores.h"
 #include "docs/animation_output.h"
 #include "docs/page_check.h"
 #include "docs/page_folder.h"
@@ -38,6 +44,9 @@ struct DocsOptions {
   std::string animations, stills = "webp";
   bool quiet = false;
   ShardOptions sharding;            // a contiguous part of the page's pictures and animations
+  int jobs = 0;                     // --jobs: worker processes; 0 = one per usable core
+  int worker_pieces = 0;            // a worker's: the pieces its parent cut the page into
+  std::string worker_folder;        // the parent's folder a worker writes its files into
   RenderOptions render;             // the pose (-j, --joints) and the view and display options
   std::vector<std::string> refused; // the kNotOnDocs options given, in order
   GlOptions gl_options;
@@ -74,9 +83,88 @@ void Report(const std::string& folder, const std::vector<std::string>& differenc
   throw CommandExit{1};
 }
 
-void Run(DocsOptions& o) {
+// The pieces `docs --jobs N` cuts a page into per worker (contiguous runs of its pictures and
+// animations, each worker taking the next as it finishes one): enough that the workers end within
+// a piece of each other although the pieces differ in cost (a PR2 page cut into two halves by
+// their images took 12.9 and 16.7 s of CPU), few enough that asking for one costs nothing. A joint
+// section is never cut (PiecePageImages): its camera is fitted in one worker.
+constexpr int kPiecesPerWorker = 8;
+
+// The page as planned: the robot prepared as its pictures show it, its content and its files.
+struct PagePlan {
+  std::unique_ptr<request::RenderSession> session;   // holds the prepared robot's caches
+  request::Prepared prepared;
+  docs::PageLook look;
+  docs::RobotPage page;
+  std::vector<docs::PageImage> files;   // every picture and animation of the page
+};
+
+// Loads the robot and plans its page (GL-free).
+PagePlan PlanPage(DocsOptions& o, const gl::BackendChoice& backend, Warnings& warnings) {
+  request::RenderRequest& request = o.render.request;
+  // the page's views are always fitted, each over what it shows (the docs stage does that)
+  request.fit = true;
+  request::ResolvedRequest resolved = request::ResolveRequest(request, request::CommandLineLabel, warnings);
+  const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
+  PagePlan plan;
+  plan.session = std::make_unique<request::RenderSession>(backend);
+  plan.prepared = plan.session->Prepare(resolved, warnings);
+  plan.look.backend = backend;
+  plan.look.settings = plan.prepared.settings;
+  plan.look.settings.fit = fit;
+  plan.look.tf_scale_given = !request.tf_scale.empty();
+  docs::PageOptions options;
+  options.section_globs = o.section_globs;
+  options.positions = plan.prepared.positions;
+  options.posed = !request.joints.empty() || !request.joint_file.empty();
+  options.view_size = {plan.look.settings.size.width, plan.look.settings.size.height};
+  // the joints' pictures and animations three quarters of --size: large enough to see a joint
+  // move, and a PR2's page of 39 joints within 5 MB as WebP
+  options.joint_size = {std::max(1, options.view_size.width * 3 / 4), std::max(1, options.view_size.height * 3 / 4)};
+  options.animation_extension = o.animations == "none" ? "" : "." + o.animations;
+  options.still_extension = "." + o.stills;
+  plan.page = docs::MakeRobotPage(*plan.prepared.robot, request.model.path, request.model.xacro_args, options, warnings);
+  plan.files = docs::PageImages(plan.page, plan.look);
+  return plan;
+}
+
+// A worker process of a parent's `docs --jobs N` (the hidden --worker-pieces and --worker-folder):
+// the pictures and animations of each piece the parent hands it into the parent's folder, its
+// progress on stdout, its warnings on stderr for the parent to gather; no documents.
+void RunWorker(DocsOptions& o) {
+  StopWhenParentEnds();
   const gl::BackendChoice backend = o.gl_options.Choice();
-  const auto gl_loading = gl::StartLoadingGl(backend.backend);   // overlaps loading Mesa with reading the model
+  const auto gl_loading = gl::StartLoadingGl(backend.backend);
+  Warnings warnings;
+  try {
+    CheckOptions(o, warnings);
+    o.render.ParseJointWords();
+    o.render.request.model = o.model.ToRequest();
+    const PagePlan plan = PlanPage(o, backend, warnings);
+    const auto next = [&]() -> std::optional<std::vector<docs::PageImage>> {
+      const std::optional<int> piece = NextPiece();
+      if (!piece) return std::nullopt;
+      return docs::PiecePageImages(plan.files, shard::CheckedShard(*piece, o.worker_pieces, "piece"));
+    };
+    docs::RenderPagePieces(plan.prepared.robot, plan.page, plan.look, next, o.worker_folder, warnings,
+                           [](std::int64_t done, std::int64_t) { ReportImagesDone(done); });
+  } catch (...) {
+    PrintWarningsBeforeError(warnings);
+    throw;
+  }
+  PrintWarningsBeforeError(warnings);   // the parent gathers them (and applies --strict)
+}
+
+// How many worker processes make the page: --jobs (default the cores this process may use), one
+// when the run is a shard of a larger job or reads standard input (a worker could not read it
+// again).
+int WorkerCount(const DocsOptions& o, const shard::ShardChoice& choice) {
+  if (choice.sharded() || ReadsStandardInput(OwnCommandLine())) return 1;
+  return o.jobs > 0 ? o.jobs : UsableCores();
+}
+
+void Run(DocsOptions& o) {
+  if (o.worker_pieces > 0) return RunWorker(o);
   if (o.output.empty() == o.check.empty()) {
     throw Error("docs: give -o DIR to write a page, or --check DIR to compare a committed page with a fresh one");
   }
@@ -97,59 +185,59 @@ void Run(DocsOptions& o) {
   }
   const shard::ShardChoice choice =
       o.sharding.Choose(o.check.empty() ? "" : "docs --check compares the whole page with a fresh one");
+  const int jobs = WorkerCount(o, choice);
+  const gl::BackendChoice backend = o.gl_options.Choice();
+  // one process: Mesa loads while the model is read; workers load it themselves
+  std::optional<std::future<void>> gl_loading;
+  if (jobs == 1) gl_loading = gl::StartLoadingGl(backend.backend);
+  // the page is made in a new folder, moved into place once complete (or a scratch folder for --check)
+  std::optional<docs::PageFolder> page_folder;
+  std::optional<docs::ScratchFolder> scratch_folder;
+  const std::filesystem::path folder = o.check.empty() ? page_folder.emplace(o.output).path() : scratch_folder.emplace().path();
   try {
-    // the page's views are always fitted, each over what it shows (the docs stage does that)
-    request.fit = true;
-    request::ResolvedRequest resolved = request::ResolveRequest(request, request::CommandLineLabel, warnings);
-    const render::Fit fit = std::exchange(resolved.settings.fit, render::Fit::kNone);
-    request::RenderSession session(backend);
-    const request::Prepared prepared = session.Prepare(resolved, warnings);
-    docs::PageLook look;
-    look.backend = backend;
-    look.settings = prepared.settings;
-    look.settings.fit = fit;
-    look.tf_scale_given = !request.tf_scale.empty();
-    docs::PageOptions options;
-    options.section_globs = o.section_globs;
-    options.positions = prepared.positions;
-    options.posed = !request.joints.empty() || !request.joint_file.empty();
-    options.view_size = {look.settings.size.width, look.settings.size.height};
-    // the joints' pictures and animations three quarters of --size: large enough to see a joint
-    // move, and a PR2's page of 39 joints within 5 MB as WebP
-    options.joint_size = {std::max(1, options.view_size.width * 3 / 4), std::max(1, options.view_size.height * 3 / 4)};
-    options.animation_extension = o.animations == "none" ? "" : "." + o.animations;
-    options.still_extension = "." + o.stills;
-    const docs::RobotPage page = docs::MakeRobotPage(*prepared.robot, request.model.path,
-                                                     request.model.xacro_args, options, warnings);
-    const std::vector<docs::PageImage> all = docs::PageImages(page, look);
-    const std::vector<docs::PageImage> files = docs::ShardPageImages(all, choice.shard);
-    PrintShardLine(choice, files.size(), all.size(), "pictures and animations",
-                   std::to_string(docs::ImageCount(files)) + " of " + std::to_string(docs::ImageCount(all)) +
+    // workers start before this process reads the model, which they read too
+    std::optional<WorkerProcesses> workers;
+    if (jobs > 1) {
+      const int pieces = kPiecesPerWorker * jobs;
+      workers.emplace(jobs, "docs",
+                      std::vector<std::string>{"--worker-pieces", std::to_string(pieces), "--worker-folder", folder.string()},
+                      pieces);
+    }
+    PagePlan plan = PlanPage(o, backend, warnings);
+    const std::vector<docs::PageImage> files = docs::ShardPageImages(plan.files, choice.shard);
+    PrintShardLine(choice, files.size(), plan.files.size(), "pictures and animations",
+                   std::to_string(docs::ImageCount(files)) + " of " + std::to_string(docs::ImageCount(plan.files)) +
                        " images, and the page's text");
     // a progress bar of pictures and animation frames on a terminal, a summary line anywhere
     stream::ProgressBar bar(docs::ImageCount(files), "images",
                             o.quiet ? stream::ProgressBar::Display::kNever
                                     : stream::ProgressBar::Display::kIfTerminal);
-    const docs::Progress progress = [&](std::int64_t done, std::int64_t) { bar.Update(done); };
+    if (workers) {
+      const std::vector<docs::LeftOutName> tf_left_out = docs::TfLeftOut(plan.prepared.robot, plan.page, plan.look, warnings);
+      plan.session.reset();   // its meshes and textures: the workers have their own
+      workers->Wait([&](std::int64_t done) { bar.Update(done); }, warnings);
+      docs::WritePageDocuments(plan.page, tf_left_out, folder);
+    } else {
+      docs::WritePage(plan.prepared.robot, plan.page, plan.look, files, folder, warnings,
+                      [&](std::int64_t done, std::int64_t) { bar.Update(done); });
+    }
     if (!o.check.empty()) {
-      const docs::ScratchFolder fresh;
-      docs::WritePage(prepared.robot, page, look, files, fresh.path(), warnings, progress);
       bar.Finish("made the page afresh to compare with " + o.check);
       PrintWarnings(warnings);
       if (!std::filesystem::is_directory(o.check)) {
         Report(o.check, {"no page here (" + std::string(docs::kHtmlFile) + " and the rest are missing)"});
       }
-      Report(o.check, docs::ComparePages(o.check, fresh.path()));
+      Report(o.check, docs::ComparePages(o.check, folder));
       return;
     }
-    docs::PageFolder folder(o.output);
-    docs::WritePage(prepared.robot, page, look, files, folder.path(), warnings, progress);
     PrintWarnings(warnings);
-    folder.Commit();
+    page_folder->Commit();
     outputs.Commit();
     bar.Finish("wrote " + (std::filesystem::path(o.output) / docs::kHtmlFile).string() + " and " +
                (std::filesystem::path(o.output) / docs::kMarkdownFile).string());
   } catch (const CommandExit&) {
+    throw;
+  } catch (const StoppedBySignal&) {
     throw;
   } catch (...) {
     PrintWarningsBeforeError(warnings);
@@ -199,7 +287,20 @@ void AddDocsCommand(CLI::App& app) {
     }
   }
   o->gl_options.AddOptions(*cmd);
-  cmd->callback([o] { Run(*o); });
+  cmd->add_option("--jobs", o->jobs,
+                  "make the page in N worker processes at once, each a shard of its pictures and "
+                  "animations (default: one per core this process may use; 1: in this process). "
+                  "With --shard, or a model or joint file on standard input, one process")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--worker-pieces", o->worker_pieces)->group("");   // WorkerProcesses' own
+  cmd->add_option("--worker-folder", o->worker_folder)->group("");
+  cmd->callback([o] {
+    try {
+      Run(*o);
+    } catch (const StoppedBySignal& stopped) {
+      EndBySignal(stopped.signal);   // after the page's folder is removed
+    }
+  });
 }
 
 }  // namespace urdfsnap::cli

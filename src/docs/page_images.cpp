@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include "docs/animation_output.h"
@@ -25,17 +26,59 @@ render::ImageSize SizeOf(PictureSize size) { return {size.width, size.height}; }
 // The length of RViz's TF axes at marker scale 1 (tf_display.cpp), in metres.
 constexpr double kRvizAxisLength = 0.2;
 
+// The page's TF picture before it is drawn.
+struct TfPicture {
+  scene::Scene scene;
+  scene::OrbitView view;
+  render::ImageSize size;
+  std::vector<LeftOutName> left_out;   // the frames whose names it leaves out
+};
+
+// The TF frames of the robot as shown (`visual`) from the camera that frames it, their axes a
+// share of the picture's height (unless --tf-scale was given) and their names laid out so that
+// none hides another. GL-free.
+TfPicture LayOutTfPicture(const std::shared_ptr<const model::Robot>& robot, const render::RobotRenderer& visual,
+                          const RobotPage& page, const PageLook& look, Warnings& warnings) {
+  TfPicture tf;
+  tf.size = SizeOf(page.tf_size);
+  const auto pose = [&](int) { return page.default_positions; };
+  tf.view = visual.FitView(look.settings.fit, look.settings.fit_margin, look.settings.view, tf.size, 1, pose);
+  scene::SceneOptions options = look.settings.scene;
+  options.tf.enabled = true;
+  options.alpha *= look.tf_alpha;
+  if (!look.tf_scale_given) {
+    const double picture_height = 2 * tf.view.distance * std::tan(tf.view.fov_y / 2);   // metres at the focal point
+    options.tf.marker_scale = look.tf_axis_share * picture_height / kRvizAxisLength;
+  }
+  const render::RobotRenderer frames(robot, options, warnings);
+  tf.scene = frames.Pose(page.default_positions);
+  if (!tf.scene.labels.empty()) tf.left_out = LayOutTfNames(tf.scene, robot->LinkNames(), tf.view, tf.size);
+  return tf;
+}
+
 class PageRenderer {
  public:
   PageRenderer(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
-               const std::vector<PageImage>& files, const std::filesystem::path& folder, Warnings& warnings,
-               const Progress& progress)
+               const std::filesystem::path& folder, Warnings& warnings, const Progress& progress)
       : robot_(robot), page_(page), look_(look), folder_(folder), warnings_(warnings), progress_(progress),
-        total_(ImageCount(files)), gl_(look.settings.samples, look.backend),
-        visual_(robot, look.settings.scene, warnings) {
+        gl_(look.settings.samples, look.backend), visual_(robot, look.settings.scene, warnings) {}
+
+  // Makes `files` of the page, in page order; the progress counts on from the files made before.
+  void Make(const std::vector<PageImage>& files) {
+    wanted_.clear();
     for (const PageImage& file : files) wanted_.insert(file.file);
+    total_ += ImageCount(files);
+    Views();
+    for (const JointSection& section : page_.sections) Section(section);
   }
 
+  // The frame names the TF picture leaves out.
+  const std::vector<LeftOutName>& tf_left_out() {
+    if (!tf_left_out_) tf_left_out_ = TfView();
+    return *tf_left_out_;
+  }
+
+ private:
   void Views() {
     scene::SceneOptions options = look_.settings.scene;
     if (Wanted(page_.hero_file)) Still(visual_, page_.hero_file);
@@ -46,12 +89,10 @@ class PageRenderer {
       Still(render::RobotRenderer(robot_, options, warnings_), page_.collision_file);
     }
 
-    tf_left_out_ = TfView();
+    if (Wanted(page_.tf_file)) tf_left_out_ = TfView();
 
     if (Wanted(page_.turntable_file)) Turntable(visual_);
   }
-
-  const std::vector<LeftOutName>& tf_left_out() const { return tf_left_out_; }
 
   void Section(const JointSection& section) {
     const bool any = Wanted(section.sweep_file) ||
@@ -86,7 +127,6 @@ class PageRenderer {
     }
   }
 
- private:
   // Whether `file` is one to make here (never "": a picture the page does not have).
   bool Wanted(const std::string& file) const { return wanted_.count(file) > 0; }
 
@@ -127,26 +167,12 @@ class PageRenderer {
     Write(robot.Render(gl_, page_.default_positions, view, size).colour, file);
   }
 
-  // The TF frames from the camera that frames the robot, their axes a share of the picture's
-  // height (unless --tf-scale was given) and their names laid out so that none hides another;
-  // drawn when wanted, laid out always: the page names what it leaves out. Returns those names.
+  // The TF picture, drawn when wanted; laid out always: the page names what it leaves out.
+  // Returns those names.
   std::vector<LeftOutName> TfView() {
-    const render::ImageSize size = SizeOf(page_.tf_size);
-    const auto pose = [&](int) { return page_.default_positions; };
-    const scene::OrbitView view = visual_.FitView(look_.settings.fit, look_.settings.fit_margin, look_.settings.view, size, 1, pose);
-    scene::SceneOptions options = look_.settings.scene;
-    options.tf.enabled = true;
-    options.alpha *= look_.tf_alpha;
-    if (!look_.tf_scale_given) {
-      const double picture_height = 2 * view.distance * std::tan(view.fov_y / 2);   // metres at the focal point
-      options.tf.marker_scale = look_.tf_axis_share * picture_height / kRvizAxisLength;
-    }
-    const render::RobotRenderer tf(robot_, options, warnings_);
-    scene::Scene scene = tf.Pose(page_.default_positions);
-    std::vector<LeftOutName> left_out;
-    if (!scene.labels.empty()) left_out = LayOutTfNames(scene, robot_->LinkNames(), view, size);
-    if (Wanted(page_.tf_file)) Write(gl_.Render(scene, view, size.width, size.height).colour, page_.tf_file);
-    return left_out;
+    TfPicture tf = LayOutTfPicture(robot_, visual_, page_, look_, warnings_);
+    if (Wanted(page_.tf_file)) Write(gl_.Render(tf.scene, tf.view, tf.size.width, tf.size.height).colour, page_.tf_file);
+    return tf.left_out;
   }
 
   // The camera's yaw once around, at the distance that frames the robot from every side.
@@ -200,7 +226,7 @@ class PageRenderer {
   Warnings& warnings_;
   Warnings ignored_;   // a section's poses': the page's pose was warned of when it was resolved
   const Progress& progress_;
-  const std::int64_t total_;
+  std::int64_t total_ = 0;
   std::int64_t done_ = 0;
   gl::SceneRenderer gl_;
   // the robot as shown, kept for the whole page: while it holds the mesh files and textures, every
@@ -208,21 +234,23 @@ class PageRenderer {
   // each variant, the PR2's were decoded and uploaded again for each of its 39 joint sections)
   const render::RobotRenderer visual_;
   std::set<std::string> wanted_;
-  std::vector<LeftOutName> tf_left_out_;
+  std::optional<std::vector<LeftOutName>> tf_left_out_;   // laid out with the TF picture, or when asked
 };
 
 }  // namespace
 
 std::vector<PageImage> PageImages(const RobotPage& page, const PageLook& look) {
-  std::vector<PageImage> files = {{page.hero_file}};
-  if (!page.collision_file.empty()) files.push_back({page.collision_file});
-  files.push_back({page.tf_file});
-  if (!page.turntable_file.empty()) files.push_back({page.turntable_file, look.turntable_frames});
+  std::vector<PageImage> files = {{page.hero_file, 1, 0}};
+  if (!page.collision_file.empty()) files.push_back({page.collision_file, 1, 1});
+  files.push_back({page.tf_file, 1, 2});
+  if (!page.turntable_file.empty()) files.push_back({page.turntable_file, look.turntable_frames, 3});
+  int group = 4;
   for (const JointSection& section : page.sections) {
-    for (const Picture& picture : section.pictures) files.push_back({picture.file});
+    for (const Picture& picture : section.pictures) files.push_back({picture.file, 1, group});
     if (!section.sweep_file.empty()) {
-      files.push_back({section.sweep_file, static_cast<std::int64_t>(section.sweep.size())});
+      files.push_back({section.sweep_file, static_cast<std::int64_t>(section.sweep.size()), group});
     }
+    ++group;
   }
   return files;
 }
@@ -233,14 +261,25 @@ std::int64_t ImageCount(const std::vector<PageImage>& files) {
   return count;
 }
 
+std::vector<LeftOutName> TfLeftOut(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
+                                   const PageLook& look, Warnings& warnings) {
+  return LayOutTfPicture(robot, render::RobotRenderer(robot, look.settings.scene, warnings), page, look, warnings).left_out;
+}
+
 std::vector<LeftOutName> RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
                                           const PageLook& look, const std::vector<PageImage>& files,
                                           const std::filesystem::path& folder, Warnings& warnings,
                                           const Progress& progress) {
-  PageRenderer renderer(robot, page, look, files, folder, warnings, progress);
-  renderer.Views();
-  for (const JointSection& section : page.sections) renderer.Section(section);
+  PageRenderer renderer(robot, page, look, folder, warnings, progress);
+  renderer.Make(files);
   return renderer.tf_left_out();
+}
+
+void RenderPagePieces(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
+                      const std::function<std::optional<std::vector<PageImage>>()>& next,
+                      const std::filesystem::path& folder, Warnings& warnings, const Progress& progress) {
+  PageRenderer renderer(robot, page, look, folder, warnings, progress);
+  while (const std::optional<std::vector<PageImage>> files = next()) renderer.Make(*files);
 }
 
 }  // namespace urdfsnap::docs

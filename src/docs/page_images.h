@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,7 @@ using Progress = std::function<void(std::int64_t done, std::int64_t total)>;
 struct PageImage {
   std::string file;
   std::int64_t images = 1;
+  int group = 0;   // PageImages: a joint section's files share one (their camera is fitted once), each view has its own
 };
 
 // Every picture and animation of `page`, in the order RenderPageImages makes them: the robot, its
@@ -61,5 +63,19 @@ std::int64_t ImageCount(const std::vector<PageImage>& files);
 std::vector<LeftOutName> RenderPageImages(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
                       const PageLook& look, const std::vector<PageImage>& files,
                       const std::filesystem::path& folder, Warnings& warnings, const Progress& progress);
+
+// Renders the pictures and animations of `page` piece by piece, as RenderPageImages does, in one GL
+// context (meshes and textures uploaded once): the files of each piece `next()` gives, until it
+// gives none (nullopt). For the worker processes of `docs --jobs`, which take pieces as they
+// finish others. The progress counts every image made so far.
+void RenderPagePieces(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page, const PageLook& look,
+                      const std::function<std::optional<std::vector<PageImage>>()>& next,
+                      const std::filesystem::path& folder, Warnings& warnings, const Progress& progress);
+
+// The frame names the TF picture of `page` leaves out, as RenderPageImages returns them, without
+// drawing anything (GL-free): for the page's text when its pictures are made elsewhere (docs
+// --jobs). Throws urdfsnap::Error as RenderPageImages does for files the robot needs.
+std::vector<LeftOutName> TfLeftOut(const std::shared_ptr<const model::Robot>& robot, const RobotPage& page,
+                                   const PageLook& look, Warnings& warnings);
 
 }  // namespace urdfsnap::docs

@@ -10,24 +10,13 @@
 // (llvmpipe's tiles do not depend on the threads that draw them).
 #include "gl/rasteriser_threads.h"
 
-#include <sched.h>
 #include <stdlib.h>
 
 #include <algorithm>
-#include <thread>
+
+#include "common/usable_cores.h"
 
 namespace urdfsnap::gl {
-
-namespace {
-
-// The cores this process may run on (its affinity mask: a container's or taskset's limit).
-int UsableCores() {
-  cpu_set_t set;
-  if (sched_getaffinity(0, sizeof set, &set) == 0) return CPU_COUNT(&set);
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
-
-}  // namespace
 
 std::string LeaveCoresToOtherThreads(int busy_threads, std::size_t triangles) {
   if (getenv("LP_NUM_THREADS") != nullptr) return "";

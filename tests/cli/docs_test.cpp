@@ -1,6 +1,7 @@
 // `urdfsnap docs` against the binary: the page's files, byte-identical reruns, --check passing on a
 // fresh page and failing after a joint limit changes, errors that leave nothing half-written, and
-// folders it refuses to replace.
+// folders it refuses to replace; worker processes (--jobs) making the same page, their errors and
+// SIGTERM.
 #include <filesystem>
 #include <map>
 #include <regex>
@@ -225,6 +226,58 @@ TEST_F(DocsTest, TheJointOptionsPoseThePage) {
   ASSERT_EQ(fit.status, 0) << fit.output;
   EXPECT_NE(fit.output.find("warning: --fit is ignored: docs always fits each picture"), std::string::npos) << fit.output;
   EXPECT_EQ(ReadBytes(Path("fit/images/robot.png")), ReadBytes(Path("zero/images/robot.png")));
+}
+
+// --jobs: the page made by worker processes is the page one process makes, byte for byte; a
+// model on standard input is made in one process (a worker could not read it again).
+TEST_F(DocsTest, WorkerProcessesMakeTheSamePageAsOneProcess) {
+  URDFSNAP_REQUIRE_GL();
+  // two joint sections' pictures, no animations: enough pieces for three workers
+  const auto docs = [&](const std::string& model, const std::string& options) {
+    return RunUrdfsnap("docs " + model + " --sections 'link_0[12]*' --animations none " + options);
+  };
+  ASSERT_EQ(docs(model_, "--jobs 1 -o " + Path("one")).status, 0);
+  const Result three = docs(model_, "--jobs 3 -o " + Path("three"));
+  ASSERT_EQ(three.status, 0) << three.output;
+  EXPECT_EQ(std::count(three.output.begin(), three.output.end(), '\n'), 1) << three.output;  // the summary
+  const auto files = Files(Path("one"));
+  EXPECT_EQ(Files(Path("three")), files);
+  EXPECT_EQ(docs(model_, "--jobs 2 --check " + Path("one")).status, 0);
+  const Result piped = docs("/dev/stdin", "--jobs 2 -o " + Path("piped") + " < " + model_);
+  ASSERT_EQ(piped.status, 0) << piped.output;
+  EXPECT_EQ(Files(Path("piped")).size(), files.size());
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf", "one", "piped", "three"}));  // no temporary folders
+}
+
+// A worker that fails (here: every file past 4 KB refused, as on a full disk) is the command's one
+// error line, status 2, and nothing of the page is left.
+TEST_F(DocsTest, AFailingWorkerIsTheCommandsOneError) {
+  URDFSNAP_REQUIRE_GL();
+  for (const char* jobs : {"1", "2"}) {
+    const Result r = RunProgram("sh -c 'trap \"\" XFSZ; ulimit -f 8; exec \"$0\" \"$@\"' " + std::string(URDFSNAP_BINARY),
+                                "docs " + model_ + " --jobs " + jobs + " -o " + Path("page"));
+    EXPECT_EQ(r.status, 2) << jobs << "\n" << r.output;
+    EXPECT_EQ(r.output.rfind("urdfsnap: error: ", 0), 0u) << r.output;
+    EXPECT_NE(r.output.find(": cannot write: File too large"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf"}));
+  }
+}
+
+// SIGTERM to a page being made by workers stops them, removes the page's folder and ends the
+// command by that signal.
+TEST_F(DocsTest, SigtermStopsTheWorkersAndLeavesNothing) {
+  URDFSNAP_REQUIRE_GL();
+  // started in the background; killed once its first picture is in the temporary folder
+  const std::string script =
+      "sh -c '\"$0\" \"$@\" & pid=$!; "
+      "while [ ! -e " + Path("page") + ".tmp-*/images/robot.webp ] && kill -0 $pid 2>/dev/null; do sleep 0.02; done; "
+      "kill -TERM $pid; wait $pid; echo status $?; "
+      "sleep 0.2; pgrep -f -- \"--worker-[f]older " + Path("page") + "\" || echo no workers' " + std::string(URDFSNAP_BINARY);
+  const Result r = RunProgram(script, "docs " + model_ + " --size 1280x960 --jobs 2 -o " + Path("page"));
+  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;   // 128 + SIGTERM
+  EXPECT_NE(r.output.find("no workers"), std::string::npos) << r.output;
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf"}));
 }
 
 }  // namespace

@@ -1,11 +1,12 @@
 // Shards of a docs page's pictures and animations (unit, no GL): every file in exactly one shard, in
 // page order and contiguous, and the animations spread so that no shard takes far more images than
-// its share.
+// its share; the pieces of `docs --jobs`, which keep a joint section whole.
 #include "docs/page_shard.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 
 #include "docs/test_robot.h"
 #include "model/robot.h"
@@ -47,6 +48,27 @@ TEST_F(PageShardTest, EveryFileLandsInExactlyOneShardInPageOrder) {
       EXPECT_EQ(joined, expected) << count << " shards";
     }
   }
+}
+
+TEST_F(PageShardTest, PiecesKeepEachJointSectionWholeAndTakeEveryFileOnce) {
+  const std::vector<PageImage> all = Files();
+  for (int count = 1; count <= static_cast<int>(all.size()) + 3; ++count) {
+    std::vector<std::string> joined;
+    std::map<int, int> piece_of_group;
+    for (int index = 1; index <= count; ++index) {
+      for (const PageImage& file : PiecePageImages(all, {index, count})) {
+        joined.push_back(file.file);
+        EXPECT_EQ(piece_of_group.emplace(file.group, index).first->second, index) << file.file << ", " << count << " pieces";
+      }
+    }
+    std::vector<std::string> expected;
+    for (const PageImage& file : all) expected.push_back(file.file);
+    EXPECT_EQ(joined, expected) << count << " pieces";
+  }
+  // the views are groups of their own, each section one group of its pictures and sweep
+  EXPECT_EQ(all[0].group, 0);
+  EXPECT_NE(all[1].group, all[2].group);
+  EXPECT_EQ(all[4].group, all[5].group);
 }
 
 TEST_F(PageShardTest, AnAnimationGoesToTheShardHoldingMostOfItsFrames) {
