@@ -73,10 +73,6 @@ void AddSceneDisplays(const DisplayOptions& options, const std::string& bag, dou
                       Warnings& warnings) {
   const render::RenderSettings& s = scene.robot.settings;
   if (options.empty() && s.displays.empty()) return;
-  if (s.camera) {
-    throw Error("message displays (--rviz, --display, --message) are drawn through the orbit view only, not "
-                "through a calibrated camera (--camera, --camera-frame)");
-  }
   // the scene's frame: where TF places the robot, else its fixed link
   const std::string fixed_frame = scene.root ? scene.root->fixed_frame()
                                   : s.scene.fixed_frame.empty() ? scene.robot.robot->links().front().name

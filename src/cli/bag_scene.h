@@ -52,8 +52,8 @@ void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest r
 // Adds the message displays of the robot's .rviz file and of `options` to `scene` (prepared by
 // PrepareBagScene for the same `bag` and `stamp_at_zero`), when there are any: drawn in the scene's
 // fixed frame, their topics read from `bag` ("" for none) as frames advance, their frames found
-// through its TF. Throws urdfsnap::Error for a calibrated camera (displays are drawn through the
-// orbit view only) and as DisplayOptions::MakeDisplays and tf::ReadBagTransforms do.
+// through its TF (drawn through the orbit view or the calibrated camera alike). Throws
+// urdfsnap::Error as DisplayOptions::MakeDisplays and tf::ReadBagTransforms do.
 void AddSceneDisplays(const DisplayOptions& options, const std::string& bag, double stamp_at_zero, BagScene& scene,
                       Warnings& warnings);
 

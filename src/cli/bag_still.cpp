@@ -93,9 +93,11 @@ scene::Scene BagStill::Scene(Warnings& warnings) const {
 image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameOutputs& outputs,
                             Warnings& warnings) const {
   const request::Prepared& p = scene_.robot;
-  if (p.settings.camera) return session.Draw(p, outputs);
-  return session.GlRenderer(p.settings.samples)
-      .Render(Scene(warnings), p.settings.view, p.settings.size.width, p.settings.size.height, outputs);
+  gl::SceneRenderer& gl = session.GlRenderer(p.settings.samples);
+  if (p.settings.camera) {   // the scene (the displays, the TF display) through the camera on the placed robot
+    return p.renderer->Render(gl, Scene(warnings), frames_->Place(0, warnings), p.positions, *p.settings.camera, outputs);
+  }
+  return gl.Render(Scene(warnings), p.settings.view, p.settings.size.width, p.settings.size.height, outputs);
 }
 
 }  // namespace urdfsnap::cli
