@@ -70,21 +70,29 @@ void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest r
 }
 
 void AddSceneDisplays(const DisplayOptions& options, const std::string& bag, double stamp_at_zero, BagScene& scene,
-                      Warnings& warnings) {
+                      Warnings& warnings, DisplayCache* cache, std::int64_t moment_ns) {
   const render::RenderSettings& s = scene.robot.settings;
   if (options.empty() && s.displays.empty()) return;
   // the scene's frame: where TF places the robot, else its fixed link
   const std::string fixed_frame = scene.root ? scene.root->fixed_frame()
                                   : s.scene.fixed_frame.empty() ? scene.robot.robot->links().front().name
                                                                 : s.scene.fixed_frame;
+  if (cache && !options.empty()) cache = nullptr;
+  if (cache && cache->displays && cache->settings == s.displays && cache->fixed_frame == fixed_frame &&
+      cache->stamp_at_zero == stamp_at_zero && cache->displays->CanShow(moment_ns)) {
+    scene.displays = cache->displays;
+    return;
+  }
   // the scene reads the bag's TF only when it shows it; the displays' frames need it anyway
   std::shared_ptr<const tf::TfBuffer> transforms = scene.transforms;
   if (!bag.empty() && transforms->frames().empty()) {
     transforms = std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(bag));
   }
-  scene.displays.emplace(
+  if (cache) cache->displays.reset();   // its reader thread and what its displays keep go first
+  scene.displays = std::make_shared<animation::FrameDisplays>(
       options.MakeDisplays(s.displays, fixed_frame, request::MarkerResourcesFor(s.scene), warnings), bag,
       std::move(transforms), fixed_frame, stamp_at_zero);
+  if (cache) *cache = {s.displays, fixed_frame, stamp_at_zero, scene.displays};
 }
 
 }  // namespace urdfsnap::cli

@@ -32,7 +32,8 @@ struct BagScene {
   // set for a camera whose --camera-frame is a frame of the bag's TF, not a link: where TF puts
   // the robot's root in it at each moment (animation::CameraRequest::camera_tf)
   std::optional<motion::RootPoses> camera_tf;
-  std::optional<animation::FrameDisplays> displays;   // set for message displays (AddSceneDisplays)
+  // set for message displays (AddSceneDisplays); shared with a DisplayCache that keeps them
+  std::shared_ptr<animation::FrameDisplays> displays;
 
   // What the scene adds to each frame, for animation::AnimationFrames (which feeds the displays).
   animation::SceneAdditions Additions();
@@ -49,12 +50,26 @@ struct BagScene {
 void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,
                      double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out);
 
+// Message displays kept from one still of a bag to the next (serve's time slider): reused while
+// the same displays in the same fixed frame are asked for at the same or a later moment, so that a
+// slider dragged forward reads only the messages between two moments; an earlier moment or other
+// displays start again from the bag's beginning. Holds what one still's displays hold, never the
+// bag's messages.
+struct DisplayCache {
+  std::vector<display::DisplaySettings> settings;   // what `displays` were made for
+  std::string fixed_frame;
+  double stamp_at_zero = 0;
+  std::shared_ptr<animation::FrameDisplays> displays;
+};
+
 // Adds the message displays of the robot's .rviz file and of `options` to `scene` (prepared by
 // PrepareBagScene for the same `bag` and `stamp_at_zero`), when there are any: drawn in the scene's
 // fixed frame, their topics read from `bag` ("" for none) as frames advance, their frames found
-// through its TF (drawn through the orbit view or the calibrated camera alike). Throws
-// urdfsnap::Error as DisplayOptions::MakeDisplays and tf::ReadBagTransforms do.
+// through its TF (drawn through the orbit view or the calibrated camera alike). With a `cache`
+// (and no `options`: those may be message files), displays it keeps are taken when they can show
+// the stamp `moment_ns` next, and the displays made are kept in it. Throws urdfsnap::Error as
+// DisplayOptions::MakeDisplays and tf::ReadBagTransforms do.
 void AddSceneDisplays(const DisplayOptions& options, const std::string& bag, double stamp_at_zero, BagScene& scene,
-                      Warnings& warnings);
+                      Warnings& warnings, DisplayCache* cache = nullptr, std::int64_t moment_ns = 0);
 
 }  // namespace urdfsnap::cli

@@ -38,7 +38,7 @@ void BagStillOptions::AddOptions(CLI::App& command) {
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
-                   bool model_from_bag, const DisplayOptions& displays, Warnings& warnings) {
+                   bool model_from_bag, const DisplayOptions& displays, Warnings& warnings, DisplayCache* cache) {
   request::RequestFiles files = request::ReadRequestFiles(r, warnings);
   trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
   const double at = o.at.empty() ? 0 : request::ParseFinite(o.at, "--at");
@@ -64,7 +64,7 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   const motion::JointRules rules{resolved.clamp};
   PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), model_from_bag,
                   warnings, scene_);
-  AddSceneDisplays(displays, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_, warnings);
+  AddSceneDisplays(displays, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_, warnings, cache, moment_ns);
   request::Prepared& prepared = scene_.robot;
   poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);
   const render::RenderSettings& s = prepared.settings;
