@@ -38,9 +38,17 @@ void BagStillOptions::AddOptions(CLI::App& command) {
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
-                   bool model_from_bag, const DisplayOptions& displays, Warnings& warnings, DisplayCache* cache) {
+                   bool model_from_bag, const DisplayOptions& displays, Warnings& warnings, BagCache* cache) {
   request::RequestFiles files = request::ReadRequestFiles(r, warnings);
-  trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
+  if (cache && cache->trajectory && cache->trajectory_topic == o.topic) {
+    trajectory_ = *cache->trajectory;
+  } else {
+    trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
+    if (cache) {
+      cache->trajectory = trajectory_;
+      cache->trajectory_topic = o.topic;
+    }
+  }
   const double at = o.at.empty() ? 0 : request::ParseFinite(o.at, "--at");
   plan_.trajectory_start = motion::TrajectorySeconds(trajectory_, at, "--at");
   if (plan_.trajectory_start < 0 || plan_.trajectory_start > trajectory_.EndTime()) {
@@ -63,7 +71,7 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   const model::NamedValues joints = resolved.joints;   // -j and --joints: for joints the bag does not name
   const motion::JointRules rules{resolved.clamp};
   PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), model_from_bag,
-                  warnings, scene_);
+                  warnings, scene_, cache);
   AddSceneDisplays(displays, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_, warnings, cache, moment_ns);
   request::Prepared& prepared = scene_.robot;
   poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);

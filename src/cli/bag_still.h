@@ -50,9 +50,10 @@ class BagStill {
   // (AddSceneDisplays). With --underlay-topic the camera's underlay is that topic's image at the
   // moment (ReadBagCameraImage), with --camera-info-topic its calibration the topic's CameraInfo
   // then (ReadBagCameraInfo); each an error beside --underlay or --camera-info, and the underlay
-  // without a camera. A `cache` keeps the displays for the next still of the bag (AddSceneDisplays).
+  // without a camera. A `cache` gives what an earlier still of the bag read (its joint states, TF and
+  // displays) and keeps what this one reads for the next.
   BagStill(const BagStillOptions& options, request::RenderSession& session, const request::RenderRequest& request,
-           bool model_from_bag, const DisplayOptions& displays, Warnings& warnings, DisplayCache* cache = nullptr);
+           bool model_from_bag, const DisplayOptions& displays, Warnings& warnings, BagCache* cache = nullptr);
   BagStill(const BagStill&) = delete;
   BagStill& operator=(const BagStill&) = delete;
 
