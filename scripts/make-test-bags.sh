@@ -13,3 +13,6 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 node --single-threaded "$root/tests/node/make_test_bags.mjs" "$@"
 node --single-threaded "$root/tests/node/make_cloud_bags.mjs" "$1"
 node --single-threaded "$root/tests/node/make_display_bags.mjs" "$1"
+# the display memory test's short and long recordings (tests/cli/display_memory_test.cpp)
+node --single-threaded "$root/tests/node/make_display_bags.mjs" "$1" 2000 10 displays_10s.mcap
+node --single-threaded "$root/tests/node/make_display_bags.mjs" "$1" 2000 60 displays_60s.mcap

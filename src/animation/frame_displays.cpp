@@ -25,6 +25,7 @@ std::int64_t FrameDisplays::Stamp(double t) const {
 void FrameDisplays::AddTo(const render::RobotRenderer& robot, const std::vector<double>& positions,
                           const Eigen::Isometry3d& X_SF, double t, scene::Scene& scene, Warnings& warnings) {
   const std::int64_t stamp = Stamp(t);
+  shown_ns_ = stamp;
   if (feed_) feed_->AdvanceTo(stamp, warnings);
   const std::vector<Eigen::Isometry3d> X_RL = model::ComputeLinkPoses(robot.robot(), positions);
   const display::FrameLookup links = request::RobotFrames(robot.robot(), X_RL, robot.scene().fixed_link());

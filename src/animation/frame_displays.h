@@ -44,12 +44,16 @@ class FrameDisplays {
   void AddTo(const render::RobotRenderer& robot, const std::vector<double>& positions, const Eigen::Isometry3d& X_SF,
              double t, scene::Scene& scene, Warnings& warnings);
 
+  // Whether AddTo may still be asked for the stamp `stamp_ns`: no earlier AddTo went past it.
+  bool CanShow(std::int64_t stamp_ns) const { return stamp_ns >= shown_ns_; }
+
  private:
   display::DisplaySet displays_;
   std::optional<display::BagDisplayFeed> feed_;   // feeds displays_
   std::shared_ptr<const tf::TfBuffer> transforms_;
   std::string fixed_frame_;
   double stamp_at_zero_;
+  std::int64_t shown_ns_ = INT64_MIN;   // the stamp of the last AddTo
 };
 
 }  // namespace urdfsnap::animation

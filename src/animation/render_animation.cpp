@@ -43,10 +43,11 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, 
     const std::int64_t k = range.first + i;
     const std::vector<double> positions = frames.Positions(k, warnings);
     const std::optional<render::CameraSettings> camera = frames.Camera(k, warnings);
+    // the scene with its displays, through the camera on the placed robot or through the view
+    const scene::Scene scene = frames.Scene(robot, k, warnings);
+    drawn.frame = camera ? robot.Render(gl, scene, frames.Place(k, warnings), positions, *camera, wanted)
+                         : gl.Render(scene, frames.View(k), frames.size().width, frames.size().height, wanted);
     const Eigen::Isometry3d X_SF = camera ? Eigen::Isometry3d::Identity() : frames.Place(k, warnings);
-    drawn.frame = camera ? robot.Render(gl, positions, *camera, wanted)
-                         : gl.Render(frames.Scene(robot, k, warnings), frames.View(k), frames.size().width,
-                                     frames.size().height, wanted);
     if (outputs.keypoints) {
       drawn.keypoints =
           dataset::RenderedKeypointsJson(robot, positions, FrameCamera(frames, k, camera, X_SF), drawn.frame);

@@ -18,8 +18,20 @@ animation::SceneAdditions BagScene::Additions() {
           displays ? &*displays : nullptr, underlay ? &*underlay : nullptr};
 }
 
+namespace {
+
+// The bag's TF: `cache`'s when it has read it, else read (and kept in `cache`).
+std::shared_ptr<const tf::TfBuffer> BagTransforms(const std::string& bag, BagCache* cache) {
+  if (cache && cache->transforms) return cache->transforms;
+  auto transforms = std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(bag));
+  if (cache) cache->transforms = transforms;
+  return transforms;
+}
+
+}  // namespace
+
 void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,
-                     double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out) {
+                     double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out, BagCache* cache) {
   // the description's relative mesh paths: from the bag's folder, not the temporary file's
   if (model_from_bag) {
     std::filesystem::path place(bag);
@@ -42,8 +54,7 @@ void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest r
   const bool tf_camera = !bag.empty() && camera && !camera->frame.empty() && robot.FindLink(camera->frame) < 0;
   const bool tf_shown = tf_fixed_frame || tf_camera || tf_options.enabled ||
                         (!target_frame.empty() && robot.FindLink(target_frame) < 0);
-  out.transforms = std::make_shared<const tf::TfBuffer>(!bag.empty() && tf_shown ? tf::ReadBagTransforms(bag)
-                                                                                 : tf::TfBuffer());
+  out.transforms = !bag.empty() && tf_shown ? BagTransforms(bag, cache) : std::make_shared<const tf::TfBuffer>();
   if (tf_fixed_frame) {
     if (fixed_frame_given || out.transforms->Find(fixed_frame, root, 0)) {
       out.root.emplace(out.transforms, fixed_frame, root, stamp_at_zero, bag);
@@ -70,25 +81,34 @@ void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest r
 }
 
 void AddSceneDisplays(const DisplayOptions& options, const std::string& bag, double stamp_at_zero, BagScene& scene,
-                      Warnings& warnings) {
+                      Warnings& warnings, BagCache* cache, std::int64_t moment_ns) {
   const render::RenderSettings& s = scene.robot.settings;
   if (options.empty() && s.displays.empty()) return;
-  if (s.camera) {
-    throw Error("message displays (--rviz, --display, --message) are drawn through the orbit view only, not "
-                "through a calibrated camera (--camera, --camera-frame)");
-  }
   // the scene's frame: where TF places the robot, else its fixed link
   const std::string fixed_frame = scene.root ? scene.root->fixed_frame()
                                   : s.scene.fixed_frame.empty() ? scene.robot.robot->links().front().name
                                                                 : s.scene.fixed_frame;
+  if (cache && !options.empty()) cache = nullptr;   // (message files)
+  if (cache && cache->displays && cache->settings == s.displays && cache->fixed_frame == fixed_frame &&
+      cache->stamp_at_zero == stamp_at_zero && cache->displays->CanShow(moment_ns)) {
+    scene.displays = cache->displays;
+    return;
+  }
   // the scene reads the bag's TF only when it shows it; the displays' frames need it anyway
   std::shared_ptr<const tf::TfBuffer> transforms = scene.transforms;
   if (!bag.empty() && transforms->frames().empty()) {
-    transforms = std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(bag));
+    transforms = BagTransforms(bag, cache);
   }
-  scene.displays.emplace(
+  if (cache) cache->displays.reset();   // its reader thread and what its displays keep go first
+  scene.displays = std::make_shared<animation::FrameDisplays>(
       options.MakeDisplays(s.displays, fixed_frame, request::MarkerResourcesFor(s.scene), warnings), bag,
       std::move(transforms), fixed_frame, stamp_at_zero);
+  if (cache) {
+    cache->settings = s.displays;
+    cache->fixed_frame = fixed_frame;
+    cache->stamp_at_zero = stamp_at_zero;
+    cache->displays = scene.displays;
+  }
 }
 
 }  // namespace urdfsnap::cli

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "animation/animation_frames.h"
 #include "animation/followed_frame.h"
@@ -18,6 +19,7 @@
 #include "cli/display_options.h"
 #include "common/warnings.h"
 #include "motion/root_poses.h"
+#include "motion/trajectory.h"
 #include "request/render_session.h"
 #include "request/resolved_request.h"
 #include "tf/tf_buffer.h"
@@ -33,11 +35,28 @@ struct BagScene {
   // set for a camera whose --camera-frame is a frame of the bag's TF, not a link: where TF puts
   // the robot's root in it at each moment (animation::CameraRequest::camera_tf)
   std::optional<motion::RootPoses> camera_tf;
-  std::optional<animation::FrameDisplays> displays;   // set for message displays (AddSceneDisplays)
+  // set for message displays (AddSceneDisplays); shared with a BagCache that keeps them
+  std::shared_ptr<animation::FrameDisplays> displays;
   std::optional<animation::FrameUnderlay> underlay;   // set for a bag's camera image (AddBagUnderlay)
 
   // What the scene adds to each frame, for animation::AnimationFrames (which feeds the displays).
   animation::SceneAdditions Additions();
+};
+
+// What one still of a bag keeps for the next (serve's time slider), so that a request does not
+// read the bag again: its joint states and TF as read once (what a recording's animation keeps
+// too), and the message displays, reused while the same displays in the same fixed frame are asked
+// for at the same or a later moment, so that a slider dragged forward reads only the messages
+// between two moments; an earlier moment or other displays start them again from the bag's
+// beginning. Never the bag's other messages.
+struct BagCache {
+  std::optional<motion::Trajectory> trajectory;   // the joint states of `trajectory_topic`
+  std::string trajectory_topic;
+  std::shared_ptr<const tf::TfBuffer> transforms;   // the bag's /tf and /tf_static, once read
+  std::vector<display::DisplaySettings> settings;   // what `displays` were made for
+  std::string fixed_frame;
+  double stamp_at_zero = 0;
+  std::shared_ptr<animation::FrameDisplays> displays;
 };
 
 // Prepares `resolved` (its fit left to the caller) for the recording `bag` ("" for none: no TF,
@@ -47,16 +66,21 @@ struct BagScene {
 // folder, a rosbag2 folder's parent), as they would be from a URDF file saved beside it. A fixed frame that is neither a link nor connected to the root
 // by the bag's TF is an error when --fixed-frame gave it, and when an .rviz file gave it a warning,
 // the root link then fixed as `render` does without a bag. Throws urdfsnap::Error as
-// RenderSession::Prepare, tf::ReadBagTransforms and animation::FollowedFrame do.
+// RenderSession::Prepare, tf::ReadBagTransforms and animation::FollowedFrame do. A `cache` gives
+// the bag's TF read by an earlier still, or keeps it once read.
 void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,
-                     double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out);
+                     double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out,
+                     BagCache* cache = nullptr);
+
 
 // Adds the message displays of the robot's .rviz file and of `options` to `scene` (prepared by
 // PrepareBagScene for the same `bag` and `stamp_at_zero`), when there are any: drawn in the scene's
 // fixed frame, their topics read from `bag` ("" for none) as frames advance, their frames found
-// through its TF. Throws urdfsnap::Error for a calibrated camera (displays are drawn through the
-// orbit view only) and as DisplayOptions::MakeDisplays and tf::ReadBagTransforms do.
+// through its TF (drawn through the orbit view or the calibrated camera alike). With a `cache`
+// (and no `options`: those may be message files), displays it keeps are taken when they can show
+// the stamp `moment_ns` next, and the displays made are kept in it, as is the TF they read. Throws urdfsnap::Error as
+// DisplayOptions::MakeDisplays and tf::ReadBagTransforms do.
 void AddSceneDisplays(const DisplayOptions& options, const std::string& bag, double stamp_at_zero, BagScene& scene,
-                      Warnings& warnings);
+                      Warnings& warnings, BagCache* cache = nullptr, std::int64_t moment_ns = 0);
 
 }  // namespace urdfsnap::cli

@@ -32,8 +32,16 @@ void BagStillOptions::AddOptions(CLI::App& command) {
 }
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
-                   bool model_from_bag, const DisplayOptions& displays, Warnings& warnings) {
-  trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
+                   bool model_from_bag, const DisplayOptions& displays, Warnings& warnings, BagCache* cache) {
+  if (cache && cache->trajectory && cache->trajectory_topic == o.topic) {
+    trajectory_ = *cache->trajectory;
+  } else {
+    trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
+    if (cache) {
+      cache->trajectory = trajectory_;
+      cache->trajectory_topic = o.topic;
+    }
+  }
   const double at = o.at.empty() ? 0 : request::ParseFinite(o.at, "--at");
   plan_.trajectory_start = motion::TrajectorySeconds(trajectory_, at, "--at");
   if (plan_.trajectory_start < 0 || plan_.trajectory_start > trajectory_.EndTime()) {
@@ -48,8 +56,8 @@ BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, co
   const model::NamedValues joints = resolved.joints;   // -j and --joints: for joints the bag does not name
   const motion::JointRules rules{resolved.clamp};
   PrepareBagScene(session, std::move(resolved), o.bag, trajectory_.stamp_at_zero.value_or(0), model_from_bag,
-                  warnings, scene_);
-  AddSceneDisplays(displays, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_, warnings);
+                  warnings, scene_, cache);
+  AddSceneDisplays(displays, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_, warnings, cache, moment_ns);
   AddBagUnderlay(o.camera, r, o.bag, trajectory_.stamp_at_zero.value_or(0), scene_);
   request::Prepared& prepared = scene_.robot;
   poses_.emplace(*prepared.robot, trajectory_, joints, rules, warnings);
@@ -71,9 +79,11 @@ scene::Scene BagStill::Scene(Warnings& warnings) const {
 image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameOutputs& outputs,
                             Warnings& warnings) const {
   const request::Prepared& p = scene_.robot;
-  if (p.settings.camera) return session.Draw(p, outputs);
-  return session.GlRenderer(p.settings.samples)
-      .Render(Scene(warnings), p.settings.view, p.settings.size.width, p.settings.size.height, outputs);
+  gl::SceneRenderer& gl = session.GlRenderer(p.settings.samples);
+  if (p.settings.camera) {   // the scene (the displays, the TF display) through the camera on the placed robot
+    return p.renderer->Render(gl, Scene(warnings), frames_->Place(0, warnings), p.positions, *p.settings.camera, outputs);
+  }
+  return gl.Render(Scene(warnings), p.settings.view, p.settings.size.width, p.settings.size.height, outputs);
 }
 
 }  // namespace urdfsnap::cli

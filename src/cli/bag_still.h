@@ -49,9 +49,11 @@ class BagStill {
   // The message displays of the .rviz file and `displays` show the bag's messages up to the moment
   // (AddSceneDisplays). With --underlay-topic the camera's underlay is that topic's image at the
   // moment (AddBagUnderlay), with --camera-info-topic its calibration the topic's CameraInfo then
-  // (ResolveWithBagCamera): what `animate` draws in a frame at the moment.
+  // (ResolveWithBagCamera): what `animate` draws in a frame at the moment. A `cache` gives what an
+  // earlier still of the bag read (its joint states, TF and displays) and keeps what this one reads
+  // for the next.
   BagStill(const BagStillOptions& options, request::RenderSession& session, const request::RenderRequest& request,
-           bool model_from_bag, const DisplayOptions& displays, Warnings& warnings);
+           bool model_from_bag, const DisplayOptions& displays, Warnings& warnings, BagCache* cache = nullptr);
   BagStill(const BagStill&) = delete;
   BagStill& operator=(const BagStill&) = delete;
 

@@ -26,9 +26,9 @@ void DisplayOptions::AddOptions(CLI::App& cmd) {
       ->take_all();
   cmd.add_option("--message", messages,
                  "draw a message file: FILE:TYPE, FILE as `ros2 topic echo` prints a message (the "
-                 "last of several), TYPE visualization_msgs/msg/Marker or MarkerArray, "
-                 "nav_msgs/msg/Path or geometry_msgs/msg/PoseArray, drawn as RViz's display of that "
-                 "type with its defaults, in frames of the robot's links; repeatable")
+                 "last of several), TYPE one of " + display::DrawnMessageTypes() +
+                     ", drawn as RViz's display of that type with its defaults, in frames of the robot's "
+                     "links; repeatable")
       ->take_all();
 }
 

@@ -71,15 +71,22 @@ serve::RecordingView Recording(const std::string& bag, Warnings& warnings) {
   serve::RecordingView view;
   view.duration = motion::ReadTrajectory(bag, {bag::kDefaultJointStateTopic}, warnings).EndTime();
   auto session = std::make_shared<request::RenderSession>();
-  view.moment = [bag, session](const request::RenderRequest& request, double at, Warnings& frame_warnings) {
+  // what a request read of the bag, for the next: a slider dragged forward reads only the messages in between
+  auto cache = std::make_shared<BagCache>();
+  view.moment = [bag, session, cache](const request::RenderRequest& request, double at, Warnings& frame_warnings) {
     BagStillOptions moment;
     moment.bag = bag;
     moment.at = FormatNumber(at);
-    const BagStill still(moment, *session, request, true, DisplayOptions{}, frame_warnings);
-    if (still.prepared().settings.camera) {
-      throw Error("a recording is served through the orbit view only, not through a calibrated camera");
+    try {
+      const BagStill still(moment, *session, request, true, DisplayOptions{}, frame_warnings, cache.get());
+      if (still.prepared().settings.camera) {
+        throw Error("a recording is served through the orbit view only, not through a calibrated camera");
+      }
+      return serve::RecordedMoment{still.Scene(frame_warnings), still.prepared().settings};
+    } catch (...) {
+      cache->displays.reset();   // a feed that failed gives nothing more: the next request starts again
+      throw;
     }
-    return serve::RecordedMoment{still.Scene(frame_warnings), still.prepared().settings};
   };
   return view;
 }

@@ -56,14 +56,22 @@ DisplaySettings DefaultDisplay(const std::string& class_name, const std::string&
   throw Error("unknown display class '" + class_name + "'; urdfsnap draws " + names);
 }
 
+std::string DrawnMessageTypes() {
+  std::string types;
+  for (const Known& known : KnownDisplays()) {
+    const std::string type = known.type;
+    if (type.empty()) continue;
+    types += (types.empty() ? "" : ", ") + type.substr(0, type.find('/')) + "/msg" + type.substr(type.find('/'));
+  }
+  return types;
+}
+
 DisplaySettings DefaultDisplayForType(const std::string& type, const std::string& topic) {
   const std::string short_type = bag::ShortTypeName(type);
   for (const Known& known : KnownDisplays()) {
     if (short_type == known.type) return {known.class_name, topic, known.defaults};
   }
-  throw Error("no display draws messages of type '" + type +
-              "'; urdfsnap draws visualization_msgs/msg/Marker and MarkerArray, nav_msgs/msg/Path, "
-              "geometry_msgs/msg/PoseArray, sensor_msgs/msg/PointCloud2 and LaserScan");
+  throw Error("no display draws messages of type '" + type + "'; urdfsnap draws " + DrawnMessageTypes());
 }
 
 std::unique_ptr<Display> MakeDisplay(const DisplaySettings& settings, const std::string& fixed_frame,

@@ -16,6 +16,9 @@ namespace urdfsnap::display {
 // Throws urdfsnap::Error naming the classes known for another name.
 DisplaySettings DefaultDisplay(const std::string& class_name, const std::string& topic);
 
+// Every message type a display draws, as "pkg/msg/Type" joined by ", " (the --message types).
+std::string DrawnMessageTypes();
+
 // The display RViz draws messages of `type` ("visualization_msgs/msg/MarkerArray", ...) with, with
 // its defaults, on `topic` (message files). Throws urdfsnap::Error for a type no display draws.
 DisplaySettings DefaultDisplayForType(const std::string& type, const std::string& topic);

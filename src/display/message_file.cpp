@@ -7,6 +7,7 @@
 #include "common/file_reading.h"
 #include "common/internal/yaml_section.h"
 #include "common/number_text.h"
+#include "display/make_display.h"
 
 namespace urdfsnap::display {
 namespace {
@@ -83,9 +84,7 @@ MessageFile ReadMessageFile(const std::string& path, const std::string& type) {
   std::optional<bag::MessageSchema> schema = bag::MessageSchema::Shipped(type);
   if (!schema) {
     throw Error(SourceLocation{path, 0}, "urdfsnap has no definition of message type '" + type +
-                                             "'; message files may hold a visualization_msgs/msg/Marker, "
-                                             "visualization_msgs/msg/MarkerArray, nav_msgs/msg/Path or "
-                                             "geometry_msgs/msg/PoseArray");
+                                             "'; message files may hold " + DrawnMessageTypes());
   }
   std::string text;
   try {

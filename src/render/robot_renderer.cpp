@@ -37,14 +37,20 @@ Eigen::Isometry3d RobotRenderer::CameraPose(const std::vector<Eigen::Isometry3d>
 
 image::Frame RobotRenderer::Render(gl::SceneRenderer& gl, const std::vector<double>& positions,
                                    const CameraSettings& camera, const image::FrameOutputs& outputs) const {
+  return Render(gl, Pose(positions), Eigen::Isometry3d::Identity(), positions, camera, outputs);
+}
+
+image::Frame RobotRenderer::Render(gl::SceneRenderer& gl, const scene::Scene& scene, const Eigen::Isometry3d& X_SF,
+                                   const std::vector<double>& positions, const CameraSettings& camera,
+                                   const image::FrameOutputs& outputs) const {
   const std::vector<Eigen::Isometry3d> X_RL = model::ComputeLinkPoses(*robot_, positions);
   const camera::CameraModel& model = *camera.model;
   const bool underlay = camera.underlay && outputs.colour;
   image::FrameOutputs wanted = outputs;
   wanted.labels = outputs.labels || underlay;
-  const Eigen::Matrix4d view = camera::GlViewMatrix(CameraPose(X_RL, camera));
-  image::Frame frame = model.Finish(gl.Render(scene_.Pose(X_RL), view, model.GlProjection(), model.drawn().width,
-                                              model.drawn().height, wanted));
+  const Eigen::Matrix4d view = camera::GlViewMatrix(X_SF * CameraPose(X_RL, camera));
+  image::Frame frame = model.Finish(
+      gl.Render(scene, view, model.GlProjection(), model.drawn().width, model.drawn().height, wanted));
   if (underlay) {
     camera::DrawUnderlay(*camera.underlay, camera.underlay_file, camera.overlay_alpha, frame.labels, frame.colour);
     if (!outputs.labels) frame.labels = {};

@@ -49,6 +49,14 @@ class RobotRenderer {
   image::Frame Render(gl::SceneRenderer& gl, const std::vector<double>& positions, const CameraSettings& camera,
                       const image::FrameOutputs& outputs = {}) const;
 
+  // Renders `scene` (the robot at `positions` with its fixed link placed at X_SF, as Pose makes it,
+  // with whatever was added to it: message displays, the TF display) through a calibrated camera as
+  // the overload above renders the robot alone: the camera placed on the robot as there, so in the
+  // scene at X_SF times that, the lens applied to everything drawn.
+  image::Frame Render(gl::SceneRenderer& gl, const scene::Scene& scene, const Eigen::Isometry3d& X_SF,
+                      const std::vector<double>& positions, const CameraSettings& camera,
+                      const image::FrameOutputs& outputs = {}) const;
+
   // Renders one frame as `settings` ask: through settings.camera when set, else through
   // settings.view at settings.size.
   image::Frame Render(gl::SceneRenderer& gl, const std::vector<double>& positions, const RenderSettings& settings,

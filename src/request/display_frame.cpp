@@ -1,7 +1,6 @@
 // The robot's scene, the displays' items on top, one GL render.
 #include "request/display_frame.h"
 
-#include "common/error.h"
 #include "geometry/mesh_uri.h"
 #include "model/forward_kinematics.h"
 
@@ -26,12 +25,13 @@ image::Frame DrawWithDisplays(RenderSession& session, const Prepared& prepared,
                               const display::DisplaySet& displays, Warnings& warnings,
                               const image::FrameOutputs& outputs) {
   const render::RenderSettings& s = prepared.settings;
-  if (s.camera) throw Error("message displays are drawn through the orbit view only, not through a calibrated camera");
   const std::vector<Eigen::Isometry3d> X_RL = model::ComputeLinkPoses(*prepared.robot, prepared.positions);
   const scene::RobotScene& robot_scene = prepared.renderer->scene();
   scene::Scene scene = robot_scene.Pose(X_RL);
   displays.Draw(0, RobotFrames(*prepared.robot, X_RL, robot_scene.fixed_link()), scene, warnings);
-  return session.GlRenderer(s.samples).Render(scene, s.view, s.size.width, s.size.height, outputs);
+  gl::SceneRenderer& gl = session.GlRenderer(s.samples);
+  if (s.camera) return prepared.renderer->Render(gl, scene, Eigen::Isometry3d::Identity(), prepared.positions, *s.camera, outputs);
+  return gl.Render(scene, s.view, s.size.width, s.size.height, outputs);
 }
 
 }  // namespace urdfsnap::request

@@ -24,8 +24,8 @@ display::MarkerResources MarkerResourcesFor(const scene::SceneOptions& options);
 display::FrameLookup RobotFrames(const model::Robot& robot, const std::vector<Eigen::Isometry3d>& X_RL,
                                  int fixed_link);
 
-// Draws `prepared` (through its orbit view; a calibrated camera is an urdfsnap::Error) with what
-// `displays` show at time 0, their frames among the robot's links. Display problems are warnings.
+// Draws `prepared` (through its orbit view or its calibrated camera) with what `displays` show at
+// time 0, their frames among the robot's links. Display problems are warnings.
 image::Frame DrawWithDisplays(RenderSession& session, const Prepared& prepared,
                               const display::DisplaySet& displays, Warnings& warnings,
                               const image::FrameOutputs& outputs = {});

@@ -1,6 +1,7 @@
 // `render` through a calibrated camera, against geometry computed by hand: a 0.4 x 0.2 x 0.3 m box
 // seen straight down from 2 m by an off-centre camera with non-square pixels; its silhouette,
-// depth and keypoints, the lens remap, the underlay and the mask; and the camera options' errors.
+// depth and keypoints, the lens remap, the underlay and the mask, a marker drawn through the
+// camera; and the camera options' errors.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -171,6 +172,48 @@ TEST_F(CameraTest, ASizeBesideACalibrationIsIgnoredWithAWarning) {
   EXPECT_EQ(animate.status, 0) << animate.output;
   EXPECT_EQ(animate.output, "");
   EXPECT_EQ(image::ReadGray16Png(Path("a/00.png")).width, 400);
+}
+
+// A green sphere 6 cm across at (0.35, 0.25, 0) beside the box, drawn through the camera as a
+// message display (`--message`), and the centre of its green pixels: where the sphere's centre
+// is in the normalised image, 2 m straight down (optical x = +x, y = −y).
+const Eigen::Vector2d kSphereCentre(0.35 / 2, -0.25 / 2);
+Eigen::Vector2d GreenCentre(const image::Image& image) {
+  Eigen::Vector2d sum(0, 0);
+  int count = 0;
+  for (int v = 0; v < image.height; ++v) {
+    for (int u = 0; u < image.width; ++u) {
+      const std::uint8_t* p = &image.rgb[(static_cast<size_t>(v) * image.width + u) * 3];
+      if (p[1] > p[0] + 60 && p[1] > p[2] + 60) {
+        sum += Eigen::Vector2d(u, v);   // pixel centres at whole numbers, as OpenCV has them
+        ++count;
+      }
+    }
+  }
+  EXPECT_GT(count, 80) << "the sphere is drawn";
+  return count ? Eigen::Vector2d(sum / count) : sum;
+}
+
+// Message displays are seen through the camera as the robot is: through the rectified P, and with
+// --distort through the lens (K and D; tests/camera/projection_test.cpp checks the lens against
+// OpenCV's cv2.projectPoints).
+TEST_F(CameraTest, AMarkerLandsWhereTheCameraProjectsItsPoint) {
+  URDFSNAP_REQUIRE_GL();
+  const std::string marker = " --message " + Write("m.yaml", R"(header: {frame_id: body}
+type: 2
+pose: {position: {x: 0.35, y: 0.25, z: 0}}
+scale: {x: 0.06, y: 0.06, z: 0.06}
+color: {g: 1, a: 1}
+)") + ":visualization_msgs/msg/Marker";
+  Render(marker);
+  const Eigen::Vector2d pinhole = camera::ToPixel(kK, kSphereCentre);   // P is K here
+  EXPECT_LT((GreenCentre(image::ReadPng(Path("c.png"))) - pinhole).norm(), 0.6);
+  Render(marker + " --distort");
+  std::string why;
+  const camera::Distortion lens = *camera::MakeDistortion("plumb_bob", {-0.25, 0.08, 0.001, -0.002, 0.0}, why);
+  const Eigen::Vector2d raw = camera::ToPixel(kK, camera::Distort(lens, kSphereCentre));
+  EXPECT_LT((GreenCentre(image::ReadPng(Path("c.png"))) - raw).norm(), 0.6);
+  EXPECT_GT((raw - pinhole).norm(), 1.2) << "the lens moves it";
 }
 
 TEST_F(CameraTest, CameraOptionErrorsAreOneLine) {

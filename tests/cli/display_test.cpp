@@ -68,11 +68,32 @@ TEST_F(DisplayCliTest, BadMessageFilesAreErrorsAtTheirLine) {
   EXPECT_EQ(r.output, "urdfsnap: error: " + bad + ":3: 'colour' is not a field of visualization_msgs/Marker\n");
   r = RunUrdfsnap("render " + kMrm + " --message " + bad + ":sensor_msgs/msg/Image -o " + Path("x.png"));
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.output.find("no display draws messages of type 'sensor_msgs/msg/Image'"), std::string::npos) << r.output;
+  // every type a display draws, each a message file may hold
+  EXPECT_NE(r.output.find("no display draws messages of type 'sensor_msgs/msg/Image'; urdfsnap draws "
+                          "visualization_msgs/msg/Marker, visualization_msgs/msg/MarkerArray, nav_msgs/msg/Path, "
+                          "geometry_msgs/msg/PoseArray, sensor_msgs/msg/PointCloud2, sensor_msgs/msg/LaserScan\n"),
+            std::string::npos) << r.output;
   r = RunUrdfsnap("render " + kMrm + " --display Map:/map -o " + Path("x.png"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.output.find("unknown display class 'Map'"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(Path("x.png")));
+}
+
+TEST_F(DisplayCliTest, ALaserScanMessageFileIsDrawn) {
+  URDFSNAP_REQUIRE_GL();
+  // 90 ranges of 1.5 m over a half turn, in FlatColor's default white
+  std::string ranges;
+  for (int i = 0; i < 90; ++i) ranges += std::string(i ? ", " : "") + "1.5";
+  const std::string scan = Write("scan.yaml", "header: {frame_id: base_link}\nangle_min: -1.5708\nangle_max: 1.5708\n"
+                                              "angle_increment: 0.0353\nrange_min: 0.1\nrange_max: 10\nranges: [" +
+                                                  ranges + "]\n");
+  const Result r = RunUrdfsnap("render " + kMrm + " --message " + scan + ":sensor_msgs/msg/LaserScan" + kView + " -o " +
+                               Path("scan.png"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output, "");
+  ASSERT_EQ(RunUrdfsnap("render " + kMrm + kView + " -o " + Path("robot.png")).status, 0);
+  // RViz's default Flat Squares of 0.01 m: a half ring of 90 dots of a few pixels each
+  EXPECT_GT(ChangedShare(image::ReadPng(Path("scan.png")), image::ReadPng(Path("robot.png"))) * 640 * 480, 150);
 }
 
 TEST_F(DisplayCliTest, BrokenMarkersAreWarningsNamingThemAndTheRestIsDrawn) {

@@ -4,8 +4,9 @@
 // the lidar frame (/cloud, POINTS points), a 2 Hz nav_msgs/Path, and a MarkerArray (/markers): a
 // sphere every 0.5 s living 0.6 s, a cube frame_locked to link_05, a DELETEALL at 2.5 s, and at
 // 1.5 s a line strip that claims 10^8 points over the bytes of two (a hostile message).
-// usage: node make_display_bags.mjs OUT_DIR [POINTS [SECONDS]]   (2000 points, 3 s: the tests';
-// bench/animate/display_bag_bench.sh asks for a lidar's size and a longer recording)
+// usage: node make_display_bags.mjs OUT_DIR [POINTS [SECONDS [NAME]]]   (2000 points, 3 s, displays_moving.mcap:
+// the tests'; the memory test asks for 10 s and 60 s; bench/animate/display_bag_bench.sh asks for a lidar's size and a
+// longer recording)
 import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -15,9 +16,10 @@ import { nanos, writeBag } from "./bag_writing.mjs";
 import { kSeparator } from "./ros2_schemas.mjs";
 
 const out = process.argv[2];
-if (!out) throw new Error("usage: node make_display_bags.mjs OUT_DIR [POINTS]");
+if (!out) throw new Error("usage: node make_display_bags.mjs OUT_DIR [POINTS [SECONDS [NAME]]]");
 const cloudPoints = Number(process.argv[3] ?? 2000);
 const seconds = Number(process.argv[4] ?? 3);
+const name = process.argv[5] ?? "displays_moving.mcap";
 mkdirSync(out, { recursive: true });
 
 // ROS 1 style time primitives of the definitions package, as ROS 2 names them
@@ -139,4 +141,4 @@ for (let k = 0; k <= 30 * seconds; ++k) {   // 30 Hz joints, 10 Hz base
   }
   if (k === 45) messages.push([channelOf["/markers"], nanos(stampAt(t)) + 1n, hostileMarkers(t)]);
 }
-writeFileSync(join(out, "displays_moving.mcap"), await writeBag({ channels, messages, chunkSize: 1 << 20 }));
+writeFileSync(join(out, name), await writeBag({ channels, messages, chunkSize: 1 << 20 }));

@@ -38,7 +38,9 @@ TEST_F(ServeRecordingTest, FramesAtATimeAreRenderBagAtThatTime) {
   const auto status = client->Get("/api/status");
   ASSERT_TRUE(status);
   EXPECT_DOUBLE_EQ(nlohmann::json::parse(status->body)["recording"]["duration"].get<double>(), 3.0);
-  for (const char* at : {"0.4", "1.2", "2.9"}) {
+  // forward (the displays kept between requests, fed only the messages in between), then back
+  // (made again from the bag's start), then forward again
+  for (const char* at : {"0.4", "1.2", "2.9", "0.7", "1.6"}) {
     const auto frame = client->Get("/render.png?at=" + std::string(at) + "&" + kView);
     ASSERT_TRUE(frame);
     ASSERT_EQ(frame->status, 200) << frame->body;
