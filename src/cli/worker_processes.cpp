@@ -180,7 +180,7 @@ bool WorkerProcesses::Drain(Worker& worker, int fd, Warnings& warnings) {
       warnings.Add(line.substr(kWarning.size()));
     } else if (line.starts_with(kError)) {
       worker.error = line.substr(kError.size());
-    } else {
+    } else if (passed_on_.insert(line).second) {
       std::fprintf(stderr, "%s\n", line.c_str());
     }
     line.clear();

@@ -13,7 +13,8 @@
 //                    (the parent sums them into its one progress line)
 //   worker's stderr  "urdfsnap: warning: TEXT" (gathered into the parent's warnings, each once),
 //                    "urdfsnap: error: TEXT" with a status other than 0 (the parent's error, once,
-//                    the other workers stopped); any other line is passed on to the parent's stderr
+//                    the other workers stopped); any other line is passed on to the parent's stderr,
+//                    each distinct line once (every worker says the same --verbose backend line)
 // SIGINT and SIGTERM to the parent stop every worker before the parent ends by the same signal.
 #pragma once
 
@@ -23,6 +24,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -91,6 +93,7 @@ class WorkerProcesses {
   sigset_t caller_mask_;
   struct sigaction caller_sigpipe_ {};
   int signal_fd_ = -1;
+  std::set<std::string> passed_on_;   // the workers' other stderr lines already passed on
 };
 
 // A worker's side: the number of the next piece to make, asked of the parent; nullopt when none

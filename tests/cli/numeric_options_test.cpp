@@ -135,6 +135,7 @@ const std::vector<CommandOption>& Options() {
         {"docs", "--quiet", Kind::kFlag},
         {"docs", "--shard", Kind::kText},
         {"docs", "--no-shard", Kind::kFlag},
+        {"docs", "--jobs", Kind::kNumber, "MRM -o OUT --jobs {v}"},
         {"animate", "--output", Kind::kText},
         {"animate", "--trajectory", Kind::kText},
         {"animate", "--topic", Kind::kText},
