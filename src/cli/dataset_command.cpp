@@ -76,10 +76,6 @@ double ParseWhole(const std::string& text, const std::string& option, double low
 
 void Run(DatasetOptions& o) {
   const gl::BackendChoice backend = o.gl_options.Choice();
-  // the writer thread keeps a core busy while samples are drawn (decided before the robot is
-  // loaded, as for a light robot: 0 triangles)
-  const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, 0);
-  if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
   const auto gl_loading = gl::StartLoadingGl(backend.backend);
   request::RenderRequest& r = o.request;
   r.model = o.model.ToRequest();
@@ -133,6 +129,11 @@ void Run(DatasetOptions& o) {
                                          : ParseInterval(o.distance, "--distance", 1e-3, 1e6);
     }
     PrintWarnings(warnings);
+    // the writer thread keeps a core busy while samples are drawn, unless drawing outweighs it
+    // (as animate decides; set while no other thread runs: before the GL context reads it)
+    gl_loading.wait();
+    const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, renderer.scene().triangle_count());
+    if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
     gl::SceneRenderer gl(settings.samples, backend);
     stream::ProgressBar bar(spec.range.size(), "samples",
                             o.quiet ? stream::ProgressBar::Display::kNever : stream::ProgressBar::Display::kIfTerminal);
