@@ -34,7 +34,8 @@ render::CameraSettings FrameCamera(const AnimationFrames& frames, std::int64_t k
 }  // namespace
 
 void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const AnimationFrames& frames,
-                     shard::FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
+                     shard::FrameRange range, const AnimationOutputs& outputs,
+                     const std::function<void(std::int64_t done)>& progress,
                      Warnings& warnings, std::size_t depth) {
   const image::FrameOutputs wanted = dataset::OutputsFor(
       {true, outputs.depth != nullptr, outputs.labels != nullptr},
@@ -65,7 +66,7 @@ void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, 
       outputs.mask->Write({reinterpret_cast<const char*>(png.data()), png.size()});
     }
     if (outputs.keypoints) outputs.keypoints->Write(drawn.keypoints);
-    if (progress) progress->Update(i + 1);
+    if (progress) progress(i + 1);
   };
   stream::RunPipeline<DrawnFrame>(range.size(), depth, render, write);
   outputs.colour->Finish();

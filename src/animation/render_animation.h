@@ -6,13 +6,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include "animation/animation_frames.h"
 #include "common/warnings.h"
 #include "gl/scene_renderer.h"
 #include "render/robot_renderer.h"
 #include "shard/shard_assignment.h"
-#include "stream/progress_bar.h"
 #include "video/frame_encoder.h"
 #include "video/numbered_files.h"
 
@@ -29,13 +29,14 @@ struct AnimationOutputs {
 };
 
 // Renders the frames of `range` (the whole animation, or a shard's frames) of `frames` with `robot` through `gl` and writes them, in order, to
-// every output; then finishes each output (moving it into place). `progress`, if given, counts the
-// range's frames as they are written; the caller finishes it, saying what was written. At most `depth` rendered frames wait for the
+// every output; then finishes each output (moving it into place). `progress`, if given, is called with the
+// number of the range's frames written so far, after each. At most `depth` rendered frames wait for the
 // writer. Warnings of the poses go to `warnings` (touched on the calling thread only). The first
 // error on either thread stops both and is rethrown; the outputs are then left unfinished, so that
 // their destruction removes what they wrote.
 void RenderAnimation(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const AnimationFrames& frames,
-                     shard::FrameRange range, const AnimationOutputs& outputs, stream::ProgressBar* progress,
+                     shard::FrameRange range, const AnimationOutputs& outputs,
+                     const std::function<void(std::int64_t done)>& progress,
                      Warnings& warnings, std::size_t depth = 4);
 
 }  // namespace urdfsnap::animation

@@ -29,8 +29,11 @@
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "cli/shard_options.h"
+#include "cli/worker_processes.h"
 #include "common/error.h"
 #include "common/number_text.h"
+#include "common/random_suffix.h"
+#include "common/usable_cores.h"
 #include "gl/gl_context.h"
 #include "dataset/frame_extras.h"
 #include "image/depth_label_files.h"
@@ -42,6 +45,8 @@
 #include "request/request_inputs.h"
 #include "request/value_parsing.h"
 #include "shard/shard_assignment.h"
+#include "shard/shard_spec.h"
+#include "stream/progress_bar.h"
 #include "video/frame_encoder.h"
 #include "video/numbered_files.h"
 #include "video/open_frame_encoder.h"
@@ -70,6 +75,9 @@ struct AnimateOptions {
   bool quiet = false;
   bool model_from_bag = false;   // MODEL was a bag: its recorded description is the model
   ShardOptions sharding;      // a frame sequence's contiguous range of frames
+  int jobs = 0;               // --jobs: worker processes drawing a frame sequence; 0 = one per core
+  int worker_pieces = 0;      // a worker's: the pieces its parent cut the frames into
+  std::string worker_suffix;  // a worker's: the temporary suffix of the files its parent moves into place
   RenderOptions render;
   DisplayOptions displays;   // with the .rviz file's: message displays in every frame
   BagCameraOptions camera;   // a bag's camera image behind every frame, its calibration
@@ -234,43 +242,128 @@ void PrintFrame(const AnimateOptions& o, const PreparedAnimation& a, Warnings& w
       animation::RenderWords(*a.scene.robot.robot, positions, view, !o.render.request.no_clamp)) + "\n");
 }
 
+// A range of frames' outputs, open: the colour and the numbered sequences asked for.
+struct OpenOutputs {
+  std::unique_ptr<video::FrameEncoder> colour;
+  std::optional<video::NumberedFiles> depth, labels, mask, keypoints;
+
+  animation::AnimationOutputs Pointers(int mask_dilate) {
+    return {colour.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr, mask ? &*mask : nullptr, mask_dilate,
+            keypoints ? &*keypoints : nullptr};
+  }
+};
+
+// Opens every output into `outputs` for the frames of `range` (a worker's staged for its parent).
+void OpenRange(const AnimateOptions& o, const PreparedAnimation& a, shard::FrameRange range,
+               const video::Staging& staging, OpenOutputs& outputs, Warnings& warnings) {
+  const render::RenderSettings& settings = a.scene.robot.settings;
+  outputs.colour = video::OpenFrameEncoder(
+      o.output, {settings.size.width, settings.size.height, a.plan.fps, range.first, staging}, warnings);
+  for (const auto& [pattern, files] : {std::pair{&o.depth, &outputs.depth}, {&o.labels, &outputs.labels},
+                                       {&o.mask, &outputs.mask}, {&o.keypoints, &outputs.keypoints}}) {
+    if (!pattern->empty()) files->emplace(*pattern, range.first, staging);
+  }
+}
+
+// Writes the link names of --labels, once for the whole animation.
+void WriteLabelNames(const AnimateOptions& o, const PreparedAnimation& a, OutputPlan& outputs) {
+  if (!o.labels.empty()) {
+    outputs.Write(animation::LabelNamesPath(o.labels), image::LabelNamesJson(a.scene.robot.robot->LinkNames()));
+  }
+}
+
+stream::ProgressBar::Display BarDisplay(const AnimateOptions& o) {
+  return o.quiet ? stream::ProgressBar::Display::kNever : stream::ProgressBar::Display::kIfTerminal;
+}
+
 // Renders this shard's frames into the outputs `outputs` planned (prepared: checked and their folders
 // made), every output opened before the first frame and appearing only when all are complete.
 void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, request::RenderSession& session,
                     const PreparedAnimation& a, OutputPlan& outputs, Warnings& warnings) {
-  const render::RenderSettings& settings = a.scene.robot.settings;
   const shard::FrameRange range = shard::FramesOfShard(a.plan.frame_count, choice.shard);
   PrintShardLine(choice, range.size(), a.plan.frame_count, "frames", RangeText(range));
 
   a.frames->Positions(0, warnings);  // a pose's warnings are every frame's: print them first
-  const auto encoder = video::OpenFrameEncoder(
-      o.output, {settings.size.width, settings.size.height, a.plan.fps, range.first}, warnings);
-  std::optional<video::NumberedFiles> depth, labels, mask, keypoints;
-  if (!o.depth.empty()) depth.emplace(o.depth, range.first);
-  if (!o.mask.empty()) mask.emplace(o.mask, range.first);
-  if (!o.keypoints.empty()) keypoints.emplace(o.keypoints, range.first);
-  if (!o.labels.empty()) {
-    labels.emplace(o.labels, range.first);
-    outputs.Write(animation::LabelNamesPath(o.labels), image::LabelNamesJson(a.scene.robot.robot->LinkNames()));
-  }
+  OpenOutputs open;
+  OpenRange(o, a, range, {}, open, warnings);
+  WriteLabelNames(o, a, outputs);
   PrintWarnings(warnings);   // --strict ends here, before any frame
 
-  stream::ProgressBar bar(range.size(), "frames",
-                          o.quiet ? stream::ProgressBar::Display::kNever
-                                  : stream::ProgressBar::Display::kIfTerminal);
+  stream::ProgressBar bar(range.size(), "frames", BarDisplay(o));
   Warnings later;
-  animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(settings.samples), *a.frames, range,
-                             {encoder.get(), depth ? &*depth : nullptr, labels ? &*labels : nullptr,
-                              mask ? &*mask : nullptr, o.mask_dilate, keypoints ? &*keypoints : nullptr},
-                             &bar, later);
+  animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(a.scene.robot.settings.samples), *a.frames,
+                             range, open.Pointers(o.mask_dilate), [&](std::int64_t done) { bar.Update(done); }, later);
   outputs.Commit();
   bar.Finish(WrittenText(o.output, range));
   PrintNewWarnings(warnings, later);
 }
 
-// One animation (of the one MODEL, or of one of many bags) drawn through `session`; `gl_loading`
-// is the GL library being loaded.
-void RunOne(AnimateOptions& o, request::RenderSession& session, const std::future<void>& gl_loading) {
+// The pieces `animate --jobs N` cuts a frame sequence into per worker (contiguous runs of frames,
+// each worker taking the next as it finishes one): a worker slowed by other programs takes fewer.
+constexpr int kPiecesPerWorker = 4;
+
+// A frame sequence drawn by `workers` (started with `suffix` as the temporary names of their files):
+// this process writes the link names, sums the workers' progress into its line and, once every
+// worker has finished, moves every frame's files into place (or, after an error or a signal,
+// removes them).
+void WriteByWorkers(const AnimateOptions& o, const std::string& suffix, const PreparedAnimation& a,
+                    WorkerProcesses& workers, OutputPlan& outputs, Warnings& warnings) {
+  const shard::FrameRange range{0, a.plan.frame_count};
+  a.frames->Positions(0, warnings);
+  std::vector<std::unique_ptr<video::NumberedFiles>> staged;
+  for (const std::string* pattern : {&o.output, &o.depth, &o.labels, &o.mask, &o.keypoints}) {
+    if (pattern->empty()) continue;
+    staged.push_back(std::make_unique<video::NumberedFiles>(*pattern, 0, video::Staging{suffix, false}));
+    staged.back()->Adopt(range.size());
+  }
+  WriteLabelNames(o, a, outputs);
+  PrintWarnings(warnings);   // --strict ends here; the workers are stopped
+  stream::ProgressBar bar(range.size(), "frames", BarDisplay(o));
+  Warnings later;
+  workers.Wait([&](std::int64_t done) { bar.Update(done); }, later);
+  for (const auto& files : staged) files->Finish();
+  outputs.Commit();
+  bar.Finish(WrittenText(o.output, range));
+  PrintNewWarnings(warnings, later);
+}
+
+// A worker process of a parent's `animate --jobs N` (the hidden --worker-pieces and
+// --worker-suffix): the frames of each piece the parent hands it, under the temporary names the
+// parent moves into place; its progress on stdout, its warnings on stderr for the parent to gather.
+void DrawPieces(const AnimateOptions& o, request::RenderSession& session, const PreparedAnimation& a,
+                Warnings& warnings) {
+  std::int64_t done = 0;
+  while (const std::optional<int> piece = NextPiece()) {
+    const shard::FrameRange range =
+        shard::FramesOfShard(a.plan.frame_count, shard::CheckedShard(*piece, o.worker_pieces, "piece"));
+    if (range.size() == 0) continue;
+    OpenOutputs open;
+    OpenRange(o, a, range, {o.worker_suffix, true}, open, warnings);
+    animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(a.scene.robot.settings.samples), *a.frames,
+                               range, open.Pointers(o.mask_dilate),
+                               [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);
+    done += range.size();
+  }
+  PrintWarningsBeforeError(warnings);   // the parent gathers them (and applies --strict)
+}
+
+// How many worker processes draw the animation: --jobs (default one per core this process may
+// use) for a frame sequence; one for a video (one file, encoded in order), --print-frame, a shard
+// of a larger job, a worker itself, or a model read from standard input (a worker could not read
+// it again).
+int WorkerCount(const AnimateOptions& o) {
+  if (o.worker_pieces > 0 || !o.print_frame.empty() || o.output.empty() ||
+      video::OutputFormatOf(o.output) != video::OutputFormat::kPngSequence || o.sharding.Choose().sharded() ||
+      ReadsStandardInput(OwnCommandLine())) {
+    return 1;
+  }
+  return o.jobs > 0 ? o.jobs : UsableCores();
+}
+
+// One animation (of the one MODEL, or of one of many bags) drawn through `session`, or by `jobs`
+// worker processes; `gl_loading` is the GL library being loaded (not for workers: they load it).
+void RunOne(AnimateOptions& o, request::RenderSession& session, const std::optional<std::future<void>>& gl_loading,
+            int jobs) {
   request::RenderRequest& r = o.render.request;
   // MODEL given as a bag: its motion and the robot description it recorded
   std::optional<BagModel> bag_model;
@@ -299,7 +392,7 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
   if (!o.keypoints.empty()) animation::CheckPattern(o.keypoints, ".json", "--keypoints");
   // no output may be another output or an input; their folders are made (removed again on failure)
   OutputPlan outputs;
-  if (o.print_frame.empty()) {
+  if (o.print_frame.empty() && o.worker_pieces == 0) {
     request::AddRequestInputs(outputs, r);
     outputs.AddInput(o.trajectory, "--trajectory");
     animation::PlanOutput(outputs, o.output, "-o");
@@ -311,6 +404,15 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
     if (!o.mask.empty()) animation::PlanOutput(outputs, o.mask, "--mask");
     if (!o.keypoints.empty()) animation::PlanOutput(outputs, o.keypoints, "--keypoints");
     outputs.Prepare();
+  }
+  // workers start before this process reads the model, which they read too
+  const std::string suffix = jobs > 1 ? ".part-" + RandomSuffix() : "";
+  std::optional<WorkerProcesses> workers;
+  if (jobs > 1) {
+    const int pieces = kPiecesPerWorker * jobs;
+    workers.emplace(jobs, "animate",
+                    std::vector<std::string>{"--no-shard", "--worker-pieces", std::to_string(pieces), "--worker-suffix", suffix},
+                    pieces);
   }
 
   Warnings warnings;
@@ -326,12 +428,14 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::futur
     PreparedAnimation animation;
     PrepareAnimation(o, session, animation, warnings);
     if (!o.print_frame.empty()) return PrintFrame(o, animation, warnings);
+    if (workers) return WriteByWorkers(o, suffix, animation, *workers, outputs, warnings);
     // the encoder thread keeps a core busy while frames are drawn, unless drawing outweighs it
     // (set while no other thread runs: before the encoder opens and the GL context reads it)
-    gl_loading.wait();
+    gl_loading->wait();
     const std::string rasteriser =
         gl::LeaveCoresToOtherThreads(1, animation.scene.robot.renderer->scene().triangle_count());
     if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
+    if (o.worker_pieces > 0) return DrawPieces(o, session, animation, warnings);
     WriteAnimation(o, choice, session, animation, outputs, warnings);
   } catch (const Error& e) {
     PrintWarningsBeforeError(warnings);
@@ -354,11 +458,15 @@ std::vector<std::string> BagsGiven(const ModelSource& model) {
 }
 
 void Run(AnimateOptions& o) {
+  if (o.worker_pieces > 0) StopWhenParentEnds();
   const gl::BackendChoice backend = o.gl_options.Choice();
-  const auto gl_loading = gl::StartLoadingGl(backend.backend);  // overlaps loading Mesa with reading the model
-  request::RenderSession session(backend);
   const std::vector<std::string> bags = BagsGiven(o.model);
-  if (bags.size() < 2) return RunOne(o, session, gl_loading);
+  const int jobs = bags.size() < 2 ? WorkerCount(o) : 1;   // each of many bags in this process
+  // one process: Mesa loads while the model is read (before workers block the stop signals)
+  std::optional<std::future<void>> gl_loading;
+  if (jobs == 1) gl_loading = gl::StartLoadingGl(backend.backend);
+  request::RenderSession session(backend);
+  if (bags.size() < 2) return RunOne(o, session, gl_loading, jobs);
   if (!o.trajectory.empty() || !o.print_frame.empty()) {
     throw Error("animate: " + std::to_string(bags.size()) + " bags are animated each with its own motion and "
                 "description; --trajectory and --print-frame take one MODEL");
@@ -375,7 +483,7 @@ void Run(AnimateOptions& o) {
     one.output = WithStem(o.output, stem);
     one.depth = WithStem(o.depth, stem);
     one.labels = WithStem(o.labels, stem);
-    RunOne(one, session, gl_loading);
+    RunOne(one, session, gl_loading, 1);
   });
 }
 
@@ -452,7 +560,20 @@ void AddAnimateCommand(CLI::App& app) {
   o->displays.AddOptions(*cmd);
   o->camera.AddOptions(*cmd, "each frame's moment");
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the encoder");
-  cmd->callback([o] { Run(*o); });
+  cmd->add_option("--jobs", o->jobs,
+                  "draw a frame sequence in N worker processes at once, each taking contiguous runs of "
+                  "its frames as it finishes the last (default: one per core this process may use; 1: "
+                  "in this process). A video, --shard, or a model on standard input: one process")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--worker-pieces", o->worker_pieces)->group("");   // WorkerProcesses' own
+  cmd->add_option("--worker-suffix", o->worker_suffix)->group("");
+  cmd->callback([o] {
+    try {
+      Run(*o);
+    } catch (const StoppedBySignal& stopped) {
+      EndBySignal(stopped.signal);   // after the staged frames and the folders made are removed
+    }
+  });
 }
 
 }  // namespace urdfsnap::cli

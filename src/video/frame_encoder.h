@@ -11,6 +11,7 @@
 #include <string>
 
 #include "image/image.h"
+#include "video/numbered_files.h"
 
 namespace urdfsnap::video {
 
@@ -47,6 +48,7 @@ struct EncoderSettings {
   // The number of the first frame written: a PNG sequence's first file is named with it (a shard
   // of a sequence, --shard). A video is one file of every frame, so it only starts at 0.
   std::int64_t first_frame = 0;
+  Staging staging = {};   // a PNG sequence drawn by worker processes (see NumberedFiles)
 };
 
 class FrameEncoder {

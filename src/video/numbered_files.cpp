@@ -13,8 +13,11 @@
 
 namespace urdfsnap::video {
 
-NumberedFiles::NumberedFiles(const std::string& pattern, std::int64_t first)
-    : pattern_(pattern), temporary_suffix_(".part-" + RandomSuffix()), first_(first) {
+NumberedFiles::NumberedFiles(const std::string& pattern, std::int64_t first, const Staging& staging)
+    : pattern_(pattern),
+      temporary_suffix_(staging.suffix.empty() ? ".part-" + RandomSuffix() : staging.suffix),
+      first_(first),
+      for_parent_(staging.for_parent) {
   AtomicFile probe(pattern_.Name(first_));  // created and removed: the place is writable
 }
 
@@ -35,7 +38,7 @@ void NumberedFiles::Write(std::string_view bytes) {
 }
 
 void NumberedFiles::Finish() {
-  for (std::int64_t number = first_; number < first_ + count_; ++number) {
+  for (std::int64_t number = first_; number < first_ + count_ && !for_parent_; ++number) {
     if (std::rename(TemporaryName(number).c_str(), pattern_.Name(number).c_str()) != 0) {
       throw Error(pattern_.Name(number) + ": cannot write: " + std::system_category().message(errno));
     }

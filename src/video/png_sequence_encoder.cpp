@@ -11,7 +11,7 @@ namespace {
 class PngSequenceEncoder final : public FrameEncoder {
  public:
   PngSequenceEncoder(const std::string& pattern, const EncoderSettings& settings)
-      : settings_(settings), files_(pattern, settings.first_frame) {}
+      : settings_(settings), files_(pattern, settings.first_frame, settings.staging) {}
 
   void Write(const image::Image& frame) override {
     CheckFrameSize(frame, settings_, files_.pattern().pattern());

@@ -39,6 +39,17 @@ std::string ReadBytes(const std::string& path) {
   return bytes.str();
 }
 
+std::map<std::string, std::string> FilesBelow(const std::string& folder) {
+  std::map<std::string, std::string> files;
+  if (!std::filesystem::exists(folder)) return files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+    if (entry.is_regular_file()) {
+      files[std::filesystem::relative(entry.path(), folder).generic_string()] = ReadBytes(entry.path().string());
+    }
+  }
+  return files;
+}
+
 void CliTest::SetUp() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   std::string name = "cli_" + std::string(info->test_suite_name()) + "_" + info->name();

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -29,6 +30,9 @@ Result RunProgram(const std::string& program, const std::string& arguments,
 
 // The bytes of a file ("" when it cannot be read).
 std::string ReadBytes(const std::string& path);
+
+// Every file below `folder` by its path relative to it, with its bytes (none when it is missing).
+std::map<std::string, std::string> FilesBelow(const std::string& folder);
 
 // A fresh, empty folder per test, removed afterwards.
 class CliTest : public ::testing::Test {

@@ -1,0 +1,84 @@
+// `animate --jobs N` against the binary: a frame sequence drawn by worker processes is the one
+// process's sequence byte for byte (colour, depth, labels, masks, keypoints, the link names), with
+// one summary line and no temporary file left; a failing worker is the command's one error with
+// nothing written; SIGTERM stops the workers and leaves nothing.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.h"
+
+namespace urdfsnap::cli_test {
+namespace {
+
+class AnimateJobsTest : public CliTest {
+ protected:
+  void SetUp() override {
+    CliTest::SetUp();
+    mrm_ = Write("mrm.urdf", ReadBytes(kMrm));
+  }
+
+  // A 1 s turntable of mrm at 10 frames/s into the folder `name`, every per-frame output asked for.
+  std::string Animation(const std::string& name) const {
+    const std::string folder = Path(name) + "/";
+    return "animate " + mrm_ + " --turntable --duration 1 --fps 10 --fit --size 160x120 -o " + folder +
+           "%03d.png --depth " + folder + "d%03d.npy --labels " + folder + "l/%03d.png --mask " + folder +
+           "m%03d.png --keypoints " + folder + "k%03d.json";
+  }
+
+  std::vector<std::string> Listing() const { return folder_->Listing(); }
+
+  std::string mrm_;
+};
+
+TEST_F(AnimateJobsTest, WorkersWriteTheSameFilesAsOneProcess) {
+  URDFSNAP_REQUIRE_GL();
+  Ok(Animation("one") + " --jobs 1");
+  // 3 workers, 12 pieces of 11 frames: some pieces are empty
+  const Result three = RunUrdfsnap(Animation("three") + " --jobs 3");
+  ASSERT_EQ(three.status, 0) << three.output;
+  EXPECT_EQ(std::count(three.output.begin(), three.output.end(), '\n'), 1) << three.output;  // the summary
+  EXPECT_NE(three.output.find("(frames 0 to 10)"), std::string::npos) << three.output;
+  const auto files = FilesBelow(Path("one"));
+  EXPECT_EQ(files.size(), 5u * 11u + 1u);   // the link names once
+  EXPECT_EQ(FilesBelow(Path("three")), files);
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf", "one", "three"}));
+}
+
+// A worker that fails (here: every file past 4 KB refused, as on a full disk) is the command's one
+// error line, status 2, and no frame is left.
+TEST_F(AnimateJobsTest, AFailingWorkerIsTheCommandsOneError) {
+  URDFSNAP_REQUIRE_GL();
+  for (const char* jobs : {"1", "2"}) {
+    const Result r = RunProgram("sh -c 'trap \"\" XFSZ; ulimit -f 8; exec \"$0\" \"$@\"' " + std::string(URDFSNAP_BINARY),
+                                "animate " + mrm_ + " --turntable --duration 1 --fps 4 --size 640x480 --jobs " +
+                                    jobs + " -o " + Path("f/%03d.png"));
+    EXPECT_EQ(r.status, 2) << jobs << "\n" << r.output;
+    EXPECT_EQ(r.output.rfind("urdfsnap: error: ", 0), 0u) << r.output;
+    EXPECT_NE(r.output.find(": cannot write: File too large"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf"}));
+  }
+}
+
+// SIGTERM to a sequence being drawn by workers stops them, removes their frames and the folder
+// made, and ends the command by that signal.
+TEST_F(AnimateJobsTest, SigtermStopsTheWorkersAndLeavesNothing) {
+  URDFSNAP_REQUIRE_GL();
+  // started in the background; killed once a worker's first frame is there under its temporary name
+  const std::string script =
+      "sh -c '\"$0\" \"$@\" & pid=$!; "
+      "while ! ls " + Path("f") + " 2>/dev/null | grep -q part; do kill -0 $pid 2>/dev/null || break; sleep 0.02; done; "
+      "kill -TERM $pid; wait $pid; echo status $?; "
+      "sleep 0.2; pgrep -f -- \"--worker-[p]ieces.*" + Path("f") + "\" || echo no workers' " + std::string(URDFSNAP_BINARY);
+  const Result r = RunProgram(script, "animate " + mrm_ + " --turntable --duration 20 --size 640x480 --jobs 2 -o " +
+                                          Path("f/%03d.png"));
+  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;   // 128 + SIGTERM
+  EXPECT_NE(r.output.find("no workers"), std::string::npos) << r.output;
+  EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf"}));
+}
+
+}  // namespace
+}  // namespace urdfsnap::cli_test
