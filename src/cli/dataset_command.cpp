@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <future>
+#include <optional>
 #include <string_view>
 #include <limits>
 #include <memory>
@@ -12,8 +15,11 @@
 #include "cli/gl_options.h"
 #include "cli/model_source.h"
 #include "cli/shard_options.h"
+#include "cli/worker_processes.h"
 #include "common/error.h"
 #include "common/number_text.h"
+#include "common/random_suffix.h"
+#include "common/usable_cores.h"
 #include "dataset/camera_poses_file.h"
 #include "dataset/dataset_writer.h"
 #include "gl/gl_context.h"
@@ -21,6 +27,8 @@
 #include "model/forward_kinematics.h"
 #include "request/render_session.h"
 #include "request/value_parsing.h"
+#include "shard/shard_spec.h"
+#include "stream/progress_bar.h"
 
 namespace urdfsnap::cli {
 
@@ -33,6 +41,9 @@ struct DatasetOptions {
   std::string camera_poses;   // a file of camera poses, cycled through
   bool quiet = false;
   ShardOptions sharding;
+  int jobs = 0;               // --jobs: worker processes; 0 = one per usable core
+  int worker_pieces = 0;      // a worker's: the pieces its parent cut the samples into
+  std::string worker_suffix;  // a worker's: the suffix of its pieces' COCO entry files
   request::RenderRequest request;
   GlOptions gl_options;
 };
@@ -74,9 +85,73 @@ double ParseWhole(const std::string& text, const std::string& option, double low
   return value;
 }
 
+// The pieces `dataset --jobs N` cuts the samples into per worker (contiguous runs, each worker
+// taking the next as it finishes one): a worker slowed by other programs takes fewer.
+constexpr int kPiecesPerWorker = 4;
+
+// The files of COCO entries of piece `piece` that a worker writes for its parent.
+dataset::CocoParts PieceParts(const dataset::DatasetSpec& spec, const std::string& suffix, int piece) {
+  const std::string stem =
+      (std::filesystem::path(spec.folder) / spec.annotations_file).string() + suffix + "-" + std::to_string(piece);
+  return {stem + ".images", stem + ".annotations"};
+}
+
+// A worker process of a parent's `dataset --jobs N` (the hidden --worker-pieces and
+// --worker-suffix): the samples of each piece the parent hands it, and their COCO entries in the
+// piece's files; its progress on stdout, its warnings on stderr for the parent to gather.
+void DrawPieces(const DatasetOptions& o, const render::RobotRenderer& renderer, gl::SceneRenderer& gl,
+                const render::CameraSettings& camera, dataset::DatasetSpec spec, Warnings& warnings) {
+  dataset::MakeSampleFolders(spec.folder);
+  std::int64_t done = 0;
+  while (const std::optional<int> piece = NextPiece()) {
+    spec.range = shard::FramesOfShard(spec.count, shard::CheckedShard(*piece, o.worker_pieces, "piece"));
+    const dataset::CocoParts parts = PieceParts(spec, o.worker_suffix, *piece);
+    AtomicFile images(parts.images), annotations(parts.annotations);
+    dataset::WriteSamples(renderer, gl, camera, spec, images, annotations,
+                          [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);
+    images.Commit();
+    annotations.Commit();
+    done += spec.range.size();
+  }
+  PrintWarningsBeforeError(warnings);   // the parent gathers them (and applies --strict)
+}
+
+// The files of every piece's COCO entries, removed when the parent is done with them (or fails).
+class PieceFiles {
+ public:
+  PieceFiles(const dataset::DatasetSpec& spec, const std::string& suffix, int pieces) {
+    for (int piece = 1; piece <= pieces; ++piece) parts_.push_back(PieceParts(spec, suffix, piece));
+  }
+  ~PieceFiles() {
+    for (const dataset::CocoParts& part : parts_) {
+      std::remove(part.images.c_str());
+      std::remove(part.annotations.c_str());
+    }
+  }
+  PieceFiles(const PieceFiles&) = delete;
+  PieceFiles& operator=(const PieceFiles&) = delete;
+
+  const std::vector<dataset::CocoParts>& parts() const { return parts_; }
+
+ private:
+  std::vector<dataset::CocoParts> parts_;
+};
+
+// How many worker processes write the samples: --jobs (default one per core this process may
+// use); one for a shard of a larger job, a worker itself, or a model read from standard input (a
+// worker could not read it again).
+int WorkerCount(const DatasetOptions& o) {
+  if (o.worker_pieces > 0 || o.sharding.Choose().sharded() || ReadsStandardInput(OwnCommandLine())) return 1;
+  return o.jobs > 0 ? o.jobs : UsableCores();
+}
+
 void Run(DatasetOptions& o) {
+  if (o.worker_pieces > 0) StopWhenParentEnds();
   const gl::BackendChoice backend = o.gl_options.Choice();
-  const auto gl_loading = gl::StartLoadingGl(backend.backend);
+  const int jobs = WorkerCount(o);
+  // one process: Mesa loads while the model is read (before workers block the stop signals)
+  std::optional<std::future<void>> gl_loading;
+  if (jobs == 1) gl_loading = gl::StartLoadingGl(backend.backend);
   request::RenderRequest& r = o.request;
   r.model = o.model.ToRequest();
   if (o.count.empty()) throw Error("dataset: give the number of samples with --count N");
@@ -106,6 +181,18 @@ void Run(DatasetOptions& o) {
                                          std::to_string(spec.range.end - 1)
                                    : "no samples: fewer samples than shards");
 
+  // workers start before this process reads the model, which they read too
+  const std::string suffix = jobs > 1 ? ".part-" + RandomSuffix() : "";
+  const int pieces = kPiecesPerWorker * jobs;
+  std::optional<PieceFiles> piece_files;
+  std::optional<WorkerProcesses> workers;
+  if (jobs > 1) {
+    piece_files.emplace(spec, suffix, pieces);
+    workers.emplace(jobs, "dataset",
+                    std::vector<std::string>{"--no-shard", "--worker-pieces", std::to_string(pieces), "--worker-suffix", suffix},
+                    pieces);
+  }
+
   Warnings warnings;
   try {
     // the camera: --camera-info's, or the view's field of view at --size; placed per sample
@@ -129,16 +216,27 @@ void Run(DatasetOptions& o) {
                                          : ParseInterval(o.distance, "--distance", 1e-3, 1e6);
     }
     PrintWarnings(warnings);
-    // the writer thread keeps a core busy while samples are drawn, unless drawing outweighs it
-    // (as animate decides; set while no other thread runs: before the GL context reads it)
-    gl_loading.wait();
-    const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, renderer.scene().triangle_count());
-    if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
-    gl::SceneRenderer gl(settings.samples, backend);
+    Warnings later;
+    std::optional<gl::SceneRenderer> gl;
+    if (!workers) {
+      // the writer thread keeps a core busy while samples are drawn, unless drawing outweighs it
+      // (as animate decides; set while no other thread runs: before the GL context reads it)
+      gl_loading->wait();
+      const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, renderer.scene().triangle_count());
+      if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
+      gl.emplace(settings.samples, backend);
+      if (o.worker_pieces > 0) return DrawPieces(o, renderer, *gl, *settings.camera, spec, later);
+    }
     stream::ProgressBar bar(spec.range.size(), "samples",
                             o.quiet ? stream::ProgressBar::Display::kNever : stream::ProgressBar::Display::kIfTerminal);
-    Warnings later;
-    dataset::WriteDataset(renderer, gl, *settings.camera, spec, &bar, later);
+    const auto progress = [&](std::int64_t done) { bar.Update(done); };
+    if (workers) {
+      workers->Wait(progress, later);
+      dataset::WriteCocoFile(*robot, spec, piece_files->parts());
+    } else {
+      dataset::WriteDataset(renderer, *gl, *settings.camera, spec, progress, later);
+    }
+    bar.Finish();
     PrintWarnings(later);
     std::fprintf(stderr, "urdfsnap: %lld samples of '%s' in %s (%s)\n", static_cast<long long>(spec.range.size()),
                  robot->name().c_str(), spec.folder.c_str(), spec.annotations_file.c_str());
@@ -174,7 +272,21 @@ void AddDatasetCommand(CLI::App& app) {
   o->sharding.AddOptions(*cmd, "samples");
   AddSceneOptions(*cmd, o->request);
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the writer");
-  cmd->callback([o] { Run(*o); });
+  cmd->add_option("--jobs", o->jobs,
+                  "write the samples in N worker processes at once, each taking contiguous runs of "
+                  "them as it finishes the last, into one annotations.json (default: one per core this "
+                  "process may use; 1: in this process). With --shard, or a model on standard input, "
+                  "one process")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--worker-pieces", o->worker_pieces)->group("");   // WorkerProcesses' own
+  cmd->add_option("--worker-suffix", o->worker_suffix)->group("");
+  cmd->callback([o] {
+    try {
+      Run(*o);
+    } catch (const StoppedBySignal& stopped) {
+      EndBySignal(stopped.signal);   // after the pieces' COCO entry files are removed
+    }
+  });
 }
 
 }  // namespace urdfsnap::cli

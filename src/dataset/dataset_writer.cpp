@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string_view>
 
 #include "common/atomic_file.h"
@@ -85,29 +86,25 @@ Interval DefaultDistance(const render::RobotRenderer& robot, const camera::Camer
   return {1.0 * fills, 2.0 * fills};
 }
 
-void WriteDataset(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const render::CameraSettings& camera,
-                  const DatasetSpec& spec, stream::ProgressBar* progress, Warnings& warnings) {
+void MakeSampleFolders(const std::string& folder) {
+  for (const char* sub : {"images", "depth", "labels"}) {
+    std::error_code error;
+    std::filesystem::create_directories(std::filesystem::path(folder) / sub, error);
+    if (error) {
+      throw Error(SourceLocation{(std::filesystem::path(folder) / sub).string(), 0}, "cannot make the folder: " + error.message());
+    }
+  }
+}
+
+void WriteSamples(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const render::CameraSettings& camera,
+                  const DatasetSpec& spec, AtomicFile& images, AtomicFile& annotations,
+                  const std::function<void(std::int64_t done)>& progress, Warnings& warnings) {
   const model::Robot& model = robot.robot();
   const RobotBounds bounds(robot.scene());
   const std::filesystem::path folder(spec.folder);
-  for (const char* sub : {"images", "depth", "labels"}) {
-    std::error_code error;
-    std::filesystem::create_directories(folder / sub, error);
-    if (error) throw Error(SourceLocation{(folder / sub).string(), 0}, "cannot make the folder: " + error.message());
-  }
   const int link_count = static_cast<int>(model.links().size());
   const int robot_category = link_count + 1;
 
-  // the COCO file is streamed, so memory does not grow with the count: images straight into it,
-  // annotations into a scratch file copied in after them (never committed: its destructor removes it)
-  AtomicFile coco((folder / spec.annotations_file).string());
-  AtomicFile scratch((folder / (spec.annotations_file + ".annotations")).string());
-  Json info = {{"description", "urdfsnap dataset of robot '" + model.name() + "'"},
-               {"version", Version()},
-               {"seed", spec.seed},
-               {"count", spec.count},
-               {"samples", {spec.range.first, spec.range.end}}};
-  coco.Write("{\"info\":" + info.dump() + ",\"images\":[");
   bool first_image = true, first_annotation = true;
 
   const auto draw = [&](std::int64_t i, Sample& s) {
@@ -146,7 +143,7 @@ void WriteDataset(const render::RobotRenderer& robot, gl::SceneRenderer& gl, con
                         {"labels_file", "labels/" + name},
                         {"camera", CameraJson(*camera.model, s.X_FC)},
                         {"joints", joints}};
-    coco.Write((first_image ? "" : ",") + image.dump());
+    images.Write((first_image ? "" : ",") + image.dump());
     first_image = false;
     // annotation ids are the image's id times the category count plus the category's: the same
     // whichever shard writes them
@@ -170,25 +167,55 @@ void WriteDataset(const render::RobotRenderer& robot, gl::SceneRenderer& gl, con
         annotation["keypoints"] = flat;
         annotation["num_keypoints"] = labelled;
       }
-      scratch.Write((first_annotation ? "" : ",") + annotation.dump());
+      annotations.Write((first_annotation ? "" : ",") + annotation.dump());
       first_annotation = false;
     }
-    if (progress) progress->Update(i + 1);
+    if (progress) progress(i + 1);
   };
   stream::RunPipeline<Sample>(spec.range.size(), 2, draw, write);
+}
 
-  coco.Write("],\"annotations\":[");
-  {
-    // read back through its temporary name: the scratch file is written with write(2), unbuffered
-    std::ifstream in(scratch.temp_path(), std::ios::binary);
+void WriteCocoFile(const model::Robot& model, const DatasetSpec& spec, const std::vector<CocoParts>& parts) {
+  // streamed, so memory does not grow with the count
+  AtomicFile coco((std::filesystem::path(spec.folder) / spec.annotations_file).string());
+  const Json info = {{"description", "urdfsnap dataset of robot '" + model.name() + "'"},
+                     {"version", Version()},
+                     {"seed", spec.seed},
+                     {"count", spec.count},
+                     {"samples", {spec.range.first, spec.range.end}}};
+  // each part's entries, the parts joined by commas as the entries within them
+  const auto copy = [&](const std::string CocoParts::*list) {
+    bool first = true;
     std::string chunk(std::size_t{1} << 20, '\0');
-    while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
-      coco.Write(std::string_view(chunk.data(), static_cast<size_t>(in.gcount())));
+    for (const CocoParts& part : parts) {
+      std::ifstream in(part.*list, std::ios::binary);
+      if (!in) throw Error(part.*list + ": cannot read the samples' annotations");
+      bool empty = true;
+      while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
+        if (empty && !first) coco.Write(",");
+        empty = false;
+        coco.Write(std::string_view(chunk.data(), static_cast<size_t>(in.gcount())));
+      }
+      first = first && empty;
     }
-  }
+  };
+  coco.Write("{\"info\":" + info.dump() + ",\"images\":[");
+  copy(&CocoParts::images);
+  coco.Write("],\"annotations\":[");
+  copy(&CocoParts::annotations);
   coco.Write("],\"categories\":" + Categories(model).dump() + "}\n");
   coco.Commit();
-  if (progress) progress->Finish();
+}
+
+void WriteDataset(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const render::CameraSettings& camera,
+                  const DatasetSpec& spec, const std::function<void(std::int64_t done)>& progress, Warnings& warnings) {
+  // the entries into scratch files copied into the COCO file after them (never committed: their
+  // destructors remove them); read through their temporary names, written with write(2), unbuffered
+  MakeSampleFolders(spec.folder);
+  const std::filesystem::path coco = std::filesystem::path(spec.folder) / spec.annotations_file;
+  AtomicFile images(coco.string() + ".images"), annotations(coco.string() + ".annotations");
+  WriteSamples(robot, gl, camera, spec, images, annotations, progress, warnings);
+  WriteCocoFile(robot.robot(), spec, {{images.temp_path(), annotations.temp_path()}});
 }
 
 }  // namespace urdfsnap::dataset

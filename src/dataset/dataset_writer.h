@@ -9,15 +9,16 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "common/atomic_file.h"
 #include "common/warnings.h"
 #include "dataset/sampling.h"
 #include "gl/scene_renderer.h"
 #include "render/robot_renderer.h"
 #include "shard/shard_assignment.h"
-#include "stream/progress_bar.h"
 
 namespace urdfsnap::dataset {
 
@@ -36,11 +37,33 @@ struct DatasetSpec {
 
 // Writes the samples spec.range of `robot` seen through `camera` (its intrinsics and distortion;
 // its pose is drawn per sample, or taken from spec.camera_poses, in the fixed frame, which should
-// be the robot's root). Rendering
-// on this thread overlaps with encoding and writing on a second one. Throws urdfsnap::Error for a
-// file that cannot be written (no annotation file is then written).
+// be the robot's root), then the COCO file. Rendering on this thread overlaps with encoding and
+// writing on a second one. `progress`, if given, is called with the samples written so far.
+// Throws urdfsnap::Error for a file that cannot be written (no annotation file is then written).
 void WriteDataset(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const render::CameraSettings& camera,
-                  const DatasetSpec& spec, stream::ProgressBar* progress, Warnings& warnings);
+                  const DatasetSpec& spec, const std::function<void(std::int64_t done)>& progress,
+                  Warnings& warnings);
+
+// The pieces WriteDataset is made of, for samples written by worker processes (`dataset --jobs`):
+// each worker writes its samples' images and COCO entries, and the parent the COCO file of all.
+
+// Makes spec.folder's images/, depth/ and labels/. Throws urdfsnap::Error.
+void MakeSampleFolders(const std::string& folder);
+
+// Writes the samples spec.range (their folders made) and their COCO entries, "images" into
+// `images` and "annotations" into `annotations`, each file's entries joined by commas.
+void WriteSamples(const render::RobotRenderer& robot, gl::SceneRenderer& gl, const render::CameraSettings& camera,
+                  const DatasetSpec& spec, AtomicFile& images, AtomicFile& annotations,
+                  const std::function<void(std::int64_t done)>& progress, Warnings& warnings);
+
+// Files of COCO entries as WriteSamples writes them, for a run of samples.
+struct CocoParts {
+  std::string images, annotations;
+};
+
+// Writes spec.annotations_file in spec.folder: the dataset's info (spec.range its samples), the
+// entries of `parts` in their order, and the categories of `model`.
+void WriteCocoFile(const model::Robot& model, const DatasetSpec& spec, const std::vector<CocoParts>& parts);
 
 // The default --distance: 1 to 2 times the distance at which the robot's bounding sphere in
 // its zero pose fills `camera`'s image height.

@@ -1,5 +1,6 @@
 // `urdfsnap dataset`: the same bytes for a seed, shards that add up to the whole, COCO annotations
 // that agree with the label images, cameras from a poses file, and its errors.
+#include <algorithm>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -139,6 +140,32 @@ TEST_F(DatasetTest, ErrorsAreOneLine) {
   EXPECT_EQ(error("--count 3 --camera-frame nowhere"),
             "urdfsnap: error: camera frame 'nowhere' is not a link of robot 'mrm'\n");
   EXPECT_FALSE(std::filesystem::exists(Path("e")));
+}
+
+// --jobs: samples written by worker processes, 12 pieces of 5 samples (most empty), are the one
+// process's files byte for byte, with one annotations.json merged from the workers' entries.
+TEST_F(DatasetTest, WorkersWriteTheSameFilesAsOneProcess) {
+  URDFSNAP_REQUIRE_GL();
+  Dataset("one", "--seed 3 --jobs 1");
+  Dataset("three", "--seed 3 --jobs 3");
+  const auto files = FilesBelow(Path("one"));
+  EXPECT_EQ(files.size(), 3u * 5u + 1u);
+  EXPECT_EQ(FilesBelow(Path("three")), files);
+}
+
+// A worker that fails (here: every file past 4 KB refused, as on a full disk) is the command's one
+// error line, status 2, with no annotations.json and none of the workers' entry files.
+TEST_F(DatasetTest, AFailingWorkerIsTheCommandsOneError) {
+  URDFSNAP_REQUIRE_GL();
+  const Result r = RunProgram("sh -c 'trap \"\" XFSZ; ulimit -f 8; exec \"$0\" \"$@\"' " + std::string(URDFSNAP_BINARY),
+                              "dataset " + kMrm + " -o " + Path("d") + " --count 6 --size 640x480 --jobs 2");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("urdfsnap: error: ", 0), 0u) << r.output;
+  EXPECT_NE(r.output.find(": cannot write: File too large"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  for (const auto& entry : std::filesystem::directory_iterator(Path("d"))) {
+    EXPECT_TRUE(entry.is_directory()) << entry.path();   // images/, depth/, labels/ only
+  }
 }
 
 }  // namespace
