@@ -76,6 +76,9 @@ class AnimationFrames {
   scene::Scene Scene(const render::RobotRenderer& robot, std::int64_t k, Warnings& warnings) const;
   // The camera of frame `k` (its focal point relative to the followed frame's origin then).
   scene::OrbitView View(std::int64_t k) const;
+  // Frame 0's camera as fitted (the request's view when nothing was fitted): given back as the
+  // request's view without --fit, it makes the same frames.
+  const scene::OrbitView& fitted_view() const { return view_; }
   // The frame the view follows, if any (none with a fitted camera).
   const FollowedFrame* followed() const { return additions_.follow; }
   // The calibrated camera frame `k` is seen through, if one was asked for (View is then unused):

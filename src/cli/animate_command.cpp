@@ -169,7 +169,31 @@ struct PreparedAnimation {
   motion::FramePlan plan;
   std::optional<motion::FramePoses> poses;
   std::optional<animation::AnimationFrames> frames;
+  render::Fit fit = render::Fit::kNone;   // the request's --fit
 };
+
+// An OrbitView as one line of hexadecimal floating-point numbers, read back bit for bit.
+std::string ViewLine(const scene::OrbitView& v) {
+  std::string line;
+  for (const double x : {v.yaw, v.pitch, v.distance, v.focal.x(), v.focal.y(), v.focal.z(), v.fov_y, v.near_clip, v.far_clip}) {
+    char number[40];
+    std::snprintf(number, sizeof number, "%a ", x);
+    line += number;
+  }
+  return line;
+}
+
+scene::OrbitView ParseViewLine(const std::string& line) {
+  scene::OrbitView v;
+  const char* at = line.c_str();
+  for (double* x : {&v.yaw, &v.pitch, &v.distance, &v.focal.x(), &v.focal.y(), &v.focal.z(), &v.fov_y, &v.near_clip, &v.far_clip}) {
+    char* end = nullptr;
+    *x = std::strtod(at, &end);
+    if (end == at) throw Error("animate worker: expected its parent's fitted view, got '" + line + "'");
+    at = end;
+  }
+  return v;
+}
 
 // Prepares the robot through `session` and plans and fits the frames (in place: `frames` keeps
 // references to the plan and poses).
@@ -191,7 +215,8 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
                                     std::llround((stamp_at_zero + a.plan.TrajectoryTime(0)) * 1e9), warnings);
   }
   // --fit frames every frame at once, below, not the first pose alone
-  const render::Fit fit = std::exchange(resolved->settings.fit, render::Fit::kNone);
+  a.fit = std::exchange(resolved->settings.fit, render::Fit::kNone);
+  render::Fit fit = a.fit;
   const model::NamedValues joints = resolved->joints;
   const bool clamp = resolved->clamp;
   PrepareBagScene(session, std::move(*resolved), bag ? o.trajectory : "", stamp_at_zero, o.model_from_bag, warnings,
@@ -214,12 +239,20 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
                 "draws with --bag " + o.trajectory + " --at SECONDS");
   }
   const render::RenderSettings& settings = robot.settings;
+  // a worker: the camera its parent fitted over every frame, not fitted again
+  scene::OrbitView view = settings.view;
+  if (o.worker_pieces > 0 && fit != render::Fit::kNone) {
+    const std::optional<std::string> line = ReadParentLine();
+    if (!line) throw Error("animate worker: its parent ended before fitting the camera");
+    view = ParseViewLine(*line);
+    fit = render::Fit::kNone;
+  }
   if (a.scene.camera_tf && !o.print_frame.empty()) {
     throw Error("--print-frame: the camera is placed by TF from '" + settings.camera->frame +
                 "', which `render` draws with --bag " + o.trajectory + " --at SECONDS");
   }
   a.frames.emplace(*robot.renderer, a.plan, *a.poses,
-                   animation::CameraRequest{settings.view, settings.size, fit, settings.fit_margin, o.turntable, settings.camera,
+                   animation::CameraRequest{view, settings.size, fit, settings.fit_margin, o.turntable, settings.camera,
                                             a.scene.camera_tf ? &*a.scene.camera_tf : nullptr},
                    warnings, a.scene.Additions());
 }
@@ -428,7 +461,10 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::optio
     PreparedAnimation animation;
     PrepareAnimation(o, session, animation, warnings);
     if (!o.print_frame.empty()) return PrintFrame(o, animation, warnings);
-    if (workers) return WriteByWorkers(o, suffix, animation, *workers, outputs, warnings);
+    if (workers) {
+      if (animation.fit != render::Fit::kNone) workers->Tell(ViewLine(animation.frames->fitted_view()));
+      return WriteByWorkers(o, suffix, animation, *workers, outputs, warnings);
+    }
     // the encoder thread keeps a core busy while frames are drawn, unless drawing outweighs it
     // (set while no other thread runs: before the encoder opens and the GL context reads it)
     gl_loading->wait();

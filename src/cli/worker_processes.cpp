@@ -257,6 +257,26 @@ void WorkerProcesses::Wait(const std::function<void(std::int64_t done)>& progres
   }
 }
 
+void WorkerProcesses::Tell(const std::string& line) {
+  const std::string text = line + "\n";
+  for (Worker& worker : workers_) {
+    // a worker that has ended is reported by Wait
+    if (worker.in >= 0 && write(worker.in, text.data(), text.size()) != static_cast<ssize_t>(text.size())) {
+      close(worker.in);
+      worker.in = -1;
+    }
+  }
+}
+
+std::optional<std::string> ReadParentLine() {
+  std::string line;
+  for (int c = std::getchar(); c != '\n'; c = std::getchar()) {
+    if (c == EOF) return std::nullopt;
+    line += static_cast<char>(c);
+  }
+  return line;
+}
+
 std::optional<int> NextPiece() {
   std::printf("next\n");
   std::fflush(stdout);

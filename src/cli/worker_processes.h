@@ -68,6 +68,10 @@ class WorkerProcesses {
   // when it said nothing) after stopping the others; StoppedBySignal on SIGINT or SIGTERM.
   void Wait(const std::function<void(std::int64_t done)>& progress, Warnings& warnings);
 
+  // Sends `line` (no newline in it) to every worker's stdin before the pieces, for ReadParentLine:
+  // what the parent works out once for all of them (animate's camera fitted over every frame).
+  void Tell(const std::string& line);
+
  private:
   struct Worker {
     pid_t pid = -1;
@@ -99,6 +103,10 @@ class WorkerProcesses {
 // A worker's side: the number of the next piece to make, asked of the parent; nullopt when none
 // is left.
 std::optional<int> NextPiece();
+
+// A worker's side: the next line its parent sent with Tell, without the newline; nullopt when the
+// parent closed the worker's stdin instead.
+std::optional<std::string> ReadParentLine();
 
 // A worker's side: the images it has finished so far, on stdout (the parent's progress).
 void ReportImagesDone(std::int64_t done);
