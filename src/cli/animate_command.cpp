@@ -26,6 +26,7 @@
 #include "cli/display_options.h"
 #include "cli/gl_options.h"
 #include "cli/ignored_options.h"
+#include "cli/job_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "cli/shard_options.h"
@@ -33,7 +34,6 @@
 #include "common/error.h"
 #include "common/number_text.h"
 #include "common/random_suffix.h"
-#include "common/usable_cores.h"
 #include "gl/gl_context.h"
 #include "dataset/frame_extras.h"
 #include "image/depth_label_files.h"
@@ -75,9 +75,7 @@ struct AnimateOptions {
   bool quiet = false;
   bool model_from_bag = false;   // MODEL was a bag: its recorded description is the model
   ShardOptions sharding;      // a frame sequence's contiguous range of frames
-  int jobs = 0;               // --jobs: worker processes drawing a frame sequence; 0 = one per core
-  int worker_pieces = 0;      // a worker's: the pieces its parent cut the frames into
-  std::string worker_suffix;  // a worker's: the temporary suffix of the files its parent moves into place
+  JobOptions jobs;            // worker processes drawing a frame sequence; a worker's pieces and suffix
   RenderOptions render;
   DisplayOptions displays;   // with the .rviz file's: message displays in every frame
   BagCameraOptions camera;   // a bag's camera image behind every frame, its calibration
@@ -241,7 +239,7 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   const render::RenderSettings& settings = robot.settings;
   // a worker: the camera its parent fitted over every frame, not fitted again
   scene::OrbitView view = settings.view;
-  if (o.worker_pieces > 0 && fit != render::Fit::kNone) {
+  if (o.jobs.worker() && fit != render::Fit::kNone) {
     const std::optional<std::string> line = ReadParentLine();
     if (!line) throw Error("animate worker: its parent ended before fitting the camera");
     view = ParseViewLine(*line);
@@ -331,10 +329,6 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
   PrintNewWarnings(warnings, later);
 }
 
-// The pieces `animate --jobs N` cuts a frame sequence into per worker (contiguous runs of frames,
-// each worker taking the next as it finishes one): a worker slowed by other programs takes fewer.
-constexpr int kPiecesPerWorker = 4;
-
 // A frame sequence drawn by `workers` (started with `suffix` as the temporary names of their files):
 // this process writes the link names, sums the workers' progress into its line and, once every
 // worker has finished, moves every frame's files into place (or, after an error or a signal,
@@ -368,10 +362,10 @@ void DrawPieces(const AnimateOptions& o, request::RenderSession& session, const 
   std::int64_t done = 0;
   while (const std::optional<int> piece = NextPiece()) {
     const shard::FrameRange range =
-        shard::FramesOfShard(a.plan.frame_count, shard::CheckedShard(*piece, o.worker_pieces, "piece"));
+        shard::FramesOfShard(a.plan.frame_count, shard::CheckedShard(*piece, o.jobs.worker_pieces, "piece"));
     if (range.size() == 0) continue;
     OpenOutputs open;
-    OpenRange(o, a, range, {o.worker_suffix, true}, open, warnings);
+    OpenRange(o, a, range, {o.jobs.worker_suffix, true}, open, warnings);
     animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(a.scene.robot.settings.samples), *a.frames,
                                range, open.Pointers(o.mask_dilate),
                                [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);
@@ -380,17 +374,12 @@ void DrawPieces(const AnimateOptions& o, request::RenderSession& session, const 
   PrintWarningsBeforeError(warnings);   // the parent gathers them (and applies --strict)
 }
 
-// How many worker processes draw the animation: --jobs (default one per core this process may
-// use) for a frame sequence; one for a video (one file, encoded in order), --print-frame, a shard
-// of a larger job, a worker itself, or a model read from standard input (a worker could not read
-// it again).
+// How many worker processes draw the animation (JobOptions::WorkerCount): one for a video (one
+// file, encoded in order), --print-frame or a shard of a larger job.
 int WorkerCount(const AnimateOptions& o) {
-  if (o.worker_pieces > 0 || !o.print_frame.empty() || o.output.empty() ||
-      video::OutputFormatOf(o.output) != video::OutputFormat::kPngSequence || o.sharding.Choose().sharded() ||
-      ReadsStandardInput(OwnCommandLine())) {
-    return 1;
-  }
-  return o.jobs > 0 ? o.jobs : UsableCores();
+  return o.jobs.WorkerCount(!o.print_frame.empty() || o.output.empty() ||
+                            video::OutputFormatOf(o.output) != video::OutputFormat::kPngSequence ||
+                            o.sharding.Choose().sharded());
 }
 
 // One animation (of the one MODEL, or of one of many bags) drawn through `session`, or by `jobs`
@@ -425,7 +414,7 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::optio
   if (!o.keypoints.empty()) animation::CheckPattern(o.keypoints, ".json", "--keypoints");
   // no output may be another output or an input; their folders are made (removed again on failure)
   OutputPlan outputs;
-  if (o.print_frame.empty() && o.worker_pieces == 0) {
+  if (o.print_frame.empty() && o.jobs.worker_pieces == 0) {
     request::AddRequestInputs(outputs, r);
     outputs.AddInput(o.trajectory, "--trajectory");
     animation::PlanOutput(outputs, o.output, "-o");
@@ -442,10 +431,8 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::optio
   const std::string suffix = jobs > 1 ? ".part-" + RandomSuffix() : "";
   std::optional<WorkerProcesses> workers;
   if (jobs > 1) {
-    const int pieces = kPiecesPerWorker * jobs;
-    workers.emplace(jobs, "animate",
-                    std::vector<std::string>{"--no-shard", "--worker-pieces", std::to_string(pieces), "--worker-suffix", suffix},
-                    pieces);
+    const int pieces = JobOptions::kPiecesPerWorker * jobs;
+    workers.emplace(jobs, "animate", JobOptions::WorkerOptions(pieces, suffix), pieces);
   }
 
   Warnings warnings;
@@ -471,7 +458,7 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::optio
     const std::string rasteriser =
         gl::LeaveCoresToOtherThreads(1, animation.scene.robot.renderer->scene().triangle_count());
     if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
-    if (o.worker_pieces > 0) return DrawPieces(o, session, animation, warnings);
+    if (o.jobs.worker()) return DrawPieces(o, session, animation, warnings);
     WriteAnimation(o, choice, session, animation, outputs, warnings);
   } catch (const Error& e) {
     PrintWarningsBeforeError(warnings);
@@ -494,7 +481,7 @@ std::vector<std::string> BagsGiven(const ModelSource& model) {
 }
 
 void Run(AnimateOptions& o) {
-  if (o.worker_pieces > 0) StopWhenParentEnds();
+  if (o.jobs.worker()) StopWhenParentEnds();
   const gl::BackendChoice backend = o.gl_options.Choice();
   const std::vector<std::string> bags = BagsGiven(o.model);
   const int jobs = bags.size() < 2 ? WorkerCount(o) : 1;   // each of many bags in this process
@@ -596,20 +583,11 @@ void AddAnimateCommand(CLI::App& app) {
   o->displays.AddOptions(*cmd);
   o->camera.AddOptions(*cmd, "each frame's moment");
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the encoder");
-  cmd->add_option("--jobs", o->jobs,
-                  "draw a frame sequence in N worker processes at once, each taking contiguous runs of "
-                  "its frames as it finishes the last (default: one per core this process may use; 1: "
-                  "in this process). A video, --shard, or a model on standard input: one process")
-      ->check(CLI::Range(1, 256));
-  cmd->add_option("--worker-pieces", o->worker_pieces)->group("");   // WorkerProcesses' own
-  cmd->add_option("--worker-suffix", o->worker_suffix)->group("");
-  cmd->callback([o] {
-    try {
-      Run(*o);
-    } catch (const StoppedBySignal& stopped) {
-      EndBySignal(stopped.signal);   // after the staged frames and the folders made are removed
-    }
-  });
+  o->jobs.AddOptions(*cmd, "draw a frame sequence in N worker processes at once, each taking contiguous runs of "
+                          "its frames as it finishes the last (default: one per core this process may use; 1: "
+                          "in this process). A video, --shard, or a model on standard input: one process");
+  // a stopping signal ends the command after the staged frames and the folders made are removed
+  cmd->callback([o] { RunStoppable([o] { Run(*o); }); });
 }
 
 }  // namespace urdfsnap::cli

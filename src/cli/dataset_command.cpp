@@ -13,13 +13,13 @@
 
 #include "cli/command.h"
 #include "cli/gl_options.h"
+#include "cli/job_options.h"
 #include "cli/model_source.h"
 #include "cli/shard_options.h"
 #include "cli/worker_processes.h"
 #include "common/error.h"
 #include "common/number_text.h"
 #include "common/random_suffix.h"
-#include "common/usable_cores.h"
 #include "dataset/camera_poses_file.h"
 #include "dataset/dataset_writer.h"
 #include "gl/gl_context.h"
@@ -41,9 +41,7 @@ struct DatasetOptions {
   std::string camera_poses;   // a file of camera poses, cycled through
   bool quiet = false;
   ShardOptions sharding;
-  int jobs = 0;               // --jobs: worker processes; 0 = one per usable core
-  int worker_pieces = 0;      // a worker's: the pieces its parent cut the samples into
-  std::string worker_suffix;  // a worker's: the suffix of its pieces' COCO entry files
+  JobOptions jobs;            // worker processes writing the samples; a worker's pieces and suffix
   request::RenderRequest request;
   GlOptions gl_options;
 };
@@ -85,10 +83,6 @@ double ParseWhole(const std::string& text, const std::string& option, double low
   return value;
 }
 
-// The pieces `dataset --jobs N` cuts the samples into per worker (contiguous runs, each worker
-// taking the next as it finishes one): a worker slowed by other programs takes fewer.
-constexpr int kPiecesPerWorker = 4;
-
 // The files of COCO entries of piece `piece` that a worker writes for its parent.
 dataset::CocoParts PieceParts(const dataset::DatasetSpec& spec, const std::string& suffix, int piece) {
   const std::string stem =
@@ -104,8 +98,8 @@ void DrawPieces(const DatasetOptions& o, const render::RobotRenderer& renderer, 
   dataset::MakeSampleFolders(spec.folder);
   std::int64_t done = 0;
   while (const std::optional<int> piece = NextPiece()) {
-    spec.range = shard::FramesOfShard(spec.count, shard::CheckedShard(*piece, o.worker_pieces, "piece"));
-    const dataset::CocoParts parts = PieceParts(spec, o.worker_suffix, *piece);
+    spec.range = shard::FramesOfShard(spec.count, shard::CheckedShard(*piece, o.jobs.worker_pieces, "piece"));
+    const dataset::CocoParts parts = PieceParts(spec, o.jobs.worker_suffix, *piece);
     AtomicFile images(parts.images), annotations(parts.annotations);
     dataset::WriteSamples(renderer, gl, camera, spec, images, annotations,
                           [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);
@@ -137,18 +131,10 @@ class PieceFiles {
   std::vector<dataset::CocoParts> parts_;
 };
 
-// How many worker processes write the samples: --jobs (default one per core this process may
-// use); one for a shard of a larger job, a worker itself, or a model read from standard input (a
-// worker could not read it again).
-int WorkerCount(const DatasetOptions& o) {
-  if (o.worker_pieces > 0 || o.sharding.Choose().sharded() || ReadsStandardInput(OwnCommandLine())) return 1;
-  return o.jobs > 0 ? o.jobs : UsableCores();
-}
-
 void Run(DatasetOptions& o) {
-  if (o.worker_pieces > 0) StopWhenParentEnds();
+  if (o.jobs.worker()) StopWhenParentEnds();
   const gl::BackendChoice backend = o.gl_options.Choice();
-  const int jobs = WorkerCount(o);
+  const int jobs = o.jobs.WorkerCount(o.sharding.Choose().sharded());
   // one process: Mesa loads while the model is read (before workers block the stop signals)
   std::optional<std::future<void>> gl_loading;
   if (jobs == 1) gl_loading = gl::StartLoadingGl(backend.backend);
@@ -183,14 +169,12 @@ void Run(DatasetOptions& o) {
 
   // workers start before this process reads the model, which they read too
   const std::string suffix = jobs > 1 ? ".part-" + RandomSuffix() : "";
-  const int pieces = kPiecesPerWorker * jobs;
+  const int pieces = JobOptions::kPiecesPerWorker * jobs;
   std::optional<PieceFiles> piece_files;
   std::optional<WorkerProcesses> workers;
   if (jobs > 1) {
     piece_files.emplace(spec, suffix, pieces);
-    workers.emplace(jobs, "dataset",
-                    std::vector<std::string>{"--no-shard", "--worker-pieces", std::to_string(pieces), "--worker-suffix", suffix},
-                    pieces);
+    workers.emplace(jobs, "dataset", JobOptions::WorkerOptions(pieces, suffix), pieces);
   }
 
   Warnings warnings;
@@ -225,7 +209,7 @@ void Run(DatasetOptions& o) {
       const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, renderer.scene().triangle_count());
       if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
       gl.emplace(settings.samples, backend);
-      if (o.worker_pieces > 0) return DrawPieces(o, renderer, *gl, *settings.camera, spec, later);
+      if (o.jobs.worker()) return DrawPieces(o, renderer, *gl, *settings.camera, spec, later);
     }
     stream::ProgressBar bar(spec.range.size(), "samples",
                             o.quiet ? stream::ProgressBar::Display::kNever : stream::ProgressBar::Display::kIfTerminal);
@@ -272,21 +256,12 @@ void AddDatasetCommand(CLI::App& app) {
   o->sharding.AddOptions(*cmd, "samples");
   AddSceneOptions(*cmd, o->request);
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the writer");
-  cmd->add_option("--jobs", o->jobs,
-                  "write the samples in N worker processes at once, each taking contiguous runs of "
-                  "them as it finishes the last, into one annotations.json (default: one per core this "
-                  "process may use; 1: in this process). With --shard, or a model on standard input, "
-                  "one process")
-      ->check(CLI::Range(1, 256));
-  cmd->add_option("--worker-pieces", o->worker_pieces)->group("");   // WorkerProcesses' own
-  cmd->add_option("--worker-suffix", o->worker_suffix)->group("");
-  cmd->callback([o] {
-    try {
-      Run(*o);
-    } catch (const StoppedBySignal& stopped) {
-      EndBySignal(stopped.signal);   // after the pieces' COCO entry files are removed
-    }
-  });
+  o->jobs.AddOptions(*cmd, "write the samples in N worker processes at once, each taking contiguous runs of "
+                          "them as it finishes the last, into one annotations.json (default: one per core this "
+                          "process may use; 1: in this process). With --shard, or a model on standard input, "
+                          "one process");
+  // a stopping signal ends the command after the pieces' COCO entry files are removed
+  cmd->callback([o] { RunStoppable([o] { Run(*o); }); });
 }
 
 }  // namespace urdfsnap::cli
