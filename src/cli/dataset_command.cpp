@@ -17,6 +17,7 @@
 #include "cli/model_source.h"
 #include "cli/shard_options.h"
 #include "cli/worker_processes.h"
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/number_text.h"
 #include "common/random_suffix.h"
@@ -113,21 +114,19 @@ void DrawPieces(const DatasetOptions& o, const render::RobotRenderer& renderer, 
 // The files of every piece's COCO entries, removed when the parent is done with them (or fails).
 class PieceFiles {
  public:
-  PieceFiles(const dataset::DatasetSpec& spec, const std::string& suffix, int pieces) {
+  PieceFiles(const dataset::DatasetSpec& spec, const std::string& suffix, int pieces)
+      : folder_(spec.folder), suffix_(suffix) {
     for (int piece = 1; piece <= pieces; ++piece) parts_.push_back(PieceParts(spec, suffix, piece));
   }
-  ~PieceFiles() {
-    for (const dataset::CocoParts& part : parts_) {
-      std::remove(part.images.c_str());
-      std::remove(part.annotations.c_str());
-    }
-  }
+  // with the temporary files of a worker stopped while writing one
+  ~PieceFiles() { RemoveFilesNamedWith(folder_, suffix_); }
   PieceFiles(const PieceFiles&) = delete;
   PieceFiles& operator=(const PieceFiles&) = delete;
 
   const std::vector<dataset::CocoParts>& parts() const { return parts_; }
 
  private:
+  std::string folder_, suffix_;
   std::vector<dataset::CocoParts> parts_;
 };
 

@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <filesystem>
 #include <system_error>
 
 #include "common/error.h"
@@ -49,6 +50,13 @@ int WriteAll(int fd, std::string_view bytes, std::int64_t offset = -1) {
 }
 
 }  // namespace
+
+void RemoveFilesNamedWith(const std::string& folder, const std::string& part) {
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder.empty() ? "." : folder, error)) {
+    if (entry.path().filename().string().find(part) != std::string::npos) std::filesystem::remove(entry.path(), error);
+  }
+}
 
 void WriteFileAtomically(const std::string& path, std::string_view bytes) {
   AtomicFile file(path);

@@ -17,6 +17,10 @@ namespace urdfsnap {
 // was, and urdfsnap::Error is thrown as "PATH: cannot write: <errno text>".
 void WriteFileAtomically(const std::string& path, std::string_view bytes);
 
+// Removes every file directly in `folder` whose name holds `part` (a random suffix only the
+// temporary files of one run carry: those of worker processes stopped mid-write among them).
+void RemoveFilesNamedWith(const std::string& folder, const std::string& part);
+
 // A file that appears at `path` only when complete. The constructor creates the temporary file
 // "<path>.tmp-XXXXXX" (so an unwritable place is an error before any work is done); Write appends
 // to it, or another library writes it through temp_path(); Commit renames it to `path`. Destroyed

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <filesystem>
 #include <system_error>
 
 #include "common/atomic_file.h"
@@ -23,6 +24,11 @@ NumberedFiles::NumberedFiles(const std::string& pattern, std::int64_t first, con
 
 NumberedFiles::~NumberedFiles() {
   if (finished_) return;
+  if (adopted_) {
+    // a staged sequence abandoned by the parent: its workers' files, and their temporary files
+    // when a worker was stopped while writing one
+    RemoveFilesNamedWith(std::filesystem::path(pattern_.Name(first_)).parent_path().string(), temporary_suffix_);
+  }
   for (std::int64_t number = first_; number < first_ + count_; ++number) {
     ::unlink(TemporaryName(number).c_str());
   }

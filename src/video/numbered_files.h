@@ -42,7 +42,10 @@ class NumberedFiles {
   void Finish();
   // The parent's side of a staged sequence: the `count` files from `first` that its workers wrote
   // under this sequence's temporary names are now this object's, moved by Finish or removed.
-  void Adopt(std::int64_t count) { count_ = count; }
+  void Adopt(std::int64_t count) {
+    count_ = count;
+    adopted_ = true;
+  }
 
   std::int64_t count() const { return count_; }
   const FramePattern& pattern() const { return pattern_; }
@@ -55,6 +58,7 @@ class NumberedFiles {
   std::int64_t first_;
   std::int64_t count_ = 0;
   bool for_parent_;
+  bool adopted_ = false;
   bool finished_ = false;
 };
 
