@@ -27,7 +27,7 @@ run() {
   local duration
   duration=$(awk "BEGIN {print ($count - 1) / 30}")
   /usr/bin/time -f '%e %U %S %M' -o "$work/time" "$snap" animate "$model" --trajectory "$work/motion.csv" \
-    --fps 30 --duration "$duration" --fit --no-shard -o "$work/out/$output" --quiet "$@"
+    --fps 30 --duration "$duration" --fit --no-shard --jobs 1 -o "$work/out/$output" --quiet "$@"
   read -r wall user sys rss <"$work/time"
   printf '%-12s %7d %8.2f %9.0f %8.2f %8.2f %8.0f %8.1f\n' "$name" "$count" "$wall" \
     "$(awk "BEGIN {print $count / $wall}")" "$(awk "BEGIN {print $user + $sys}")" \

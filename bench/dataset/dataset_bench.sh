@@ -23,7 +23,7 @@ bench() {
   shift 2
   rm -rf "$work/out"
   /usr/bin/time -f '%e %U %S' -o "$work/time" "$snap" dataset "$model" -o "$work/out" --count "$samples" \
-    --seed 1 --no-shard --quiet "$@" 2>/dev/null
+    --seed 1 --no-shard --jobs 1 --quiet "$@" 2>/dev/null
   read -r wall user sys <"$work/time"
   awk -v n="$name" -v s="$samples" -v w="$wall" -v u="$user" -v y="$sys" 'BEGIN {
     c = u + y; printf "%-8s %8d %8.2f %10.1f %10.2f %12.2f %12.0f\n", n, s, w, s / w, c, 1000 * c / s, 2 * s / c }'

@@ -5,7 +5,7 @@
 #             RUNS, the CPU ms of that run (all threads) and its peak resident memory
 #   draw      one frame drawn and read back in a prepared robot (urdfsnap_robot_frames, a
 #             turntable of 60 yaw steps): median wall ms, and CPU ms of all threads per frame
-#   png, mp4  `urdfsnap animate --turntable --duration 4 --fit` (121 frames) to a PNG sequence and
+#   png, mp4  `urdfsnap animate --turntable --duration 4 --fit --jobs 1` (121 frames) to a PNG sequence and
 #             to H.264: frames per second of the whole process, startup included, and its CPU
 #             ms (all threads) per frame
 #   docs      the whole `urdfsnap docs` page (--no-shard; its worker processes, one per core, as
@@ -57,7 +57,7 @@ row() {
   local fps=()
   for output in "frames/%05d.png" "turn.mp4"; do
     rm -rf "$work/anim" && mkdir -p "$work/anim"
-    timed "$snap" animate "${args[@]}" --turntable --duration 4 --fit --quiet --no-shard -o "$work/anim/$output"
+    timed "$snap" animate "${args[@]}" --turntable --duration 4 --fit --quiet --no-shard --jobs 1 -o "$work/anim/$output"
     fps+=("$(awk "BEGIN {printf \"%.0f\", 121 / $wall}")" "$(awk "BEGIN {printf \"%.1f\", 1000 * $cpu / 121}")")
   done
   # docs: a process tree
