@@ -76,12 +76,14 @@ scene::Scene BagStill::Scene(Warnings& warnings) const {
   return frames_->Scene(*scene_.robot.renderer, 0, warnings);
 }
 
+Eigen::Isometry3d BagStill::Place(Warnings& warnings) const { return frames_->Place(0, warnings); }
+
 image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameOutputs& outputs,
                             Warnings& warnings) const {
   const request::Prepared& p = scene_.robot;
   gl::SceneRenderer& gl = session.GlRenderer(p.settings.samples);
   if (p.settings.camera) {   // the scene (the displays, the TF display) through the camera on the placed robot
-    return p.renderer->Render(gl, Scene(warnings), frames_->Place(0, warnings), p.positions, *p.settings.camera, outputs);
+    return p.renderer->Render(gl, Scene(warnings), Place(warnings), p.positions, *p.settings.camera, outputs);
   }
   return gl.Render(Scene(warnings), p.settings.view, p.settings.size.width, p.settings.size.height, outputs);
 }

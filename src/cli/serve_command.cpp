@@ -79,10 +79,14 @@ serve::RecordingView Recording(const std::string& bag, Warnings& warnings) {
     moment.at = FormatNumber(at);
     try {
       const BagStill still(moment, *session, request, true, DisplayOptions{}, frame_warnings, cache.get());
-      if (still.prepared().settings.camera) {
-        throw Error("a recording is served through the orbit view only, not through a calibrated camera");
+      const request::Prepared& prepared = still.prepared();
+      serve::RecordedMoment shown{still.Scene(frame_warnings), prepared.settings};
+      if (prepared.settings.camera) {   // the camera on the robot at the moment, as BagStill::Draw places it
+        shown.robot = prepared.renderer;
+        shown.positions = prepared.positions;
+        shown.X_SF = still.Place(frame_warnings);
       }
-      return serve::RecordedMoment{still.Scene(frame_warnings), still.prepared().settings};
+      return shown;
     } catch (...) {
       cache->displays.reset();   // a feed that failed gives nothing more: the next request starts again
       throw;
