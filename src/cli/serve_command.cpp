@@ -11,6 +11,7 @@
 #include <optional>
 #include <thread>
 
+#include "cli/bag_cache.h"
 #include "cli/bag_model.h"
 #include "cli/bag_still.h"
 #include "cli/command.h"
@@ -69,10 +70,10 @@ void LogReload(const serve::ModelState& state, const std::string& model) {
 // own (GL-free: the server draws the scene).
 serve::RecordingView Recording(const std::string& bag, Warnings& warnings) {
   serve::RecordingView view;
-  view.duration = motion::ReadTrajectory(bag, {bag::kDefaultJointStateTopic}, warnings).EndTime();
   auto session = std::make_shared<request::RenderSession>();
   // what a request read of the bag, for the next: a slider dragged forward reads only the messages in between
   auto cache = std::make_shared<BagCache>();
+  view.duration = BagJointStates(bag, bag::kDefaultJointStateTopic, warnings, cache.get()).EndTime();
   view.moment = [bag, session, cache](const request::RenderRequest& request, double at, Warnings& frame_warnings) {
     BagStillOptions moment;
     moment.bag = bag;
