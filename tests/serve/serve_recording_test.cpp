@@ -59,7 +59,7 @@ TEST_F(ServeRecordingTest, FramesAtATimeAreRenderBagAtThatTime) {
 
 // `serve BAG --camera-info FILE`: the slider moves time, the view stays the calibrated camera's:
 // each moment is byte for byte `render --bag BAG --at T` through the same camera, and fitting the
-// view is refused with the reason.
+// view is refused with the reason; /api/status tells the page its orbit controls have nothing to move.
 TEST_F(ServeRecordingTest, ARecordingIsServedThroughACalibratedCamera) {
   const std::string bag = test::TestBag("displays_moving.mcap");
   const std::string config = folder_.Path("view.rviz");
@@ -73,6 +73,9 @@ TEST_F(ServeRecordingTest, ARecordingIsServedThroughACalibratedCamera) {
   ServeProcess server(bag + camera + " --port 0");
   ASSERT_TRUE(server.started()) << server.first_line() << server.Stderr();
   auto client = server.Client();
+  const auto status = client->Get("/api/status");
+  ASSERT_TRUE(status);
+  EXPECT_TRUE(nlohmann::json::parse(status->body)["camera"].get<bool>()) << "the page's orbit controls are off";
   std::string earlier;
   for (const char* at : {"0.4", "2.9"}) {
     const auto frame = client->Get("/render.png?at=" + std::string(at));
