@@ -14,6 +14,7 @@
 #include "bag/cdr_reader.h"
 #include "bag/topic_check.h"
 #include "common/error.h"
+#include "common/warnings.h"
 #include "image/png_reader.h"
 
 namespace urdfsnap::cli {
@@ -111,6 +112,9 @@ request::ResolvedRequest ResolveWithBagCamera(const request::RenderRequest& r, c
   if (!o.camera_info_topic.empty()) {
     if (!r.camera_info.empty()) throw Error("--camera-info and --camera-info-topic: give one calibration");
     files.camera.info = ReadBagCameraInfo(bag, o.camera_info_topic, moment_ns);
+    if (!r.size.empty()) {
+      WarnIgnored(warnings, "--size " + r.size, "the size comes from the calibration (--camera-info-topic)");
+    }
     // ReadRequestFiles reads an underlay only for a camera the options name
     if (!r.underlay.empty() && !files.camera.underlay) {
       files.camera.underlay = std::make_shared<const image::Image>(image::ReadPng(r.underlay));

@@ -1,6 +1,6 @@
 // PrepareBagScene: the robot prepared from its root (and again from the fixed frame when that is
-// a link other than the root), the bag's TF read once for the root's placement, the TF display and
-// the followed frame; the message displays.
+// a link other than the root), the bag's TF (read once: BagTransforms) for the root's placement,
+// the TF display and the followed frame; the message displays.
 #include "cli/bag_scene.h"
 
 #include <algorithm>
@@ -9,7 +9,6 @@
 
 #include "common/error.h"
 #include "request/display_frame.h"
-#include "tf/bag_transforms.h"
 
 namespace urdfsnap::cli {
 
@@ -17,18 +16,6 @@ animation::SceneAdditions BagScene::Additions() {
   return {root ? &*root : nullptr, tf ? &*tf : nullptr, follow ? &*follow : nullptr,
           displays ? &*displays : nullptr, underlay ? &*underlay : nullptr};
 }
-
-namespace {
-
-// The bag's TF: `cache`'s when it has read it, else read (and kept in `cache`).
-std::shared_ptr<const tf::TfBuffer> BagTransforms(const std::string& bag, BagCache* cache) {
-  if (cache && cache->transforms) return cache->transforms;
-  auto transforms = std::make_shared<const tf::TfBuffer>(tf::ReadBagTransforms(bag));
-  if (cache) cache->transforms = transforms;
-  return transforms;
-}
-
-}  // namespace
 
 void PrepareBagScene(request::RenderSession& session, request::ResolvedRequest resolved, const std::string& bag,
                      double stamp_at_zero, bool model_from_bag, Warnings& warnings, BagScene& out, BagCache* cache) {

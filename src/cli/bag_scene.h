@@ -16,6 +16,7 @@
 #include "animation/frame_displays.h"
 #include "animation/frame_underlay.h"
 #include "animation/tf_display.h"
+#include "cli/bag_cache.h"
 #include "cli/display_options.h"
 #include "common/warnings.h"
 #include "motion/root_poses.h"
@@ -41,22 +42,6 @@ struct BagScene {
 
   // What the scene adds to each frame, for animation::AnimationFrames (which feeds the displays).
   animation::SceneAdditions Additions();
-};
-
-// What one still of a bag keeps for the next (serve's time slider), so that a request does not
-// read the bag again: its joint states and TF as read once (what a recording's animation keeps
-// too), and the message displays, reused while the same displays in the same fixed frame are asked
-// for at the same or a later moment, so that a slider dragged forward reads only the messages
-// between two moments; an earlier moment or other displays start them again from the bag's
-// beginning. Never the bag's other messages.
-struct BagCache {
-  std::optional<motion::Trajectory> trajectory;   // the joint states of `trajectory_topic`
-  std::string trajectory_topic;
-  std::shared_ptr<const tf::TfBuffer> transforms;   // the bag's /tf and /tf_static, once read
-  std::vector<display::DisplaySettings> settings;   // what `displays` were made for
-  std::string fixed_frame;
-  double stamp_at_zero = 0;
-  std::shared_ptr<animation::FrameDisplays> displays;
 };
 
 // Prepares `resolved` (its fit left to the caller) for the recording `bag` ("" for none: no TF,

@@ -9,7 +9,6 @@
 #include "common/error.h"
 #include "common/number_text.h"
 #include "image/png_reader.h"
-#include "motion/trajectory_file.h"
 #include "request/value_parsing.h"
 
 namespace urdfsnap::cli {
@@ -33,15 +32,7 @@ void BagStillOptions::AddOptions(CLI::App& command) {
 
 BagStill::BagStill(const BagStillOptions& o, request::RenderSession& session, const request::RenderRequest& r,
                    bool model_from_bag, const DisplayOptions& displays, Warnings& warnings, BagCache* cache) {
-  if (cache && cache->trajectory && cache->trajectory_topic == o.topic) {
-    trajectory_ = *cache->trajectory;
-  } else {
-    trajectory_ = motion::ReadTrajectory(o.bag, {o.topic}, warnings);
-    if (cache) {
-      cache->trajectory = trajectory_;
-      cache->trajectory_topic = o.topic;
-    }
-  }
+  trajectory_ = BagJointStates(o.bag, o.topic, warnings, cache);
   const double at = o.at.empty() ? 0 : request::ParseFinite(o.at, "--at");
   plan_.trajectory_start = motion::TrajectorySeconds(trajectory_, at, "--at");
   if (plan_.trajectory_start < 0 || plan_.trajectory_start > trajectory_.EndTime()) {
@@ -76,12 +67,14 @@ scene::Scene BagStill::Scene(Warnings& warnings) const {
   return frames_->Scene(*scene_.robot.renderer, 0, warnings);
 }
 
+Eigen::Isometry3d BagStill::Place(Warnings& warnings) const { return frames_->Place(0, warnings); }
+
 image::Frame BagStill::Draw(request::RenderSession& session, const image::FrameOutputs& outputs,
                             Warnings& warnings) const {
   const request::Prepared& p = scene_.robot;
   gl::SceneRenderer& gl = session.GlRenderer(p.settings.samples);
   if (p.settings.camera) {   // the scene (the displays, the TF display) through the camera on the placed robot
-    return p.renderer->Render(gl, Scene(warnings), frames_->Place(0, warnings), p.positions, *p.settings.camera, outputs);
+    return p.renderer->Render(gl, Scene(warnings), Place(warnings), p.positions, *p.settings.camera, outputs);
   }
   return gl.Render(Scene(warnings), p.settings.view, p.settings.size.width, p.settings.size.height, outputs);
 }

@@ -67,6 +67,10 @@ class BagStill {
   // it, or Draw, once: the displays have been fed up to the moment.
   scene::Scene Scene(Warnings& warnings) const;
 
+  // Where the robot's fixed link is placed in the still's scene (by the bag's TF, the fixed frame):
+  // what a calibrated camera on the robot is placed by (render::RobotRenderer::Render).
+  Eigen::Isometry3d Place(Warnings& warnings) const;
+
   // Draws the still (with its displays) through `session`'s GL renderer into the images `outputs`
   // asks for. Call it once: the displays have been fed up to the moment.
   image::Frame Draw(request::RenderSession& session, const image::FrameOutputs& outputs, Warnings& warnings) const;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <thread>
 
+#include "cli/bag_cache.h"
 #include "cli/bag_model.h"
 #include "cli/bag_still.h"
 #include "cli/command.h"
@@ -69,20 +70,24 @@ void LogReload(const serve::ModelState& state, const std::string& model) {
 // own (GL-free: the server draws the scene).
 serve::RecordingView Recording(const std::string& bag, Warnings& warnings) {
   serve::RecordingView view;
-  view.duration = motion::ReadTrajectory(bag, {bag::kDefaultJointStateTopic}, warnings).EndTime();
   auto session = std::make_shared<request::RenderSession>();
   // what a request read of the bag, for the next: a slider dragged forward reads only the messages in between
   auto cache = std::make_shared<BagCache>();
+  view.duration = BagJointStates(bag, bag::kDefaultJointStateTopic, warnings, cache.get()).EndTime();
   view.moment = [bag, session, cache](const request::RenderRequest& request, double at, Warnings& frame_warnings) {
     BagStillOptions moment;
     moment.bag = bag;
     moment.at = FormatNumber(at);
     try {
       const BagStill still(moment, *session, request, true, DisplayOptions{}, frame_warnings, cache.get());
-      if (still.prepared().settings.camera) {
-        throw Error("a recording is served through the orbit view only, not through a calibrated camera");
+      const request::Prepared& prepared = still.prepared();
+      serve::RecordedMoment shown{still.Scene(frame_warnings), prepared.settings};
+      if (prepared.settings.camera) {   // the camera on the robot at the moment, as BagStill::Draw places it
+        shown.robot = prepared.renderer;
+        shown.positions = prepared.positions;
+        shown.X_SF = still.Place(frame_warnings);
       }
-      return serve::RecordedMoment{still.Scene(frame_warnings), still.prepared().settings};
+      return shown;
     } catch (...) {
       cache->displays.reset();   // a feed that failed gives nothing more: the next request starts again
       throw;

@@ -49,12 +49,13 @@ image::Frame RobotRenderer::Render(gl::SceneRenderer& gl, const scene::Scene& sc
   image::FrameOutputs wanted = outputs;
   wanted.labels = outputs.labels || underlay;
   const Eigen::Matrix4d view = camera::GlViewMatrix(X_SF * CameraPose(X_RL, camera));
-  image::Frame frame = model.Finish(
-      gl.Render(scene, view, model.GlProjection(), model.drawn().width, model.drawn().height, wanted));
-  if (underlay) {
-    camera::DrawUnderlay(*camera.underlay, camera.underlay_file, camera.overlay_alpha, frame.labels, frame.colour);
-    if (!outputs.labels) frame.labels = {};
-  }
+  image::Frame drawn = gl.Render(scene, view, model.GlProjection(), model.drawn().width, model.drawn().height, wanted);
+  if (!underlay) return model.Finish(std::move(drawn));
+  // the drawn pixels go through the camera's distortion as the labels do (nearest, nothing outside)
+  image::LabelImage shown = model.Finish({{}, {}, camera::DrawnPixels(drawn, scene.background)}).labels;
+  if (!outputs.labels) drawn.labels = {};
+  image::Frame frame = model.Finish(std::move(drawn));
+  camera::DrawUnderlay(*camera.underlay, camera.underlay_file, camera.overlay_alpha, shown, frame.colour);
   return frame;
 }
 

@@ -44,7 +44,8 @@ class RobotRenderer {
 
   // Renders one frame of the robot at `positions` through a calibrated camera, at the camera's
   // image size: depth along its optical axis, labels from the same pixels, the lens applied when
-  // the camera distorts, the camera's underlay (if any) behind the robot. Throws urdfsnap::Error
+  // the camera distorts, the camera's underlay (if any) behind everything drawn, which shows
+  // over it at the overlay alpha as in RViz's Camera display. Throws urdfsnap::Error
   // for an unknown camera frame, or as gl::SceneRenderer::Render does.
   image::Frame Render(gl::SceneRenderer& gl, const std::vector<double>& positions, const CameraSettings& camera,
                       const image::FrameOutputs& outputs = {}) const;

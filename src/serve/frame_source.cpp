@@ -45,7 +45,10 @@ std::string FrameSource::RenderMomentPng(const RecordingView& recording, const r
                                          double at, Warnings& warnings) {
   const RecordedMoment moment = recording.moment(request, at, warnings);
   const render::RenderSettings& s = moment.settings;
-  const image::Frame frame = session_->GlRenderer(s.samples).Render(moment.scene, s.view, s.size.width, s.size.height);
+  gl::SceneRenderer& gl = session_->GlRenderer(s.samples);
+  const image::Frame frame = s.camera && moment.robot
+                                 ? moment.robot->Render(gl, moment.scene, moment.X_SF, moment.positions, *s.camera, {})
+                                 : gl.Render(moment.scene, s.view, s.size.width, s.size.height);
   const std::vector<std::uint8_t> png = image::EncodePng(frame.colour);
   return {png.begin(), png.end()};
 }

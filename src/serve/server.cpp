@@ -262,7 +262,10 @@ struct Server::Impl {
     if (!state->robot) error = kErrorPrefix + state->error;
     nlohmann::json recording = nullptr;
     if (options.recording) recording = {{"duration", options.recording->duration}};
-    SetJson(res, 200, {{"model", state->generation}, {"error", error}, {"recording", recording}});
+    // a calibrated camera is placed as given: the page's orbit controls have nothing to move
+    const request::RenderRequest& base = options.base;
+    const bool camera = !base.camera_info.empty() || !base.camera_frame.empty() || !base.camera_pose.empty();
+    SetJson(res, 200, {{"model", state->generation}, {"error", error}, {"recording", recording}, {"camera", camera}});
   }
 
   void Route() {

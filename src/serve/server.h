@@ -17,6 +17,9 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
 
 #include "common/warnings.h"
 #include "gl/backend.h"
@@ -26,12 +29,22 @@
 #include "serve/connection_limits.h"
 #include "serve/live_model.h"
 
+namespace urdfsnap::render {
+class RobotRenderer;
+}  // namespace urdfsnap::render
+
 namespace urdfsnap::serve {
 
 // A moment of a recording as a scene to draw (GL-free) and the settings to draw it with.
 struct RecordedMoment {
   scene::Scene scene;
   render::RenderSettings settings;
+  // Through a calibrated camera (settings.camera): the robot that carries it (valid until the
+  // recording's next moment), its joint positions and where its fixed link is placed in the scene,
+  // for render::RobotRenderer::Render; unset for the orbit view.
+  const render::RobotRenderer* robot = nullptr;
+  std::vector<double> positions;
+  Eigen::Isometry3d X_SF = Eigen::Isometry3d::Identity();
 };
 
 // A recording the page plays through with a time slider (`urdfsnap serve run.mcap`): its length,

@@ -1,4 +1,5 @@
-// The robot mask and its dilation (a disc of radius N pixels), and the camera-image underlay.
+// The robot mask and its dilation (a disc of radius N pixels), and the camera-image underlay over
+// all that was drawn.
 #include <gtest/gtest.h>
 
 #include "camera/robot_mask.h"
@@ -46,6 +47,20 @@ TEST(Underlay, ShowsTheImageAndTheRobotOverItAtAlpha) {
   image::Image small{1, 1, {0, 0, 0}};
   EXPECT_EQ(test::ErrorText([&] { DrawUnderlay(small, "cam.png", 0.5, robot, colour); }),
             "cam.png: the underlay image is 1x1, the camera's image 2x1");
+}
+
+TEST(Underlay, EveryPixelDrawnOnIsShownOverTheImage) {
+  // a robot pixel, a display's (red), the background (48 grey) and a robot pixel of that grey
+  const image::Frame drawn{{4, 1, {90, 90, 90, 255, 0, 0, 48, 48, 48, 48, 48, 48}}, {}, {4, 1, {2, 0, 0, 7}}};
+  const image::LabelImage pixels = DrawnPixels(drawn, Eigen::Vector3f(48 / 255.f, 48 / 255.f, 48 / 255.f));
+  ASSERT_EQ(pixels.labels.size(), 4u);
+  EXPECT_EQ(pixels.labels[0], 2);
+  EXPECT_NE(pixels.labels[1], 0);
+  EXPECT_EQ(pixels.labels[2], 0);
+  EXPECT_EQ(pixels.labels[3], 7);
+  image::Image colour = drawn.colour;
+  DrawUnderlay(image::Image{4, 1, std::vector<std::uint8_t>(12, 200)}, "cam.png", 0.5, pixels, colour);
+  EXPECT_EQ(colour.rgb, (std::vector<std::uint8_t>{145, 145, 145, 228, 100, 100, 200, 200, 200, 124, 124, 124}));
 }
 
 }  // namespace

@@ -222,6 +222,13 @@ p: [31, 0, 20.5, 0, 0, 32, 12.25, 0, 0, 0, 1, 0]
     const image::Image a = Expected([](int x, int y) { return Picture(x, y, false); });
     EXPECT_NE(from_file.rgb, a.rgb) << "no robot over the image" << lens;
   }
+  // a --size beside it is warned of as beside --camera-info
+  const Result sized = RunUrdfsnap("render --bag " + bag_ + " " + view + "--camera-info-topic /camera/camera_info "
+                                   "--size 640x480 -o " + Path("sized.png"));
+  EXPECT_EQ(sized.status, 0) << sized.output;
+  EXPECT_EQ(sized.output, "urdfsnap: warning: --size 640x480 is ignored: the size comes from the calibration "
+                          "(--camera-info-topic)\n");
+  EXPECT_EQ(image::ReadPng(Path("sized.png")).width, kWidth);
 }
 
 TEST_F(BagUnderlayTest, BadImagesAndOptionsAreOneErrorLine) {

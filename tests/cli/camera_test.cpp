@@ -2,6 +2,7 @@
 // seen straight down from 2 m by an off-centre camera with non-square pixels; its silhouette,
 // depth and keypoints, the lens remap, the underlay and the mask, a marker drawn through the
 // camera; and the camera options' errors.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -45,6 +46,13 @@ class CameraTest : public CliTest {
                                  " --labels " + Path("l.png") + " --depth " + Path("d.png") + " " + options);
     EXPECT_EQ(r.status, 0) << r.output;
     return r.output;
+  }
+  // a plain blue (0,0,200) camera image of the calibration's size, made by rendering an empty view
+  std::string BlueImage() {
+    const Result blank = RunUrdfsnap("render " + Write("box.urdf", kBoxRobot) + " --no-grid --no-visual --size 400x240 "
+                                     "--background 0,0,200 -o " + Path("blue.png"));
+    EXPECT_EQ(blank.status, 0) << blank.output;
+    return Path("blue.png");
   }
   // whether the ray of normalised image point `p` meets the box's top face
   static bool OnTop(const Eigen::Vector2d& p) {
@@ -134,18 +142,23 @@ TEST_F(CameraTest, KeypointsAreProjectedPixelsWithVisibility) {
 
 TEST_F(CameraTest, UnderlayShowsBehindAndThroughTheRobot) {
   URDFSNAP_REQUIRE_GL();
-  // a plain blue camera image, made by rendering an empty view of the right size
-  const Result blank = RunUrdfsnap("render " + Write("box.urdf", kBoxRobot) + " --no-grid --no-visual --size 400x240 "
-                                   "--background 0,0,200 -o " + Path("blue.png"));
-  ASSERT_EQ(blank.status, 0) << blank.output;
-  Render("--underlay " + Path("blue.png") + " --underlay-alpha 0.25 --mask " + Path("m.png") + " --mask-dilate 3");
+  Render("--underlay " + BlueImage() + " --underlay-alpha 0.25 --mask " + Path("m.png") + " --mask-dilate 3");
   const image::Image c = image::ReadPng(Path("c.png"));
   const image::Gray16Image labels = image::ReadGray16Png(Path("l.png"));
   const image::Image mask = image::ReadPng(Path("m.png"));
   int grown = 0;
+  const auto by_the_box = [&](size_t i) {   // the box's anti-aliased edge, drawn on and so blended
+    const int x = static_cast<int>(i % labels.width), y = static_cast<int>(i / labels.width);
+    for (int v = std::max(y - 1, 0); v <= std::min(y + 1, labels.height - 1); ++v) {
+      for (int u = std::max(x - 1, 0); u <= std::min(x + 1, labels.width - 1); ++u) {
+        if (labels.values[static_cast<size_t>(v) * labels.width + u] != 0) return true;
+      }
+    }
+    return false;
+  };
   for (size_t i = 0; i < labels.values.size(); ++i) {
     if (labels.values[i] == 0) {
-      EXPECT_EQ(c.rgb[i * 3 + 2], 200);
+      if (!by_the_box(i)) EXPECT_EQ(c.rgb[i * 3 + 2], 200);
       grown += mask.rgb[i * 3] == 255;
     } else {
       EXPECT_GE(c.rgb[i * 3 + 2], 50);   // a quarter of the blue through the red box
@@ -178,6 +191,14 @@ TEST_F(CameraTest, ASizeBesideACalibrationIsIgnoredWithAWarning) {
 // message display (`--message`), and the centre of its green pixels: where the sphere's centre
 // is in the normalised image, 2 m straight down (optical x = +x, y = −y).
 const Eigen::Vector2d kSphereCentre(0.35 / 2, -0.25 / 2);
+// a green sphere 6 cm across beside the box, in the body's frame
+constexpr const char* kSphereMarker = R"(header: {frame_id: body}
+type: 2
+pose: {position: {x: 0.35, y: 0.25, z: 0}}
+scale: {x: 0.06, y: 0.06, z: 0.06}
+color: {g: 1, a: 1}
+)";
+
 Eigen::Vector2d GreenCentre(const image::Image& image) {
   Eigen::Vector2d sum(0, 0);
   int count = 0;
@@ -199,12 +220,7 @@ Eigen::Vector2d GreenCentre(const image::Image& image) {
 // OpenCV's cv2.projectPoints).
 TEST_F(CameraTest, AMarkerLandsWhereTheCameraProjectsItsPoint) {
   URDFSNAP_REQUIRE_GL();
-  const std::string marker = " --message " + Write("m.yaml", R"(header: {frame_id: body}
-type: 2
-pose: {position: {x: 0.35, y: 0.25, z: 0}}
-scale: {x: 0.06, y: 0.06, z: 0.06}
-color: {g: 1, a: 1}
-)") + ":visualization_msgs/msg/Marker";
+  const std::string marker = " --message " + Write("m.yaml", kSphereMarker) + ":visualization_msgs/msg/Marker";
   Render(marker);
   const Eigen::Vector2d pinhole = camera::ToPixel(kK, kSphereCentre);   // P is K here
   EXPECT_LT((GreenCentre(image::ReadPng(Path("c.png"))) - pinhole).norm(), 0.6);
@@ -214,6 +230,24 @@ color: {g: 1, a: 1}
   const Eigen::Vector2d raw = camera::ToPixel(kK, camera::Distort(lens, kSphereCentre));
   EXPECT_LT((GreenCentre(image::ReadPng(Path("c.png"))) - raw).norm(), 0.6);
   EXPECT_GT((raw - pinhole).norm(), 1.2) << "the lens moves it";
+}
+
+// RViz's Camera display draws its image over everything the view shows, robot and displays alike:
+// the marker is seen through the camera image at the overlay alpha, the image alone elsewhere.
+TEST_F(CameraTest, AMarkerShowsOverTheUnderlayAsTheRobotDoes) {
+  URDFSNAP_REQUIRE_GL();
+  const std::string marker = " --no-grid --message " + Write("m.yaml", kSphereMarker) + ":visualization_msgs/msg/Marker";
+  Render(marker);
+  const image::Image alone = image::ReadPng(Path("c.png"));
+  Render(marker + " --underlay " + BlueImage());
+  const image::Image over = image::ReadPng(Path("c.png"));
+  const Eigen::Vector2d centre = camera::ToPixel(kK, kSphereCentre);
+  const size_t at = static_cast<size_t>(std::lround(centre.y())) * over.width + std::lround(centre.x());
+  ASSERT_GT(alone.rgb[at * 3 + 1], 100) << "the marker is drawn there";
+  const std::uint8_t blue[3] = {0, 0, 200};
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(over.rgb[at * 3 + c], (blue[c] + alone.rgb[at * 3 + c]) / 2.0, 0.5) << c;
+  // the image's corner, where nothing is drawn, is the image's own colour
+  EXPECT_EQ(std::vector<std::uint8_t>(over.rgb.begin(), over.rgb.begin() + 3), std::vector<std::uint8_t>(blue, blue + 3));
 }
 
 TEST_F(CameraTest, CameraOptionErrorsAreOneLine) {

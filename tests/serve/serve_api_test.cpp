@@ -196,6 +196,7 @@ TEST_F(ServeApiTest, RobotAndInitialView) {
   const auto status = nlohmann::json::parse(client->Get("/api/status")->body);
   EXPECT_EQ(status["model"], 1);
   EXPECT_TRUE(status["error"].is_null());
+  EXPECT_EQ(status["camera"], false);   // the orbit view: the page's orbit controls are on
   // the page and its parts, embedded
   const auto page = client->Get("/");
   EXPECT_EQ(page->status, 200);

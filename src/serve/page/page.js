@@ -29,6 +29,7 @@ const page = {
   joints: new Map(),  // slider joint name -> value
   modelError: '',
   frameError: '',
+  camera: false,      // a calibrated camera is served: the orbit controls are off
 };
 
 // Numbers as the page writes them into URLs, joint files and suite cases: at most six decimals,
@@ -171,6 +172,7 @@ function wireOrbit() {
   let drag = null;
   viewport.addEventListener('contextmenu', (e) => e.preventDefault());
   viewport.addEventListener('pointerdown', (e) => {
+    if (page.camera) return;   // a calibrated camera's view does not orbit
     drag = {x: e.clientX, y: e.clientY, button: e.button};
     viewport.setPointerCapture(e.pointerId);
     viewport.classList.add('dragging');
@@ -202,6 +204,7 @@ function wireOrbit() {
     requestFrame();
   });
   viewport.addEventListener('wheel', (e) => {
+    if (page.camera) return;
     e.preventDefault();
     const pixels = e.deltaY || e.deltaX;  // shift turns the wheel sideways in some browsers
     const units = -pixels * (e.deltaMode === 0 ? WHEEL_UNITS_PER_PIXEL : e.deltaMode === 1 ? 40 : 120);
@@ -522,6 +525,12 @@ async function initialView() {
       page.recording = status.recording;
       $('at-control').hidden = !status.recording;
       if (status.recording) $('at').max = status.recording.duration;
+      // a calibrated camera (--camera-info, --camera-frame, --camera-pose) is placed as given
+      page.camera = status.camera;
+      for (const id of ['reset-view', 'fit-view', 'focus']) {
+        $(id).disabled = status.camera;
+        if (status.camera) $(id).title = 'the view is the calibrated camera urdfsnap serve was given; it is placed as given';
+      }
       if (!status.error) {
         const response = await fetch('api/view', {cache: 'no-store'});
         if (response.ok) return response.json();
