@@ -325,28 +325,8 @@ RenderCall CallFrom(const py::kwargs& kwargs, const char* function) {
   return call;
 }
 
-}  // namespace
-
-}  // namespace urdfsnap::python
-
-PYBIND11_MODULE(_urdfsnap, m) {
-  using namespace urdfsnap;
-  using namespace urdfsnap::python;
-  m.doc() = "urdfsnap's typed core from Python: RViz-like images of URDF/xacro robots as numpy arrays";
-  // Mesa (OSMesa or libEGL, LLVM behind it: ~0.1 s) loads on a thread from import on, overlapping
-  // numpy's import and reading the model, as the commands overlap it (gl::StartLoadingGl). The
-  // future waits at exit; _wait_for_gl lets __init__.py wait before a fork (a child forked while
-  // dlopen runs would inherit the loader's lock held).
-  static std::future<void> gl_loading = gl::StartLoadingGl();
-  m.def("_wait_for_gl", [] {
-    py::gil_scoped_release released;
-    gl_loading.wait();
-  });
-  m.attr("__version__") = Version();
-  py::register_exception<Error>(m, "Error", PyExc_ValueError);
-  m.attr("UrdfsnapWarning") =
-      py::reinterpret_steal<py::object>(PyErr_NewException("urdfsnap.UrdfsnapWarning", PyExc_UserWarning, nullptr));
-
+// The value types Robot's properties and render's results hand out.
+void BindValueTypes(py::module_& m) {
   py::class_<Mimic>(m, "Mimic", "A mimic joint's rule: value = multiplier * joint's value + offset.")
       .def_readonly("joint", &Mimic::joint)
       .def_readonly("multiplier", &Mimic::multiplier)
@@ -379,7 +359,10 @@ PYBIND11_MODULE(_urdfsnap, m) {
         if (py::array(r.color).ndim() != 3) return py::none();
         return PngBytes(ImageFrom(r.color, "color"));
       });
+}
 
+// Module functions that need no robot: xacro, PNG files, the image comparison of urdfsnap.testing.
+void BindFunctions(py::module_& m) {
   m.def("xacro", [](const py::object& path, const py::object& args, const py::object& packages, bool xacro_ns) {
     xacro::Options options;
     options.args = XacroArgs(args);
@@ -418,7 +401,10 @@ PYBIND11_MODULE(_urdfsnap, m) {
   m.attr("DIFF_MAX_DELTA") = defaults.max_delta;
   m.attr("DIFF_MAX_FRACTION") = defaults.max_fraction;
   m.attr("DIFF_MAX_MEAN") = defaults.max_mean;
+}
 
+// urdfsnap.Robot: a loaded robot and its renders.
+void BindRobot(py::module_& m) {
   py::class_<Robot> robot(m, "Robot", R"(A robot loaded from a URDF or xacro file, ready to render.)");
   robot.def(py::init<const py::object&, const py::object&, const py::object&, bool>(), "path"_a,
             "args"_a = py::none(), "packages"_a = py::none(), "xacro_ns"_a = false)
@@ -453,4 +439,31 @@ PYBIND11_MODULE(_urdfsnap, m) {
     Warn(warnings);
     return result;
   }, "Renders many poses with one GL context; see urdfsnap/__init__.pyi.", "positions"_a, py::kw_only(), "out"_a = py::none());
+}
+
+}  // namespace
+
+}  // namespace urdfsnap::python
+
+PYBIND11_MODULE(_urdfsnap, m) {
+  using namespace urdfsnap;
+  using namespace urdfsnap::python;
+  m.doc() = "urdfsnap's typed core from Python: RViz-like images of URDF/xacro robots as numpy arrays";
+  // Mesa (OSMesa or libEGL, LLVM behind it: ~0.1 s) loads on a thread from import on, overlapping
+  // numpy's import and reading the model, as the commands overlap it (gl::StartLoadingGl). The
+  // future waits at exit; _wait_for_gl lets __init__.py wait before a fork (a child forked while
+  // dlopen runs would inherit the loader's lock held).
+  static std::future<void> gl_loading = gl::StartLoadingGl();
+  m.def("_wait_for_gl", [] {
+    py::gil_scoped_release released;
+    gl_loading.wait();
+  });
+  m.attr("__version__") = Version();
+  py::register_exception<Error>(m, "Error", PyExc_ValueError);
+  m.attr("UrdfsnapWarning") =
+      py::reinterpret_steal<py::object>(PyErr_NewException("urdfsnap.UrdfsnapWarning", PyExc_UserWarning, nullptr));
+
+  BindValueTypes(m);
+  BindFunctions(m);
+  BindRobot(m);
 }
