@@ -81,7 +81,9 @@ serve::RecordingView Recording(const std::string& bag, Warnings& warnings) {
     try {
       const BagStill still(moment, *session, request, true, DisplayOptions{}, frame_warnings, cache.get());
       const request::Prepared& prepared = still.prepared();
-      serve::RecordedMoment shown{still.Scene(frame_warnings), prepared.settings};
+      serve::RecordedMoment shown;
+      shown.scene = still.Scene(frame_warnings);
+      shown.settings = prepared.settings;
       if (prepared.settings.camera) {   // the camera on the robot at the moment, as BagStill::Draw places it
         shown.robot = prepared.renderer;
         shown.positions = prepared.positions;

@@ -215,7 +215,7 @@ TEST_F(DocsTest, TheJointOptionsPoseThePage) {
   ASSERT_EQ(filed.status, 0) << filed.output;
   // the robot, and the other joint's section, at the pose; the same from a joint file
   const std::string section = "joints/link_02__link_03/default.png";
-  for (const std::string file : {std::string("images/robot.png"), section}) {
+  for (const std::string& file : {std::string("images/robot.png"), section}) {
     EXPECT_NE(ReadBytes(Path("posed/" + file)), ReadBytes(Path("zero/" + file))) << file;
     EXPECT_EQ(ReadBytes(Path("posed/" + file)), ReadBytes(Path("filed/" + file))) << file;
   }
