@@ -10,6 +10,7 @@
 #include <set>
 
 #include "docs/animation_output.h"
+#include "docs/repeated_scenes.h"
 #include "gl/scene_renderer.h"
 #include "image/png_writer.h"
 #include "model/joint_values.h"
@@ -116,14 +117,19 @@ class PageRenderer {
       others.pop_back();
       return positions;
     };
-    const scene::OrbitView view = MotionView(faded, moving, stills + static_cast<int>(section.sweep.size()), pose);
+    const int count = stills + static_cast<int>(section.sweep.size());
+    const scene::OrbitView view = MotionView(faded, moving, count, pose);
+    // each distinct picture drawn once: a joint moving only links without geometry shows one
+    // scene in every still and sweep frame (the PR2's gripper motor screws)
+    RepeatedScenes repeated(count, [&](int k) { return faded.Pose(pose(k)); });
+    const auto picture = [&](int k) {
+      return repeated.Picture(k, [&] { return faded.Render(gl_, pose(k), view, SizeOf(page_.joint_size)).colour; });
+    };
     for (int k = 0; k < stills; ++k) {
-      if (!Wanted(section.pictures[k].file)) continue;
-      Write(faded.Render(gl_, pose(k), view, SizeOf(page_.joint_size)).colour, section.pictures[k].file);
+      if (Wanted(section.pictures[k].file)) Write(picture(k), section.pictures[k].file);
     }
     if (Wanted(section.sweep_file)) {
-      Animate(faded, section.sweep_file, static_cast<int>(section.sweep.size()),
-              [&](int k) { return pose(stills + k); }, [&](int) { return view; });
+      WriteFrames(section.sweep_file, static_cast<int>(section.sweep.size()), [&](int k) { return picture(stills + k); });
     }
   }
 
@@ -194,10 +200,15 @@ class PageRenderer {
   void Animate(const render::RobotRenderer& robot, const std::string& file, int frames,
                const std::function<std::vector<double>(int)>& pose,
                const std::function<scene::OrbitView(int)>& view) {
+    WriteFrames(file, frames, [&](int k) { return robot.Render(gl_, pose(k), view(k), SizeOf(page_.joint_size)).colour; });
+  }
+
+  // Writes the animation of `frames` frames, frame k being frame(k).
+  void WriteFrames(const std::string& file, int frames, const std::function<image::Image(int)>& frame) {
     const std::filesystem::path path = folder_ / file;
     std::filesystem::create_directories(path.parent_path());
-    WriteAnimation(path.string(), page_.joint_size, look_.fps, frames, [&](int k, image::Image& frame) {
-      frame = robot.Render(gl_, pose(k), view(k), SizeOf(page_.joint_size)).colour;
+    WriteAnimation(path.string(), page_.joint_size, look_.fps, frames, [&](int k, image::Image& image) {
+      image = frame(k);
       Advance();
     });
   }
