@@ -158,7 +158,9 @@ TEST_F(CameraTest, UnderlayShowsBehindAndThroughTheRobot) {
   };
   for (size_t i = 0; i < labels.values.size(); ++i) {
     if (labels.values[i] == 0) {
-      if (!by_the_box(i)) EXPECT_EQ(c.rgb[i * 3 + 2], 200);
+      if (!by_the_box(i)) {
+        EXPECT_EQ(c.rgb[i * 3 + 2], 200);
+      }
       grown += mask.rgb[i * 3] == 255;
     } else {
       EXPECT_GE(c.rgb[i * 3 + 2], 50);   // a quarter of the blue through the red box

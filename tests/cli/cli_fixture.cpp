@@ -32,6 +32,15 @@ Result RunProgram(const std::string& program, const std::string& arguments,
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
+void ExpectTheOneFullDiskError(const std::string& arguments) {
+  const Result r = RunProgram("sh -c 'trap \"\" XFSZ; ulimit -f 8; exec \"$0\" \"$@\"' " + std::string(URDFSNAP_BINARY),
+                              arguments);
+  EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output;
+  EXPECT_EQ(r.output.rfind("urdfsnap: error: ", 0), 0u) << arguments << "\n" << r.output;
+  EXPECT_NE(r.output.find(": cannot write: File too large"), std::string::npos) << arguments << "\n" << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << arguments << "\n" << r.output;
+}
+
 std::string ReadBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream bytes;

@@ -28,6 +28,11 @@ Result RunUrdfsnap(const std::string& arguments, const std::string& environment 
 Result RunProgram(const std::string& program, const std::string& arguments,
                   const std::string& environment = "");
 
+// Runs "urdfsnap ARGUMENTS" with every file it writes refused past 4 KB (as on a full disk) and
+// expects the command's one error line for it ("urdfsnap: error: ...: cannot write: File too
+// large"), exit status 2.
+void ExpectTheOneFullDiskError(const std::string& arguments);
+
 // The bytes of a file ("" when it cannot be read).
 std::string ReadBytes(const std::string& path);
 
