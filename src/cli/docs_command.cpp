@@ -11,6 +11,7 @@
 
 #include "cli/command.h"
 #include "cli/gl_options.h"
+#include "cli/job_options.h"
 #include "cli/model_source.h"
 #include "cli/render_options.h"
 #include "cli/shard_options.h"
@@ -294,13 +295,7 @@ void AddDocsCommand(CLI::App& app) {
       ->check(CLI::Range(1, 256));
   cmd->add_option("--worker-pieces", o->worker_pieces)->group("");   // WorkerProcesses' own
   cmd->add_option("--worker-folder", o->worker_folder)->group("");
-  cmd->callback([o] {
-    try {
-      Run(*o);
-    } catch (const StoppedBySignal& stopped) {
-      EndBySignal(stopped.signal);   // after the page's folder is removed
-    }
-  });
+  cmd->callback([o] { RunStoppable([o] { Run(*o); }); });   // a signal ends it after the page's folder is removed
 }
 
 }  // namespace urdfsnap::cli
