@@ -24,6 +24,7 @@
 #include "cli/bag_scene.h"
 #include "cli/command.h"
 #include "cli/display_options.h"
+#include "cli/frame_memory.h"
 #include "cli/gl_options.h"
 #include "cli/ignored_options.h"
 #include "cli/job_options.h"
@@ -482,6 +483,7 @@ std::vector<std::string> BagsGiven(const ModelSource& model) {
 
 void Run(AnimateOptions& o) {
   if (o.jobs.worker()) StopWhenParentEnds();
+  ReuseFreedFrameMemory();
   const gl::BackendChoice backend = o.gl_options.Choice();
   const std::vector<std::string> bags = BagsGiven(o.model);
   const int jobs = bags.size() < 2 ? WorkerCount(o) : 1;   // each of many bags in this process
