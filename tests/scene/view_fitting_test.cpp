@@ -12,22 +12,32 @@
 namespace urdfsnap::scene {
 namespace {
 
-// A scene of one unit cube's corners placed at `X_FG`.
-Scene CubeAt(const Eigen::Affine3d& X_FG) {
-  static const auto cube = [] {
-    auto mesh = std::make_shared<geometry::TriangleMesh>();
-    for (int i = 0; i < 8; ++i) {
-      mesh->positions.emplace_back(i & 1 ? 0.5f : -0.5f, i & 2 ? 0.5f : -0.5f, i & 4 ? 0.5f : -0.5f);
-      mesh->normals.emplace_back(0, 0, 1);
-    }
-    return std::shared_ptr<const geometry::TriangleMesh>(mesh);
-  }();
+// A scene of `mesh` placed at `X_FG`.
+Scene MeshAt(std::shared_ptr<const geometry::TriangleMesh> mesh, const Eigen::Affine3d& X_FG) {
   Scene scene;
   DrawItem item;
-  item.mesh = cube;
+  item.mesh = std::move(mesh);
   item.X_FG = X_FG;
   scene.items.push_back(item);
   return scene;
+}
+
+// A scene of one mesh of `points` (no triangles needed: the fit reads positions) placed at `X_FG`.
+Scene PointsAt(const std::vector<Eigen::Vector3f>& points, const Eigen::Affine3d& X_FG) {
+  auto mesh = std::make_shared<geometry::TriangleMesh>();
+  mesh->positions = points;
+  mesh->normals.assign(points.size(), Eigen::Vector3f(0, 0, 1));
+  return MeshAt(mesh, X_FG);
+}
+
+// A scene of one unit cube's corners placed at `X_FG`.
+Scene CubeAt(const Eigen::Affine3d& X_FG) {
+  static const auto cube = [] {
+    std::vector<Eigen::Vector3f> corners;
+    for (int i = 0; i < 8; ++i) corners.emplace_back(i & 1 ? 0.5f : -0.5f, i & 2 ? 0.5f : -0.5f, i & 4 ? 0.5f : -0.5f);
+    return PointsAt(corners, Eigen::Affine3d::Identity()).items[0].mesh;
+  }();
+  return MeshAt(cube, X_FG);
 }
 
 Eigen::Affine3d Moved(double x, double y, double z) { return Eigen::Affine3d(Eigen::Translation3d(x, y, z)); }
@@ -165,19 +175,6 @@ TEST(FitDistance, IsTheLargestFitOverTheYaws) {
   EXPECT_EQ(FitDistance(Scene{}, view, yaws, 4.0 / 3), 0);
 }
 
-
-// A scene of one mesh of `points` (no triangles needed: the fit reads positions) placed at `X_FG`.
-Scene PointsAt(const std::vector<Eigen::Vector3f>& points, const Eigen::Affine3d& X_FG) {
-  auto mesh = std::make_shared<geometry::TriangleMesh>();
-  mesh->positions = points;
-  mesh->normals.assign(points.size(), Eigen::Vector3f(0, 0, 1));
-  Scene scene;
-  DrawItem item;
-  item.mesh = mesh;
-  item.X_FG = X_FG;
-  scene.items.push_back(item);
-  return scene;
-}
 
 // A turntable's distance with its points reduced to those near the 3-D hull is the brute force's
 // (FitView at each yaw over every vertex) bit for bit: random clouds, dense grids on boxes
