@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -66,7 +67,9 @@ class Qhull {
 
 std::vector<bool> HullCandidates(const std::vector<Eigen::Vector3d>& points) {
   std::vector<bool> all(points.size(), true);
-  if (points.size() < 5 || !std::all_of(points.begin(), points.end(), [](const Eigen::Vector3d& p) { return p.allFinite(); })) {
+  // Qhull counts points in an int
+  if (points.size() < 5 || points.size() > static_cast<size_t>(std::numeric_limits<int>::max()) ||
+      !std::all_of(points.begin(), points.end(), [](const Eigen::Vector3d& p) { return p.allFinite(); })) {
     return all;
   }
   Eigen::AlignedBox3d box;
