@@ -45,7 +45,8 @@ class PointSetDrawing {
   std::vector<unsigned char> staging_;
   ShaderProgram splat_program_;
   PointSplat splat_;
-  unsigned splat_array_ = 0;                    // empty: the full-screen triangle has no attributes
+  unsigned splat_array_ = 0;                    // the composite's corners
+  unsigned splat_corners_ = 0;                  // their buffer: clip-space x, y
   unsigned splat_texture_ = 0;                  // PointSplat's texels
   int texture_size_[2] = {0, 0};                // their width and height in texels
 };

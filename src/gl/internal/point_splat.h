@@ -32,56 +32,77 @@ class PointSplat {
   // A marker's points and sphere lists are usually few.
   static constexpr std::size_t kFewestPoints = 4096;
 
-  // Empties the image for `width` x `height` pixels, each with the given sample positions (pixel
+  // Starts a frame of `width` x `height` pixels, each with the given sample positions (pixel
   // units within a pixel, GL window coordinates: y up; {0.5, 0.5} without multisampling).
   void Clear(int width, int height, const std::vector<Eigen::Vector2f>& samples);
   // Adds the squares of `points` seen through view `V` and projection `P`.
   void Add(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P);
   // Covers the samples of every square added since Clear: the nearest wins, on a tie the later
-  // (GL_LEQUAL). With many squares the rows are split in two bands, one covered by another thread.
+  // (GL_LEQUAL). The image is cut into tiles of kTileSize x kTileSize pixels whose samples fit in
+  // a core's L1 cache; each tile reached by a square is emptied and covered with its squares in
+  // the order they were added, and with many squares the two threads take tiles in turn (a tile
+  // is written by one thread only, so the image is the same as from one thread).
   void Cover();
+  static constexpr int kTileSize = 32;   // a power of two (the composite shader shifts by it)
   static constexpr std::size_t kSquaresPerThread = 4096;   // fewer squares: one thread
 
-  bool empty() const { return rows_.first > rows_.second; }
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return static_cast<int>(samples_.size()); }
   // One sample: its depth in [0, 1] as GL's depth range maps it (kEmpty where nothing is) and its
-  // colour, rgba8 in memory order, side by side so that a depth test and its write share a line.
+  // colour, rgba8 in memory order.
   struct Texel {
     float depth;
     std::uint32_t colour;
   };
-  // The image: rows bottom first (GL's order), each pixel's samples side by side (sample s of pixel
-  // (x, y) at (y * width + x) * samples + s).
-  const std::vector<Texel>& texels() const { return texels_; }
   static constexpr float kEmpty = 2.f;
-  // The rows [first, second] that hold anything (first > second when empty).
-  std::pair<int, int> rows() const { return rows_; }
+  // A tile's pixels [x0, x1) x [y0, y1) (the last column and row of tiles end at the image's edge).
+  struct Tile {
+    int x0, y0, x1, y1;
+  };
+  // The tiles that squares reached (whose pixels may hold a covered sample), in the image's order
+  // (rows of tiles bottom first); the rest of the image is empty.
+  const std::vector<int>& drawn() const { return drawn_; }
+  bool empty() const { return drawn_.empty(); }
+  Tile TileAt(int tile) const;
+  // A drawn tile's samples as planes of kTileSize rows (bottom first) of kTileSize pixels (those
+  // past the image's edge unused): for each sample in turn its depths' float bits, then its
+  // colours. A row of one sample's depths or colours is contiguous, four columns one vector.
+  const std::uint32_t* TileWords(int tile) const { return planes_.data() + static_cast<std::size_t>(tile) * TileWords(); }
+  std::size_t TileWords() const { return 2 * kPlane * samples_.size(); }
+  static constexpr std::size_t kPlane = static_cast<std::size_t>(kTileSize) * kTileSize;
+  // Sample s of pixel (x, y) (kEmpty outside the tiles drawn).
+  Texel At(int x, int y, int s) const;
 
  private:
-  // A point's square in window coordinates, [x0, x1) x [y0, y1) at `depth`; shape 0 flat, 1
-  // outlined, 2 shaded disc (shaders/point.frag); its rows and columns of pixels that may hold a
-  // covered sample.
+  // A point's square in window coordinates, [x0, x1) x [y0, y1) at `depth`; its 8-bit rgba; shape
+  // 0 flat, 1 outlined, 2 shaded disc (shaders/point.frag); its columns and rows of pixels that
+  // may hold a covered sample; its place in the order squares were added.
   struct Square {
     float x0, x1, y0, y1, depth;
-    Eigen::Vector4f rgba;
+    std::uint32_t rgba8;
     int shape;
     int px0, px1, py0, py1;
+    std::uint32_t order;
   };
   // Keeps the square, snapped as llvmpipe snaps, unless it covers no pixel.
-  void Keep(float x0, float x1, float y0, float y1, float depth, const Eigen::Vector4f& rgba, int shape);
-  // Covers the samples of `square` in rows [first, last]; whether it covered any.
-  bool CoverSquare(const Square& square, int first, int last);
-  // Covers the rows [first, last] with every sorted square that reaches them, widening `rows` to
-  // the rows drawn.
-  void CoverBand(int first, int last, std::pair<int, int>& rows);
-  int width_ = 0, height_ = 0;
-  std::vector<Square> squares_, sorted_;
+  void Keep(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape);
+  // Sorts copies of the squares by the tiles they reach, in the order they were added (big ones
+  // aside), and lists the tiles reached.
+  void Bin();
+  // Empties tile `tile` and covers it with its squares.
+  void CoverTile(int tile);
+  // Covers the samples of `square` within `tile`, whose planes start at `planes`.
+  void CoverSquare(const Square& square, const Tile& tile, std::uint32_t* planes) const;
+  int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0;
+  // as added; by tile, tile t's in binned_[tile_starts_[t]..[t + 1]); those reaching more than 2 x 2
+  // tiles, as added
+  std::vector<Square> squares_, binned_, big_;
+  std::vector<std::uint32_t> tile_starts_;
   std::vector<Eigen::Vector2f> samples_;
   Eigen::Vector2f sample_min_, sample_max_;   // their extent within a pixel
-  std::vector<Texel> texels_;
-  std::pair<int, int> rows_{0, -1};
+  std::vector<std::uint32_t> planes_;         // tile by tile (TileWords)
+  std::vector<int> drawn_;
 };
 
 }  // namespace urdfsnap::gl
