@@ -51,27 +51,43 @@ bool Shade(int shape, float u, float v, Eigen::Vector3f& c) {
   return true;
 }
 
+// Four lanes of ints or floats, GCC's (and Clang's) vector extension: SSE2 on x86-64.
+using Lanes = std::int32_t __attribute__((vector_size(16)));
+using Floats = float __attribute__((vector_size(16)));
+
+// a where `mask` is set, else b
+Lanes Select(Lanes mask, Lanes a, Lanes b) { return (a & mask) | (b & ~mask); }
+Lanes Max(Lanes a, int b) { return Select(a > b, a, Lanes{} + b); }
+Lanes Min(Lanes a, int b) { return Select(a < b, a, Lanes{} + b); }
+
+// Ceil for four values at once
+Lanes Ceil(Floats v) {
+  const Floats low = Floats{} - 1e6f, high = Floats{} + 1e6f;
+  v = std::bit_cast<Floats>(Select(v < low, std::bit_cast<Lanes>(low), std::bit_cast<Lanes>(v)));
+  v = std::bit_cast<Floats>(Select(v > high, std::bit_cast<Lanes>(high), std::bit_cast<Lanes>(v)));
+  const Lanes i = __builtin_convertvector(v, Lanes);
+  return i - (__builtin_convertvector(i, Floats) < v);   // a true lane is -1
+}
+
 // Covers columns [first, end) of one sample's row of depths and colours (kTileSize columns) at
 // `depth` with `colour` where that is nearer (GL_LEQUAL): four columns a vector from `first`, the
 // last four of the row at most; a lane out of [first, end) or farther keeps its value. No branch
 // on the depth test: which of two points is nearer is a coin toss in a cloud.
 void CoverRow(std::uint32_t* depths, std::uint32_t* colours, int first, int end, float depth, std::uint32_t colour) {
-  using Lanes = std::int32_t __attribute__((vector_size(16)));
-  using Depths = float __attribute__((vector_size(16)));
   const Lanes column{0, 1, 2, 3};
-  const Depths near = Depths{} + depth;
+  const Floats near = Floats{} + depth;
   const Lanes bits = Lanes{} + std::bit_cast<std::int32_t>(depth);
   const Lanes packed = Lanes{} + static_cast<std::int32_t>(colour);
   for (int x = first; x < end; x += 4) {
     const int window = std::min(x, PointSplat::kTileSize - 4);
-    Depths old_depth;
+    Floats old_depth;
     Lanes old_colour;
     std::memcpy(&old_depth, depths + window, sizeof old_depth);
     std::memcpy(&old_colour, colours + window, sizeof old_colour);
     const Lanes at = column + window;
     const Lanes in = (at >= x) & (at < end) & (near <= old_depth);
-    const Lanes new_depth = (bits & in) | (std::bit_cast<Lanes>(old_depth) & ~in);
-    const Lanes new_colour = (packed & in) | (old_colour & ~in);
+    const Lanes new_depth = Select(in, bits, std::bit_cast<Lanes>(old_depth));
+    const Lanes new_colour = Select(in, packed, old_colour);
     std::memcpy(depths + window, &new_depth, sizeof new_depth);
     std::memcpy(colours + window, &new_colour, sizeof new_colour);
   }
@@ -87,6 +103,9 @@ void PointSplat::Clear(int width, int height, const std::vector<Eigen::Vector2f>
   samples_ = samples;
   sample_min_ = sample_max_ = samples.front();
   for (const Eigen::Vector2f& s : samples) sample_min_ = sample_min_.cwiseMin(s), sample_max_ = sample_max_.cwiseMax(s);
+  sample_x_.assign((samples.size() + 3) / 4 * 4, samples.front().x());
+  sample_y_.assign(sample_x_.size(), samples.front().y());
+  for (std::size_t s = 0; s < samples.size(); ++s) sample_x_[s] = samples[s].x(), sample_y_[s] = samples[s].y();
   // no pass over the image: a tile is emptied when a square first reaches it in a frame
   planes_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_ * TileWords());
   squares_.clear();
@@ -127,16 +146,20 @@ void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32
   const auto plane = [&](std::size_t s, int which) { return planes + (2 * s + which) * kPlane; };
   if (square.shape == 0) {
     // one colour: each sample's own rows and columns of pixels whose sample lies inside, where x
-    // in [x0, x1) is px in [ceil(x0 - sx), ceil(x1 - sx))
-    for (std::size_t s = 0; s < count; ++s) {
-      const Eigen::Vector2f& sample = samples_[s];
-      const int px0 = std::max(tile.x0, Ceil(square.x0 - sample.x())) - tile.x0;
-      const int px1 = std::min(tile.x1, Ceil(square.x1 - sample.x())) - tile.x0;
-      const int py0 = std::max(tile.y0, Ceil(square.y0 - sample.y())) - tile.y0;
-      const int py1 = std::min(tile.y1, Ceil(square.y1 - sample.y())) - tile.y0;
-      for (int py = py0; py < py1; ++py) {
-        const std::size_t row = static_cast<std::size_t>(py) * kTileSize;
-        CoverRow(plane(s, 0) + row, plane(s, 1) + row, px0, px1, square.depth, square.rgba8);
+    // in [x0, x1) is px in [ceil(x0 - sx), ceil(x1 - sx)); four samples' bounds at a time
+    for (std::size_t first = 0; first < count; first += 4) {
+      Floats sx, sy;
+      std::memcpy(&sx, sample_x_.data() + first, sizeof sx);
+      std::memcpy(&sy, sample_y_.data() + first, sizeof sy);
+      const Lanes px0 = Max(Ceil(square.x0 - sx), tile.x0) - tile.x0;
+      const Lanes px1 = Min(Ceil(square.x1 - sx), tile.x1) - tile.x0;
+      const Lanes py0 = Max(Ceil(square.y0 - sy), tile.y0) - tile.y0;
+      const Lanes py1 = Min(Ceil(square.y1 - sy), tile.y1) - tile.y0;
+      for (std::size_t k = 0; k < 4 && first + k < count; ++k) {
+        for (int py = py0[k]; py < py1[k]; ++py) {
+          const std::size_t row = static_cast<std::size_t>(py) * kTileSize;
+          CoverRow(plane(first + k, 0) + row, plane(first + k, 1) + row, px0[k], px1[k], square.depth, square.rgba8);
+        }
       }
     }
     return;

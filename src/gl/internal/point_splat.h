@@ -101,6 +101,7 @@ class PointSplat {
   std::vector<std::uint32_t> tile_starts_;
   std::vector<Eigen::Vector2f> samples_;
   Eigen::Vector2f sample_min_, sample_max_;   // their extent within a pixel
+  std::vector<float> sample_x_, sample_y_;    // their x and y, as many as a multiple of four
   std::vector<std::uint32_t> planes_;         // tile by tile (TileWords)
   std::vector<int> drawn_;
 };
