@@ -172,6 +172,16 @@ TEST_F(PointSplatTest, SquaresOverManyTilesTieWithSmallOnesInTheOrderAdded) {
   EXPECT_EQ(splat.At(90, 90, 0).depth, PointSplat::kEmpty);   // outside the square
 }
 
+TEST_F(PointSplatTest, ManyPointsOnOnePixelAtOneDepthLeaveTheLastOne) {
+  // enough points for two threads: all red at one spot and depth but the last, blue; on a tie the
+  // later wins, whichever thread covers the tile
+  const std::vector<Eigen::Vector3f> origin(2 * PointSplat::kSquaresPerThread, Eigen::Vector3f::Zero());
+  PointSet points = Points(Style::kPoints, 1, origin);
+  points.colours.back() = {0, 0, 1, 1};
+  Splat(points);
+  EXPECT_EQ(Colour(9, 4), Rgba(0, 0, 255));
+}
+
 TEST_F(PointSplatTest, PointsOutsideTheViewOrNotFiniteAreLeftOutAndHugeOnesHeldToTheView) {
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
   Splat(Points(Style::kPoints, 3, {{0, 0, 20}, {30, 0, 0}, {inf, 0, 0}, {nan, 0, 0}}));
