@@ -155,10 +155,11 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
   glGetIntegerv(GL_SAMPLES, &samples);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
   // the splat's texture is two rows a sample per pixel high (Composite): higher than GL allows, the sets are drawn by GL
-  // and fewer points than kFewestPoints are drawn by GL too (cheaper; the same pixels)
+  // and points that GL draws for less than kFewestPoints squares are drawn by GL too (cheaper; the
+  // same pixels)
   std::size_t splattable = 0;
   for (const scene::PointSet* points : sets) {
-    if (PointSplat::Splattable(*points)) splattable += points->positions.size();
+    if (PointSplat::Splattable(*points)) splattable += PointSplat::GlCost(*points);
   }
   const bool can_splat = static_cast<long>(viewport[3] + PointSplat::kTileSize) * 2 * std::max(samples, 1) <= max_texture &&
                          splattable >= PointSplat::kFewestPoints;

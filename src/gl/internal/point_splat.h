@@ -2,12 +2,12 @@
 // into a per-sample colour and depth image, which PointSetDrawing composites into the frame with
 // one draw per sample writing gl_FragDepth (so the robot still hides points behind it and points
 // hide the robot). llvmpipe spends ~0.6 us of rasteriser time per point primitive: 100k points
-// cost 75-95 ms of CPU a frame through GL and ~25 this way (docs/point-clouds.md). Each sample is
+// cost 75-95 ms of CPU a frame through GL and ~21 this way (docs/point-clouds.md). Each sample is
 // covered exactly as llvmpipe covers it (sample inside the square; the square's colour and shape
 // evaluated at the pixel centre, as a multisampled fragment shader runs once per pixel), so the
-// picture is the GL one. The squares are sorted by row before they are covered, so the image is
-// walked row by row rather than at random (a Points frame went from ~35 to ~29 ms of CPU). No GL
-// here.
+// picture is the GL one but where two points' depths tie or nearly tie. The image is covered
+// tile by tile, each tile's samples in the L1 cache, rather than point by point over the whole
+// image. No GL here.
 #pragma once
 
 #include <cstddef>
@@ -25,12 +25,19 @@ class PointSplat {
  public:
   // Whether an opaque set of `points` can be splatted: a camera-facing style (not Boxes).
   static bool Splattable(const scene::PointSet& points) { return points.style != scene::PointSet::Style::kBoxes; }
-  // Fewer opaque camera-facing points in a frame than this are drawn by GL: the splat's cost per
-  // frame whatever it holds (clearing its image, uploading and compositing it per sample: ~4 ms of
-  // CPU at 640x480 with 4x multisampling) is more than GL's ~0.6 us a point below some 5,000 points
-  // (points bench, paired: 2,000 Points 11.1 ms splatted, 7.1 by GL; 20,000 14.2 and 20.8).
-  // A marker's points and sphere lists are usually few.
+  // A frame's opaque camera-facing points whose GlCost is below this are drawn by GL: the splat's
+  // cost whatever it holds (emptying, uploading and compositing per sample the tiles the points
+  // reach: ~8 ms of CPU for a cloud around mrm at 640x480 with 4x multisampling) is more than
+  // GL's ~1.2 us a square below some 5,000 squares. A marker's points and sphere lists are usually
+  // few.
   static constexpr std::size_t kFewestPoints = 4096;
+  // What GL would spend on drawing `points`, in camera-facing squares: a GL point (Points) costs
+  // llvmpipe about a third of a square's two triangles (points bench, CPU ms per frame with mrm,
+  // paired: Points by GL 8.0 / 13.4 / 15.5 at 8,000 / 12,000 / 16,000 points, splatted 13.0 /
+  // 14.1 / 14.5; Flat Squares at 8,000 by GL 14.1, splatted 13.3).
+  static std::size_t GlCost(const scene::PointSet& points) {
+    return points.style == scene::PointSet::Style::kPoints ? points.positions.size() / 3 : points.positions.size();
+  }
 
   // Starts a frame of `width` x `height` pixels, each with the given sample positions (pixel
   // units within a pixel, GL window coordinates: y up; {0.5, 0.5} without multisampling).
