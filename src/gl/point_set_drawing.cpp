@@ -170,9 +170,6 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
       continue;
     }
     if (!splatting) {
-      // what is drawn so far (the robot) goes to llvmpipe's rasteriser threads now, to be drawn
-      // while this thread projects and bins the points, instead of after them at the read-back
-      glFlush();
       std::vector<Eigen::Vector2f> positions(std::max(samples, 1), Eigen::Vector2f(0.5f, 0.5f));
       for (GLint s = 0; s < samples; ++s) glGetMultisamplefv(GL_SAMPLE_POSITION, s, positions[s].data());
       splat_.Clear(viewport[2], viewport[3], positions);

@@ -51,7 +51,6 @@
   X(PFNGLENABLEPROC, glEnable)                                        \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)      \
   X(PFNGLFINISHPROC, glFinish)                                        \
-  X(PFNGLFLUSHPROC, glFlush)                                          \
   X(PFNGLFRAMEBUFFERPARAMETERIPROC, glFramebufferParameteri)          \
   X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)      \
   X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)            \
