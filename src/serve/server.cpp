@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <condition_variable>
+#include <filesystem>
 #include <mutex>
 #include <stop_token>
 #include <thread>
@@ -112,6 +113,17 @@ void CheckOptionValues(request::RenderRequest base) {
   base.rviz.clear();
   base.joint_file.clear();
   request::ResolveRequest(base, request::RequestFiles{}, request::CommandLineLabel);
+}
+
+// How the page names the calibrated camera it shows ("" for the orbit view): the calibration
+// file and where the camera is, as the command line gave them.
+std::string CameraViewText(const request::RenderRequest& base) {
+  std::string text = std::filesystem::path(base.camera_info).filename().string();
+  const std::string at = !base.camera_frame.empty() ? "frame " + base.camera_frame
+                         : !base.camera_pose.empty() ? "pose " + base.camera_pose
+                                                     : "";
+  if (!at.empty()) text += (text.empty() ? "" : " at ") + at;
+  return text;
 }
 
 }  // namespace
@@ -265,7 +277,8 @@ struct Server::Impl {
     // a calibrated camera is placed as given: the page's orbit controls have nothing to move
     const request::RenderRequest& base = options.base;
     const bool camera = !base.camera_info.empty() || !base.camera_frame.empty() || !base.camera_pose.empty();
-    SetJson(res, 200, {{"model", state->generation}, {"error", error}, {"recording", recording}, {"camera", camera}});
+    SetJson(res, 200, {{"model", state->generation}, {"error", error}, {"recording", recording}, {"camera", camera},
+                       {"camera_view", CameraViewText(base)}});
   }
 
   void Route() {

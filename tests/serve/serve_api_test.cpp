@@ -197,6 +197,7 @@ TEST_F(ServeApiTest, RobotAndInitialView) {
   EXPECT_EQ(status["model"], 1);
   EXPECT_TRUE(status["error"].is_null());
   EXPECT_EQ(status["camera"], false);   // the orbit view: the page's orbit controls are on
+  EXPECT_EQ(status["camera_view"], "");
   // the page and its parts, embedded
   const auto page = client->Get("/");
   EXPECT_EQ(page->status, 200);

@@ -75,7 +75,9 @@ TEST_F(ServeRecordingTest, ARecordingIsServedThroughACalibratedCamera) {
   auto client = server.Client();
   const auto status = client->Get("/api/status");
   ASSERT_TRUE(status);
-  EXPECT_TRUE(nlohmann::json::parse(status->body)["camera"].get<bool>()) << "the page's orbit controls are off";
+  const nlohmann::json status_json = nlohmann::json::parse(status->body);
+  EXPECT_TRUE(status_json["camera"].get<bool>()) << "the page's orbit controls are off";
+  EXPECT_EQ(status_json["camera_view"], "cam.yaml at pose 0,0,6,1,0,0,0") << "the page's status line names the camera";
   std::string earlier;
   for (const char* at : {"0.4", "2.9"}) {
     const auto frame = client->Get("/render.png?at=" + std::string(at));

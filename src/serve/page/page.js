@@ -30,6 +30,7 @@ const page = {
   modelError: '',
   frameError: '',
   camera: false,      // a calibrated camera is served: the orbit controls are off
+  cameraView: '',     // its calibration file and placement, for the status line
 };
 
 // Numbers as the page writes them into URLs, joint files and suite cases: at most six decimals,
@@ -405,7 +406,14 @@ function showFrame(blob) {
   const revoke = () => { if (old) URL.revokeObjectURL(old); };
   img.decode().then(revoke, revoke);
   const o = page.options, v = page.view;
-  $('status').textContent = `yaw ${num(v.yaw)} · pitch ${num(v.pitch)} · distance ${num(v.distance)} · focal ${v.focal.map(num).join(',')} · ${frameSize()}`;
+  if (!page.camera) {
+    $('status').textContent = `yaw ${num(v.yaw)} · pitch ${num(v.pitch)} · distance ${num(v.distance)} · focal ${v.focal.map(num).join(',')} · ${frameSize()}`;
+    return;
+  }
+  // a calibrated camera's frame has the calibration's size, whatever the size selector says
+  img.decode().then(() => {
+    $('status').textContent = `calibrated camera ${page.cameraView} · ${img.naturalWidth}x${img.naturalHeight}`;
+  }, () => {});
 }
 
 function showError() {
@@ -527,7 +535,8 @@ async function initialView() {
       if (status.recording) $('at').max = status.recording.duration;
       // a calibrated camera (--camera-info, --camera-frame, --camera-pose) is placed as given
       page.camera = status.camera;
-      for (const id of ['reset-view', 'fit-view', 'focus']) {
+      page.cameraView = status.camera_view;
+      for (const id of ['reset-view', 'fit-view', 'focus', 'size']) {
         $(id).disabled = status.camera;
         if (status.camera) $(id).title = 'the view is the calibrated camera urdfsnap serve was given; it is placed as given';
       }
