@@ -202,14 +202,10 @@ void Run(DatasetOptions& o) {
     Warnings later;
     std::optional<gl::SceneRenderer> gl;
     if (!workers) {
-      // one process: llvmpipe rasterises beside the render thread and shares the writer's core,
-      // whose PNGs and COCO entries take less than a sample's drawing (mrm on 2 cores: ~3.8 ms of
-      // the writer's CPU a sample, ~4.7 ms drawing), so the two cores stay busy; a worker of
-      // several leaves the writer a core, as animate does, and a heavy scene rasterises on every
-      // core either way (set while no other thread runs: before the GL context reads it)
+      // the writer thread keeps a core busy while samples are drawn, unless drawing outweighs it
+      // (as animate decides; set while no other thread runs: before the GL context reads it)
       gl_loading->wait();
-      const int writer_cores = o.jobs.worker() ? 1 : 0;
-      const std::string rasteriser = gl::LeaveCoresToOtherThreads(writer_cores, renderer.scene().triangle_count());
+      const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, renderer.scene().triangle_count());
       if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
       gl.emplace(settings.samples, backend);
       if (o.jobs.worker()) return DrawPieces(o, renderer, *gl, *settings.camera, spec, later);

@@ -29,12 +29,12 @@ std::string LeaveCoresToOtherThreads(int busy_threads, std::size_t triangles) {
     return "LP_NUM_THREADS=" + value + ": llvmpipe rasterises on " + value + (threads == 1 ? " thread" : " threads") +
            ", one per core: drawing " + std::to_string(triangles) + " triangles outweighs encoding";
   }
-  const std::string busy = busy_threads == 0 ? "sharing the cores with encoding"
-                                             : std::to_string(busy_threads) + (busy_threads == 1 ? " core" : " cores") +
-                                                   " left to encoding";
-  if (threads == 0) return "LP_NUM_THREADS=0: llvmpipe rasterises on the render thread, " + busy;
-  return "LP_NUM_THREADS=" + value + ": llvmpipe rasterises on " + value + (threads == 1 ? " thread, " : " threads, ") +
-         busy;
+  const std::string busy = std::to_string(busy_threads) + (busy_threads == 1 ? " core" : " cores");
+  if (threads == 0) {
+    return "LP_NUM_THREADS=0: llvmpipe rasterises on the render thread, " + busy + " left to encoding";
+  }
+  return "LP_NUM_THREADS=" + value + ": llvmpipe rasterises on " + value + " threads, " + busy +
+         " left to encoding";
 }
 
 }  // namespace urdfsnap::gl

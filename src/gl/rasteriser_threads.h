@@ -17,7 +17,7 @@ inline constexpr std::size_t kRasterBoundTriangles = 20'000;
 // Leaves `busy_threads` cores to the caller's other threads when the scene has fewer than
 // kRasterBoundTriangles `triangles`: llvmpipe gets the cores that remain beyond the render
 // thread's own (LP_NUM_THREADS), none on 2 cores with one encoder, where it then rasterises on the
-// render thread itself; with `busy_threads` 0 the other threads share the rasteriser's cores. A heavier scene gets a rasteriser thread per core. A GPU is not affected,
+// render thread itself. A heavier scene gets a rasteriser thread per core. A GPU is not affected,
 // nor an LP_NUM_THREADS the user set. It sets an environment variable, so call it before the
 // first GL context is made, while no other thread runs (after StartLoadingGl's has ended).
 // Returns what --verbose says about it ("" when the user's setting stands), e.g.

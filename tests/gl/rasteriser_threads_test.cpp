@@ -37,17 +37,6 @@ TEST_F(RasteriserThreadsTest, ALightSceneLeavesTheEncoderItsCores) {
   EXPECT_NE(said.find("1 core left to encoding"), std::string::npos) << said;
 }
 
-TEST_F(RasteriserThreadsTest, WithNoThreadLeftACoreTheRasteriserTakesEveryCoreButTheRenderThreads) {
-  unsetenv("LP_NUM_THREADS");
-  const std::string said = LeaveCoresToOtherThreads(0, kRasterBoundTriangles - 1);
-  const int threads = std::max(0, Cores() - 1);
-  EXPECT_EQ(Variable(), std::to_string(threads));
-  EXPECT_NE(said.find("sharing the cores with encoding"), std::string::npos) << said;
-  if (threads == 1) {
-    EXPECT_NE(said.find("on 1 thread, "), std::string::npos) << said;
-  }
-}
-
 TEST_F(RasteriserThreadsTest, AHeavySceneRasterisesOnEveryCore) {
   unsetenv("LP_NUM_THREADS");
   const std::string said = LeaveCoresToOtherThreads(1, 135'000);
