@@ -3,8 +3,9 @@
 // RViz's default view with a cloud of N points (a lidar-like ring of walls and floor around the
 // robot, coloured by height), drawn in each style with 4x multisampling and read back; the median
 // per-frame time of the draw alone and of the robot without points, through the typed core.
-// usage: urdfsnap_points_bench [POINTS [FRAMES [SAMPLES [STYLE]]]]   (defaults 100000, 30, 4 and
-// every style; STYLE as the table names it, "Points" or "Flat Squares", to profile one)
+// usage: urdfsnap_points_bench [POINTS [FRAMES [SAMPLES [STYLE [PNG]]]]]   (defaults 100000, 30, 4
+// and every style; STYLE as the table names it, "Points" or "Flat Squares", to profile one; PNG
+// a file for STYLE's frame, to compare two builds' pictures with `urdfsnap diff`)
 // Timings only: no test asserts on them.
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 
 #include "../pipeline/frame_loop.h"
 #include "../pipeline/timing.h"
+#include "image/png_writer.h"
 #include "scene/scene.h"
 
 namespace {
@@ -74,6 +76,7 @@ int main(int argc, char** argv) {
     scene.points.push_back(Cloud(count, style));
     const auto [style_wall, style_cpu] = time(scene);
     std::printf("| mrm + %zu points, %s | %.2f | %.2f |\n", count, name, style_wall, style_cpu);
+    if (argc > 5) image::WritePng(renderer.Render(scene, scene::OrbitView{}, 640, 480).colour, argv[5]);
   }
   return 0;
 }

@@ -8,6 +8,8 @@
 #   png, mp4  `urdfsnap animate --turntable --duration 4 --fit --jobs 1` (121 frames) to a PNG sequence and
 #             to H.264: frames per second of the whole process, startup included, and its CPU
 #             ms (all threads) per frame
+#   pngw      the same PNG sequence in animate's worker processes (--jobs by default: one per
+#             core): frames per second and CPU ms per frame of the whole process tree
 #   docs      the whole `urdfsnap docs` page (--no-shard; its worker processes, one per core, as
 #             by default): wall s, CPU s of all its processes and the peak resident MB of the
 #             whole process tree (summed over the processes, tree_peak.py)
@@ -55,9 +57,15 @@ row() {
   read -r _ triangles _ draw_ms _ draw_cpu <<<"$draw"
   # animate: 121 frames
   local fps=()
-  for output in "frames/%05d.png" "turn.mp4"; do
+  # in one process to PNG and to H.264, then to PNG in the default worker processes (/usr/bin/time
+  # counts the CPU of the workers the parent waited for)
+  local jobs output
+  for run in "1 frames/%05d.png" "1 turn.mp4" "default frames/%05d.png"; do
+    read -r jobs output <<<"$run"
+    local options=(--turntable --duration 4 --fit --quiet --no-shard)
+    [ "$jobs" = default ] || options+=(--jobs "$jobs")
     rm -rf "$work/anim" && mkdir -p "$work/anim"
-    timed "$snap" animate "${args[@]}" --turntable --duration 4 --fit --quiet --no-shard --jobs 1 -o "$work/anim/$output"
+    timed "$snap" animate "${args[@]}" "${options[@]}" -o "$work/anim/$output"
     fps+=("$(awk "BEGIN {printf \"%.0f\", 121 / $wall}")" "$(awk "BEGIN {printf \"%.1f\", 1000 * $cpu / 121}")")
   done
   # docs: a process tree
@@ -71,11 +79,11 @@ row() {
 }
 
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores; load average $(cut -d' ' -f1-3 /proc/loadavg)"
-format='%-6s %9s | %6s %6s %6s | %6s %6s | %5s %6s | %5s %6s | %6s %6s %6s\n'
+format='%-6s %9s | %6s %6s %6s | %6s %6s | %5s %6s | %5s %6s | %5s %6s | %6s %6s %6s\n'
 # shellcheck disable=SC2059
-printf "$format" "" "" render render render draw draw png png mp4 mp4 docs docs docs
+printf "$format" "" "" render render render draw draw png png mp4 mp4 pngw pngw docs docs docs
 # shellcheck disable=SC2059
-printf "$format" robot triangles ms "cpu ms" MB "ms/f" "cpu/f" "f/s" "cpu/f" "f/s" "cpu/f" "s" "cpu s" MB
+printf "$format" robot triangles ms "cpu ms" MB "ms/f" "cpu/f" "f/s" "cpu/f" "f/s" "cpu/f" "f/s" "cpu/f" "s" "cpu s" MB
 row mrm "$root/models/mrm_description/urdf/mrm.xacro"
 if [ -n "${URDFSNAP_FRANKA_DESCRIPTION:-}" ]; then
   row panda "$URDFSNAP_FRANKA_DESCRIPTION/robots/panda/panda.urdf.xacro" "franka_description=$URDFSNAP_FRANKA_DESCRIPTION"

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
@@ -24,6 +25,7 @@
 #include "cli/bag_scene.h"
 #include "cli/command.h"
 #include "cli/display_options.h"
+#include "cli/frame_memory.h"
 #include "cli/gl_options.h"
 #include "cli/ignored_options.h"
 #include "cli/job_options.h"
@@ -194,9 +196,10 @@ scene::OrbitView ParseViewLine(const std::string& line) {
 }
 
 // Prepares the robot through `session` and plans and fits the frames (in place: `frames` keeps
-// references to the plan and poses).
+// references to the plan and poses). A worker calls `while_parent_fits` with the robot and its
+// poses ready, before it waits for its parent's camera.
 void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, PreparedAnimation& a,
-                      Warnings& warnings) {
+                      Warnings& warnings, const std::function<void(const PreparedAnimation&)>& while_parent_fits) {
   const request::RenderRequest& r = o.render.request;
   // a calibration from the bag (--camera-info-topic) is resolved once the first frame's moment is known
   std::optional<request::ResolvedRequest> resolved;
@@ -240,6 +243,7 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
   // a worker: the camera its parent fitted over every frame, not fitted again
   scene::OrbitView view = settings.view;
   if (o.jobs.worker() && fit != render::Fit::kNone) {
+    while_parent_fits(a);
     const std::optional<std::string> line = ReadParentLine();
     if (!line) throw Error("animate worker: its parent ended before fitting the camera");
     view = ParseViewLine(*line);
@@ -253,6 +257,15 @@ void PrepareAnimation(const AnimateOptions& o, request::RenderSession& session, 
                    animation::CameraRequest{view, settings.size, fit, settings.fit_margin, o.turntable, settings.camera,
                                             a.scene.camera_tf ? &*a.scene.camera_tf : nullptr},
                    warnings, a.scene.Additions());
+}
+
+// A worker's GL context made, its shaders compiled and the robot's meshes uploaded while its parent
+// fits the camera: the first frame's pose drawn through the view before --fit, 16x16 pixels.
+void WarmUpGl(request::RenderSession& session, const PreparedAnimation& a) {
+  const request::Prepared& robot = a.scene.robot;
+  Warnings repeated;   // the frames report the pose's warnings
+  robot.renderer->Render(session.GlRenderer(robot.settings.samples), a.poses->At(a.plan.TrajectoryTime(0), repeated),
+                         robot.settings.view, {16, 16}, {});
 }
 
 // --print-frame K: the render options that draw frame K, to stdout.
@@ -445,19 +458,26 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::optio
     }
   }
   try {
+    // the encoder thread keeps a core busy while frames are drawn, unless drawing outweighs it
+    // (set while no other thread runs: before the encoder opens and the GL context reads it); once
+    bool gl_ready = false;
+    const auto ready_gl = [&](const PreparedAnimation& a) {
+      if (std::exchange(gl_ready, true)) return;
+      gl_loading->wait();
+      const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, a.scene.robot.renderer->scene().triangle_count());
+      if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
+    };
     PreparedAnimation animation;
-    PrepareAnimation(o, session, animation, warnings);
+    PrepareAnimation(o, session, animation, warnings, [&](const PreparedAnimation& a) {
+      ready_gl(a);
+      WarmUpGl(session, a);
+    });
     if (!o.print_frame.empty()) return PrintFrame(o, animation, warnings);
     if (workers) {
       if (animation.fit != render::Fit::kNone) workers->Tell(ViewLine(animation.frames->fitted_view()));
       return WriteByWorkers(o, suffix, animation, *workers, outputs, warnings);
     }
-    // the encoder thread keeps a core busy while frames are drawn, unless drawing outweighs it
-    // (set while no other thread runs: before the encoder opens and the GL context reads it)
-    gl_loading->wait();
-    const std::string rasteriser =
-        gl::LeaveCoresToOtherThreads(1, animation.scene.robot.renderer->scene().triangle_count());
-    if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
+    ready_gl(animation);
     if (o.jobs.worker()) return DrawPieces(o, session, animation, warnings);
     WriteAnimation(o, choice, session, animation, outputs, warnings);
   } catch (const Error& e) {
@@ -482,6 +502,7 @@ std::vector<std::string> BagsGiven(const ModelSource& model) {
 
 void Run(AnimateOptions& o) {
   if (o.jobs.worker()) StopWhenParentEnds();
+  ReuseFreedFrameMemory();
   const gl::BackendChoice backend = o.gl_options.Choice();
   const std::vector<std::string> bags = BagsGiven(o.model);
   const int jobs = bags.size() < 2 ? WorkerCount(o) : 1;   // each of many bags in this process

@@ -3,6 +3,7 @@
 #include "gl/internal/point_set_drawing.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -40,6 +41,11 @@ PointSetDrawing::PointSetDrawing()
       box_("point_box.vert", "point.frag"),
       splat_program_("point_splat.vert", "point_splat.frag") {
   glGenVertexArrays(1, &splat_array_);
+  glBindVertexArray(splat_array_);
+  glGenBuffers(1, &splat_corners_);
+  glBindBuffer(GL_ARRAY_BUFFER, splat_corners_);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
   glGenTextures(1, &splat_texture_);
   glGenVertexArrays(1, &vertex_array_);
   glBindVertexArray(vertex_array_);
@@ -62,6 +68,7 @@ PointSetDrawing::PointSetDrawing()
 
 PointSetDrawing::~PointSetDrawing() {
   glDeleteTextures(1, &splat_texture_);
+  glDeleteBuffers(1, &splat_corners_);
   glDeleteVertexArrays(1, &splat_array_);
   glDeleteBuffers(2, buffers_);
   glDeleteVertexArrays(1, &vertex_array_);
@@ -147,13 +154,14 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
   glGetIntegerv(GL_VIEWPORT, viewport);
   glGetIntegerv(GL_SAMPLES, &samples);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
-  // the splat's texture is a sample wide per pixel: wider than GL allows, the sets are drawn by GL
-  // and fewer points than kFewestPoints are drawn by GL too (cheaper; the same pixels)
+  // the splat's texture is two rows a sample per pixel high (Composite): higher than GL allows, the sets are drawn by GL
+  // and points that GL draws for less than kFewestPoints squares are drawn by GL too (cheaper; the
+  // same pixels)
   std::size_t splattable = 0;
   for (const scene::PointSet* points : sets) {
-    if (PointSplat::Splattable(*points)) splattable += points->positions.size();
+    if (PointSplat::Splattable(*points)) splattable += PointSplat::GlCost(*points);
   }
-  const bool can_splat = static_cast<long>(viewport[2]) * std::max(samples, 1) <= max_texture &&
+  const bool can_splat = static_cast<long>(viewport[3] + PointSplat::kTileSize) * 2 * std::max(samples, 1) <= max_texture &&
                          splattable >= PointSplat::kFewestPoints;
   bool splatting = false;
   for (const scene::PointSet* points : sets) {
@@ -174,30 +182,54 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
   if (!splat_.empty()) Composite();
 }
 
-// Uploads the splatted rows into the texture and draws a band over those rows, per sample.
+// Uploads the drawn tiles into the texture and draws them, per sample: a rectangle over each run of
+// drawn tiles side by side. The texture holds the tiles where they lie in the image, each tile's
+// planes (PointSplat::TileWords) one above the other: for tiles of T x T pixels and S samples, the
+// depth of sample s of pixel (x, y) at texel (x, (y / T * 2 S + 2 s) * T + y % T), its colour T
+// rows higher.
 void PointSetDrawing::Composite() {
-  const int width = splat_.width() * splat_.samples(), height = splat_.height();   // texels: samples side by side
-  const auto [first, last] = splat_.rows();
-  static_assert(sizeof(PointSplat::Texel) == 8);   // one GL_RG32UI texel: depth bits, colour
+  constexpr int kTile = PointSplat::kTileSize;
+  const int samples = splat_.samples(), width = splat_.width(), height = splat_.height();
+  const int rows = (height + kTile - 1) / kTile * kTile * 2 * samples;
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, splat_texture_);
-  if (width != texture_size_[0] || height != texture_size_[1]) {
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32UI, width, height, 0, GL_RG_INTEGER, GL_UNSIGNED_INT, nullptr);
+  if (width != texture_size_[0] || rows != texture_size_[1]) {
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, width, rows, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    texture_size_[0] = width, texture_size_[1] = height;
+    texture_size_[0] = width, texture_size_[1] = rows;
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, first, width, last - first + 1, GL_RG_INTEGER, GL_UNSIGNED_INT,
-                  splat_.texels().data() + static_cast<size_t>(first) * width);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, kTile);
+  const std::vector<int>& drawn = splat_.drawn();
+  for (const int t : drawn) {
+    // all of a tile's planes in one go (a tile cut by the image's top edge carries its unused rows)
+    const PointSplat::Tile tile = splat_.TileAt(t);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, tile.x0, tile.y0 * 2 * samples, tile.x1 - tile.x0, 2 * samples * kTile,
+                    GL_RED_INTEGER, GL_UNSIGNED_INT, splat_.TileWords(t));
+  }
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  // window pixels to clip space; two triangles per run of drawn tiles in a row of tiles
+  const auto clip = [](int pixel, int size) { return 2.f * static_cast<float>(pixel) / static_cast<float>(size) - 1.f; };
+  std::vector<float> corners;
+  for (std::size_t first = 0, last = 0; first < drawn.size(); first = ++last) {
+    const PointSplat::Tile tile = splat_.TileAt(drawn[first]);
+    while (last + 1 < drawn.size() && drawn[last + 1] == drawn[last] + 1 && splat_.TileAt(drawn[last + 1]).y0 == tile.y0) {
+      ++last;
+    }
+    const float x0 = clip(tile.x0, width), x1 = clip(splat_.TileAt(drawn[last]).x1, width);
+    const float y0 = clip(tile.y0, height), y1 = clip(tile.y1, height);
+    corners.insert(corners.end(), {x0, y0, x1, y0, x0, y1, x0, y1, x1, y0, x1, y1});
+  }
   splat_program_.Use();
   splat_program_.Set("texels", 0);
-  splat_program_.Set("samples", splat_.samples());
-  const auto clip_y = [&](int row) { return 2.f * static_cast<float>(row) / static_cast<float>(height) - 1.f; };
-  splat_program_.Set("rows", Eigen::Vector2f(clip_y(first), clip_y(last + 1)));
+  splat_program_.Set("samples", samples);
+  splat_program_.Set("tile_bits", std::countr_zero(static_cast<unsigned>(kTile)));
   glDisable(GL_CULL_FACE);
   glBindVertexArray(splat_array_);
-  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glBindBuffer(GL_ARRAY_BUFFER, splat_corners_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(corners.size() * sizeof(float)), corners.data(), GL_STREAM_DRAW);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(corners.size() / 2));
   glBindVertexArray(0);
   glEnable(GL_CULL_FACE);
 }

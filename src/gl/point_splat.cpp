@@ -3,6 +3,9 @@
 #include "gl/internal/point_splat.h"
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cstring>
 #include <cmath>
 #include <optional>
 #include <system_error>
@@ -15,10 +18,8 @@ namespace {
 // GL's conversion of a colour channel to 8 bits (round to nearest)
 std::uint32_t Byte(float value) { return static_cast<std::uint32_t>(std::clamp(value, 0.f, 1.f) * 255.f + 0.5f); }
 
-float Channel8(float value) { return static_cast<float>(Byte(value)) / 255.f; }
-
-std::uint32_t Pack(const Eigen::Vector3f& rgb, float alpha) {
-  return Byte(rgb[0]) | Byte(rgb[1]) << 8 | Byte(rgb[2]) << 16 | Byte(alpha) << 24;
+std::uint32_t Pack(const Eigen::Vector4f& rgba) {
+  return Byte(rgba[0]) | Byte(rgba[1]) << 8 | Byte(rgba[2]) << 16 | Byte(rgba[3]) << 24;
 }
 
 // ceil for window coordinates, without a libm call; a square reaching far off the screen (a big
@@ -50,27 +51,88 @@ bool Shade(int shape, float u, float v, Eigen::Vector3f& c) {
   return true;
 }
 
+// Four lanes of ints or floats, GCC's (and Clang's) vector extension: SSE2 on x86-64.
+using Lanes = std::int32_t __attribute__((vector_size(16)));
+using Floats = float __attribute__((vector_size(16)));
+
+// a where `mask` is set, else b
+Lanes Select(Lanes mask, Lanes a, Lanes b) { return (a & mask) | (b & ~mask); }
+Lanes Max(Lanes a, int b) { return Select(a > b, a, Lanes{} + b); }
+Lanes Min(Lanes a, int b) { return Select(a < b, a, Lanes{} + b); }
+
+// Ceil for four values at once
+Lanes Ceil(Floats v) {
+  const Floats low = Floats{} - 1e6f, high = Floats{} + 1e6f;
+  v = std::bit_cast<Floats>(Select(v < low, std::bit_cast<Lanes>(low), std::bit_cast<Lanes>(v)));
+  v = std::bit_cast<Floats>(Select(v > high, std::bit_cast<Lanes>(high), std::bit_cast<Lanes>(v)));
+  const Lanes i = __builtin_convertvector(v, Lanes);
+  return i - (__builtin_convertvector(i, Floats) < v);   // a true lane is -1
+}
+
+// Covers columns [first, end) of one sample's row of depths and colours (kTileSize columns) at
+// `depth` with `colour` where that is nearer (GL_LEQUAL): four columns a vector from `first`, the
+// last four of the row at most; a lane out of [first, end) or farther keeps its value. No branch
+// on the depth test: which of two points is nearer is a coin toss in a cloud.
+void CoverRow(std::uint32_t* depths, std::uint32_t* colours, int first, int end, float depth, std::uint32_t colour) {
+  const Lanes column{0, 1, 2, 3};
+  const Floats near = Floats{} + depth;
+  const Lanes bits = Lanes{} + std::bit_cast<std::int32_t>(depth);
+  const Lanes packed = Lanes{} + static_cast<std::int32_t>(colour);
+  for (int x = first; x < end; x += 4) {
+    const int window = std::min(x, PointSplat::kTileSize - 4);
+    Floats old_depth;
+    Lanes old_colour;
+    std::memcpy(&old_depth, depths + window, sizeof old_depth);
+    std::memcpy(&old_colour, colours + window, sizeof old_colour);
+    const Lanes at = column + window;
+    const Lanes in = (at >= x) & (at < end) & (near <= old_depth);
+    const Lanes new_depth = Select(in, bits, std::bit_cast<Lanes>(old_depth));
+    const Lanes new_colour = Select(in, packed, old_colour);
+    std::memcpy(depths + window, &new_depth, sizeof new_depth);
+    std::memcpy(colours + window, &new_colour, sizeof new_colour);
+  }
+}
+
 }  // namespace
 
 void PointSplat::Clear(int width, int height, const std::vector<Eigen::Vector2f>& samples) {
   width_ = width;
   height_ = height;
+  tiles_x_ = (width + kTileSize - 1) / kTileSize;
+  tiles_y_ = (height + kTileSize - 1) / kTileSize;
   samples_ = samples;
   sample_min_ = sample_max_ = samples.front();
   for (const Eigen::Vector2f& s : samples) sample_min_ = sample_min_.cwiseMin(s), sample_max_ = sample_max_.cwiseMax(s);
-  const std::size_t size = static_cast<std::size_t>(width) * height * samples.size();
-  texels_.assign(size, Texel{kEmpty, 0});
-  rows_ = {height, -1};
+  sample_x_.assign((samples.size() + 3) / 4 * 4, samples.front().x());
+  sample_y_.assign(sample_x_.size(), samples.front().y());
+  for (std::size_t s = 0; s < samples.size(); ++s) sample_x_[s] = samples[s].x(), sample_y_[s] = samples[s].y();
+  // no pass over the image: a tile is emptied when a square first reaches it in a frame
+  planes_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_ * TileWords());
   squares_.clear();
+  drawn_.clear();
 }
 
-void PointSplat::Keep(float x0, float x1, float y0, float y1, float depth, const Eigen::Vector4f& rgba, int shape) {
+PointSplat::Tile PointSplat::TileAt(int tile) const {
+  const int x0 = tile % tiles_x_ * kTileSize, y0 = tile / tiles_x_ * kTileSize;
+  return {x0, y0, std::min(x0 + kTileSize, width_), std::min(y0 + kTileSize, height_)};
+}
+
+PointSplat::Texel PointSplat::At(int x, int y, int s) const {
+  const int tile = y / kTileSize * tiles_x_ + x / kTileSize;
+  if (!std::binary_search(drawn_.begin(), drawn_.end(), tile)) return {kEmpty, 0};
+  const std::uint32_t* depths = TileWords(tile) + 2 * static_cast<std::size_t>(s) * kPlane;
+  const std::size_t texel = static_cast<std::size_t>(y % kTileSize) * kTileSize + x % kTileSize;
+  return {std::bit_cast<float>(depths[texel]), depths[kPlane + texel]};
+}
+
+void PointSplat::Keep(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape) {
   // llvmpipe snaps vertices to 1/256 pixel (lp_setup's FIXED_ORDER 8) before it tests samples
   const auto snap = [](float v) { return std::round(v * 256.f) / 256.f; };
   if (!std::isfinite(x0) || !std::isfinite(x1) || !std::isfinite(y0) || !std::isfinite(y1) || !std::isfinite(depth)) {
     return;   // a point at infinity: GL would draw nothing either
   }
-  Square square{snap(x0), snap(x1), snap(y0), snap(y1), depth, rgba, shape, 0, 0, 0, 0};
+  Square square{snap(x0), snap(x1), snap(y0), snap(y1), depth, rgba8, shape, 0, 0, 0, 0,
+                static_cast<std::uint32_t>(squares_.size())};
   square.px0 = std::max(0, Ceil(square.x0 - sample_max_.x()));
   square.px1 = std::min(width_ - 1, Ceil(square.x1 - sample_min_.x()) - 1);
   square.py0 = std::max(0, Ceil(square.y0 - sample_max_.y()));
@@ -78,85 +140,134 @@ void PointSplat::Keep(float x0, float x1, float y0, float y1, float depth, const
   if (square.px0 <= square.px1 && square.py0 <= square.py1) squares_.push_back(square);
 }
 
-bool PointSplat::CoverSquare(const Square& square, int first, int last) {
-  const Eigen::Vector3f flat = square.rgba.head<3>();
-  const std::uint32_t flat_packed = Pack(flat, square.rgba[3]);
+void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32_t* planes) const {
   const std::size_t count = samples_.size();
-  bool drawn = false;
-  Texel* const texels = texels_.data();
-  const float depth = square.depth;
-  const auto cover = [&](std::size_t at, std::uint32_t packed) {
-    if (depth > texels[at].depth) return;
-    texels[at] = {depth, packed};
-    drawn = true;
-  };
+  // sample s's depth and colour planes, each kTileSize x kTileSize
+  const auto plane = [&](std::size_t s, int which) { return planes + (2 * s + which) * kPlane; };
   if (square.shape == 0) {
     // one colour: each sample's own rows and columns of pixels whose sample lies inside, where x
-    // in [x0, x1) is px in [ceil(x0 - sx), ceil(x1 - sx))
-    for (std::size_t s = 0; s < count; ++s) {
-      const Eigen::Vector2f& sample = samples_[s];
-      const int px0 = std::max(0, Ceil(square.x0 - sample.x()));
-      const int px1 = std::min(width_, Ceil(square.x1 - sample.x()));
-      const int py0 = std::max(first, Ceil(square.y0 - sample.y()));
-      const int py1 = std::min(last + 1, Ceil(square.y1 - sample.y()));
-      for (int py = py0; py < py1; ++py) {
-        for (int px = px0; px < px1; ++px) cover((static_cast<std::size_t>(py) * width_ + px) * count + s, flat_packed);
+    // in [x0, x1) is px in [ceil(x0 - sx), ceil(x1 - sx)); four samples' bounds at a time
+    for (std::size_t first = 0; first < count; first += 4) {
+      Floats sx, sy;
+      std::memcpy(&sx, sample_x_.data() + first, sizeof sx);
+      std::memcpy(&sy, sample_y_.data() + first, sizeof sy);
+      const Lanes px0 = Max(Ceil(square.x0 - sx), tile.x0) - tile.x0;
+      const Lanes px1 = Min(Ceil(square.x1 - sx), tile.x1) - tile.x0;
+      const Lanes py0 = Max(Ceil(square.y0 - sy), tile.y0) - tile.y0;
+      const Lanes py1 = Min(Ceil(square.y1 - sy), tile.y1) - tile.y0;
+      for (std::size_t k = 0; k < 4 && first + k < count; ++k) {
+        for (int py = py0[k]; py < py1[k]; ++py) {
+          const std::size_t row = static_cast<std::size_t>(py) * kTileSize;
+          CoverRow(plane(first + k, 0) + row, plane(first + k, 1) + row, px0[k], px1[k], square.depth, square.rgba8);
+        }
       }
     }
-    return drawn;
+    return;
   }
   // shaded: the colour at each pixel's centre, for the samples of the pixel inside the square
-  for (int py = std::max(square.py0, first); py <= std::min(square.py1, last); ++py) {
-    for (int px = square.px0; px <= square.px1; ++px) {
+  const Eigen::Vector3f flat(static_cast<float>(square.rgba8 & 0xff) / 255.f,
+                             static_cast<float>(square.rgba8 >> 8 & 0xff) / 255.f,
+                             static_cast<float>(square.rgba8 >> 16 & 0xff) / 255.f);
+  const std::uint32_t alpha = square.rgba8 & 0xff000000u;
+  for (int py = std::max(square.py0, tile.y0); py <= std::min(square.py1, tile.y1 - 1); ++py) {
+    for (int px = std::max(square.px0, tile.x0); px <= std::min(square.px1, tile.x1 - 1); ++px) {
       Eigen::Vector3f c = flat;
       const float u = (static_cast<float>(px) + 0.5f - square.x0) / (square.x1 - square.x0);
       const float v = (static_cast<float>(py) + 0.5f - square.y0) / (square.y1 - square.y0);
       if (!Shade(square.shape, u, v, c)) continue;
-      const std::uint32_t packed = Pack(c, square.rgba[3]);
-      const std::size_t pixel = (static_cast<std::size_t>(py) * width_ + px) * count;
+      const std::uint32_t packed = Byte(c[0]) | Byte(c[1]) << 8 | Byte(c[2]) << 16 | alpha;
+      const std::size_t texel = static_cast<std::size_t>(py - tile.y0) * kTileSize + static_cast<std::size_t>(px - tile.x0);
       for (std::size_t s = 0; s < count; ++s) {
         const float x = static_cast<float>(px) + samples_[s].x(), y = static_cast<float>(py) + samples_[s].y();
         // a sample on the left or lower edge is in, on the right or upper one out: what llvmpipe's
         // fill rule gives in urdfsnap's flipped framebuffer (the GL-drawn goldens agree)
-        if (x >= square.x0 && x < square.x1 && y >= square.y0 && y < square.y1) cover(pixel + s, packed);
+        if (!(x >= square.x0 && x < square.x1 && y >= square.y0 && y < square.y1)) continue;
+        std::uint32_t& depth = plane(s, 0)[texel];
+        if (!(square.depth <= std::bit_cast<float>(depth))) continue;
+        depth = std::bit_cast<std::uint32_t>(square.depth);
+        plane(s, 1)[texel] = packed;
       }
     }
   }
-  return drawn;
 }
 
-void PointSplat::CoverBand(int first, int last, std::pair<int, int>& rows) {
-  for (const Square& square : sorted_) {
-    if (square.py0 > last) break;   // the rest start above the band
-    if (square.py1 < first || !CoverSquare(square, first, last)) continue;
-    rows = {std::min(rows.first, std::max(square.py0, first)), std::max(rows.second, std::min(square.py1, last))};
+void PointSplat::Bin() {
+  // a stable counting sort of copies of the squares by tile (a tile's squares keep their order),
+  // so that covering a tile reads its squares in a row rather than from all over squares_; a
+  // square reaching more tiles than one of kTileSize pixels can (2 x 2) is kept once, in big_, so
+  // that the copies stay within four a square however big the squares are
+  const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * tiles_y_;
+  tile_starts_.assign(tiles + 1, 0);
+  std::vector<char> reached(tiles, 0);
+  big_.clear();
+  const auto each_tile = [&](const Square& square, auto&& visit) {
+    for (int ty = square.py0 / kTileSize; ty <= square.py1 / kTileSize; ++ty) {
+      for (int tx = square.px0 / kTileSize; tx <= square.px1 / kTileSize; ++tx) visit(ty * tiles_x_ + tx);
+    }
+  };
+  const auto big = [](const Square& square) {
+    return square.px1 / kTileSize - square.px0 / kTileSize > 1 || square.py1 / kTileSize - square.py0 / kTileSize > 1;
+  };
+  for (const Square& square : squares_) {
+    if (big(square)) {
+      big_.push_back(square);
+      each_tile(square, [&](int tile) { reached[tile] = 1; });
+    } else {
+      each_tile(square, [&](int tile) { ++tile_starts_[tile + 1], reached[tile] = 1; });
+    }
+  }
+  for (std::size_t t = 1; t <= tiles; ++t) tile_starts_[t] += tile_starts_[t - 1];
+  binned_.resize(tile_starts_[tiles]);
+  std::vector<std::uint32_t> next(tile_starts_.begin(), tile_starts_.end() - 1);
+  for (const Square& square : squares_) {
+    if (!big(square)) each_tile(square, [&](int tile) { binned_[next[tile]++] = square; });
+  }
+  for (std::size_t t = 0; t < tiles; ++t) {
+    if (reached[t]) drawn_.push_back(static_cast<int>(t));
+  }
+}
+
+void PointSplat::CoverTile(int tile) {
+  std::uint32_t* const planes = planes_.data() + static_cast<std::size_t>(tile) * TileWords();
+  for (std::size_t s = 0; s < samples_.size(); ++s) {
+    std::fill_n(planes + 2 * s * kPlane, kPlane, std::bit_cast<std::uint32_t>(kEmpty));
+    std::fill_n(planes + (2 * s + 1) * kPlane, kPlane, 0u);
+  }
+  // the tile's own squares and the big ones that reach it, merged in the order they were added
+  const Tile rect = TileAt(tile);
+  const Square* small = binned_.data() + tile_starts_[tile];
+  const Square* const small_end = binned_.data() + tile_starts_[tile + 1];
+  const Square* big = big_.data();
+  const Square* const big_end = big + big_.size();
+  while (small < small_end || big < big_end) {
+    if (big == big_end || (small < small_end && small->order < big->order)) {
+      CoverSquare(*small++, rect, planes);
+    } else if (big->px1 < rect.x0 || big->px0 >= rect.x1 || big->py1 < rect.y0 || big->py0 >= rect.y1) {
+      ++big;
+    } else {
+      CoverSquare(*big++, rect, planes);
+    }
   }
 }
 
 void PointSplat::Cover() {
-  // a stable counting sort by first row keeps the order of squares that start on the same row
-  std::vector<std::size_t> starts(static_cast<std::size_t>(height_) + 1, 0);
-  for (const Square& square : squares_) ++starts[static_cast<std::size_t>(square.py0) + 1];
-  for (std::size_t row = 1; row < starts.size(); ++row) starts[row] += starts[row - 1];
-  sorted_.resize(squares_.size());
-  for (const Square& square : squares_) sorted_[starts[static_cast<std::size_t>(square.py0)]++] = square;
-  squares_.clear();
-  // two bands of rows, split where half the squares start: a texel is written by one thread only,
-  // in the squares' order, so the image is the same as from one thread. Few squares are not worth
-  // a thread.
-  const int middle = sorted_.size() >= kSquaresPerThread ? sorted_[sorted_.size() / 2].py0 : height_;
-  std::pair<int, int> upper{height_, -1};
+  Bin();
+  // the tiles taken in turn by this thread and, with many squares, a second one
+  std::atomic<std::size_t> next{0};
+  const auto work = [&] {
+    for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < drawn_.size();) CoverTile(drawn_[i]);
+  };
   std::optional<std::thread> helper;
-  if (middle < height_ && std::thread::hardware_concurrency() > 1) {
+  if (squares_.size() >= kSquaresPerThread && std::thread::hardware_concurrency() > 1) {
     try {
-      helper.emplace([&] { CoverBand(middle, height_ - 1, upper); });
+      helper.emplace(work);
     } catch (const std::system_error&) {
-      // no thread to be had: this one covers both bands
+      // no thread to be had: this one covers every tile
     }
   }
-  CoverBand(0, helper ? middle - 1 : height_ - 1, rows_);
+  work();
   if (helper) helper->join();
-  rows_ = {std::min(rows_.first, upper.first), std::max(rows_.second, upper.second)};
+  squares_.clear();
 }
 
 void PointSplat::Add(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
@@ -165,15 +276,18 @@ void PointSplat::Add(const scene::PointSet& points, const Eigen::Matrix4d& V, co
   const Eigen::Matrix4f MV = V.cast<float>(), Pf = P.cast<float>();
   const Eigen::Matrix4f MVP = Pf * MV;
   const float half_width = 0.5f * static_cast<float>(width_), half_height = 0.5f * static_cast<float>(height_);
-  // window x, y and depth of a clip-space position
+  // window x, y and depth of a clip-space position as Mesa's draw module maps it (draw_llvm.c's
+  // generate_viewport: times 1 / w, then the viewport's scale and translation), so that two points
+  // at nearly one depth tie or not as they do in GL
   const auto window = [&](const Eigen::Vector4f& clip) {
-    return Eigen::Vector3f((clip.x() / clip.w() + 1.f) * half_width, (clip.y() / clip.w() + 1.f) * half_height,
-                           0.5f * (clip.z() / clip.w() + 1.f));
+    const float iw = 1.f / clip.w();
+    return Eigen::Vector3f(clip.x() * iw * half_width + half_width, clip.y() * iw * half_height + half_height,
+                           clip.z() * iw * 0.5f + 0.5f);
   };
   const int shape = points.style == Style::kSquares ? 1 : points.style == Style::kSpheres ? 2 : 0;
   const float half = 0.5f * points.size.x();   // pixels for Points, metres for the squares
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector4f rgba = points.colours[i].unaryExpr(&Channel8);   // the 8-bit vertex colour
+    const std::uint32_t rgba8 = Pack(points.colours[i]);   // the 8-bit vertex colour
     const Eigen::Vector4f p(points.positions[i].x(), points.positions[i].y(), points.positions[i].z(), 1.f);
     if (points.style == Style::kPoints) {
       // a GL point: clipped by its centre, a square of point_size pixels (at least one)
@@ -181,7 +295,7 @@ void PointSplat::Add(const scene::PointSet& points, const Eigen::Matrix4d& V, co
       if (!(std::abs(clip.x()) <= clip.w() && std::abs(clip.y()) <= clip.w() && std::abs(clip.z()) <= clip.w())) continue;
       const Eigen::Vector3f w = window(clip);
       const float h = std::max(half, 0.5f);
-      Keep(w.x() - h, w.x() + h, w.y() - h, w.y() + h, w.z(), rgba, 0);
+      Keep(w.x() - h, w.x() + h, w.y() - h, w.y() + h, w.z(), rgba8, 0);
     } else {
       // a camera-facing square: corners moved from the centre in the image plane, clipped near/far
       const Eigen::Vector4f centre = MV * p;
@@ -189,7 +303,7 @@ void PointSplat::Add(const scene::PointSet& points, const Eigen::Matrix4d& V, co
       if (!(std::abs(clip.z()) <= clip.w())) continue;
       const Eigen::Vector3f low = window(Pf * (centre + Eigen::Vector4f(-half, -half, 0, 0)));
       const Eigen::Vector3f high = window(Pf * (centre + Eigen::Vector4f(half, half, 0, 0)));
-      Keep(low.x(), high.x(), low.y(), high.y(), window(clip).z(), rgba, shape);
+      Keep(low.x(), high.x(), low.y(), high.y(), window(clip).z(), rgba8, shape);
     }
   }
 }

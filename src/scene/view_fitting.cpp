@@ -7,16 +7,20 @@
 // E·b is the larger of the two axes' (the axis that binds); on the other axis the half-angle t' < t
 // that touches both sides from that depth is found by bisection (the touching depth falls as t'
 // grows) and centres it. Only hull corners can reach a maximum, so the vertices are reduced to
-// two small 2D hulls, (p·r, p·b) and (p·u, p·b), as the scenes arrive.
+// two small 2D hulls, (p·r, p·b) and (p·u, p·b), as the scenes arrive. A turntable's one scene
+// seen from many yaws is first reduced, once, to the points near its 3-D hull (HullCandidates).
 #include "scene/view_fitting.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
 #include "scene/convex_hull_2d.h"
+#include "scene/hull_candidates.h"
 
 namespace urdfsnap::scene {
 
@@ -144,6 +148,29 @@ double KeptFocalDistance(const AxisHull& across, const AxisHull& upward, const O
   return std::max(distance, view.near_clip * 2);
 }
 
+// The bytes of a mesh point as memcmp orders them (each float's first byte in memory, its least
+// significant, first): equal for equal bytes, a total order even with NaNs in a hostile mesh.
+std::array<std::uint32_t, 3> ByteOrder(const Eigen::Vector3f& p) {
+  return {__builtin_bswap32(std::bit_cast<std::uint32_t>(p.x())), __builtin_bswap32(std::bit_cast<std::uint32_t>(p.y())),
+          __builtin_bswap32(std::bit_cast<std::uint32_t>(p.z()))};
+}
+
+// Every vertex of every draw item in the fixed frame, a point of a mesh once per placement (equal
+// bit for bit), not once per triangle using it.
+std::vector<Eigen::Vector3d> PlacedOnce(const Scene& scene) {
+  std::vector<Eigen::Vector3d> points;
+  for (const auto& item : scene.items) {
+    std::vector<Eigen::Vector3f> local = item.mesh->positions;
+    std::sort(local.begin(), local.end(),
+              [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) { return ByteOrder(a) < ByteOrder(b); });
+    local.erase(std::unique(local.begin(), local.end(),
+                            [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) { return ByteOrder(a) == ByteOrder(b); }),
+                local.end());
+    for (const auto& p : local) points.push_back(item.X_FG * p.cast<double>());
+  }
+  return points;
+}
+
 }  // namespace
 
 OrbitView FitView(int count, const std::function<Scene(int)>& scene_of, OrbitView view, double aspect,
@@ -182,22 +209,14 @@ std::optional<Eigen::Vector3d> BoundsCentre(int count, const std::function<Scene
 
 double FitDistance(const Scene& scene, const OrbitView& view, const std::vector<double>& yaws, double aspect,
                    FitMargin margin) {
-  // each vertex placed once (the same point of a mesh once per placement), not once per yaw
-  std::vector<Eigen::Vector3d> points;
-  for (const auto& item : scene.items) {
-    // equal bit for bit: a total order even with NaNs in a hostile mesh
-    std::vector<Eigen::Vector3f> local = item.mesh->positions;
-    std::sort(local.begin(), local.end(), [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
-      return std::memcmp(a.data(), b.data(), sizeof(float) * 3) < 0;
-    });
-    local.erase(std::unique(local.begin(), local.end(),
-                            [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
-                              return std::memcmp(a.data(), b.data(), sizeof(float) * 3) == 0;
-                            }),
-                local.end());
-    for (const auto& p : local) points.push_back(item.X_FG * p.cast<double>());
-  }
+  std::vector<Eigen::Vector3d> points = PlacedOnce(scene);
   if (points.empty()) return 0;
+  // only the points that can be corners of some yaw's hulls, found once
+  const std::vector<bool> candidate = HullCandidates(points);
+  std::vector<Eigen::Vector3d> corners;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (candidate[i]) corners.push_back(points[i]);
+  }
   double fitted = 0;
   std::vector<Eigen::Vector2d> x, y;
   for (const double yaw : yaws) {
@@ -207,7 +226,7 @@ double FitDistance(const Scene& scene, const OrbitView& view, const std::vector<
     auto [right, up, back, across, upward] = StartFit(side, aspect, margin);
     x.clear();
     y.clear();
-    for (const auto& p : points) {
+    for (const auto& p : corners) {
       const double depth = p.dot(back);
       x.emplace_back(p.dot(right), depth);
       y.emplace_back(p.dot(up), depth);

@@ -86,7 +86,7 @@ TEST_F(PointSetTest, EachStyleMatchesItsGolden) {
   }
 }
 
-// Opaque camera-facing sets of PointSplat::kFewestPoints points or more are splatted on the CPU,
+// Opaque camera-facing sets that GL would draw for PointSplat::kFewestPoints squares or more are splatted on the CPU,
 // fewer drawn by GL: both draw the same pixels (to a level of rounding). The lattice alone goes through GL; with enough
 // points out of sight (behind the camera) added, through the splat.
 TEST_F(PointSetTest, SplatAndGlDrawTheSamePixels) {
@@ -94,8 +94,9 @@ TEST_F(PointSetTest, SplatAndGlDrawTheSamePixels) {
     SCOPED_TRACE(static_cast<int>(style));
     const PointSet lattice = Lattice(style, style == Style::kPoints ? 6.f : 0.12f);
     PointSet padded = lattice;
-    padded.positions.resize(PointSplat::kFewestPoints, Eigen::Vector3f(5, 0, 0));
-    padded.colours.resize(PointSplat::kFewestPoints, Eigen::Vector4f(1, 1, 1, 1));
+    padded.positions.resize(3 * PointSplat::kFewestPoints, Eigen::Vector3f(5, 0, 0));   // GlCost >= kFewestPoints
+    padded.colours.resize(padded.positions.size(), Eigen::Vector4f(1, 1, 1, 1));
+    ASSERT_GE(PointSplat::GlCost(padded), PointSplat::kFewestPoints);
     const image::Image by_gl = Draw(lattice, *renderer_), splatted = Draw(padded, *renderer_);
     // the outlined and shaded styles may round a channel one level apart: the splat evaluates
     // point.frag's arithmetic in C++, llvmpipe in its own order

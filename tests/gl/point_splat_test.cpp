@@ -1,7 +1,7 @@
 // The CPU splat of opaque camera-facing points (gl/internal/point_splat.h), without GL: which
-// samples a point's square covers, the nearest point winning, the rows it reports, the shapes of
-// shaders/point.frag, two bands of rows on two threads, and points behind the camera, off screen
-// or not finite left out.
+// samples a point's square covers, the nearest point winning, the tiles it reports, the shapes of
+// shaders/point.frag, tiles on two threads, a square across tiles, a frame's tiles emptied for the
+// next, and points behind the camera, off screen or not finite left out.
 #include "gl/internal/point_splat.h"
 
 #include <limits>
@@ -46,11 +46,8 @@ class PointSplatTest : public ::testing::Test {
     splat.Add(points, Eigen::Matrix4d::Identity(), Orthographic());
     splat.Cover();
   }
-  std::size_t At(int x, int y, int sample) const {
-    return (static_cast<std::size_t>(y) * kWidth + x) * splat.samples() + sample;
-  }
-  std::uint32_t Colour(int x, int y, int sample = 0) const { return splat.texels()[At(x, y, sample)].colour; }
-  float Depth(int x, int y, int sample = 0) const { return splat.texels()[At(x, y, sample)].depth; }
+  std::uint32_t Colour(int x, int y, int sample = 0) const { return splat.At(x, y, sample).colour; }
+  float Depth(int x, int y, int sample = 0) const { return splat.At(x, y, sample).depth; }
   PointSplat splat;
 };
 
@@ -65,7 +62,7 @@ TEST_F(PointSplatTest, APointOfThreePixelsCoversThreeByThreePixelCentres) {
   EXPECT_EQ(Colour(10, 5), Rgba(255, 0, 0));
   EXPECT_EQ(Depth(11, 5), PointSplat::kEmpty);   // its centre 11.5 is on the excluded edge
   EXPECT_FLOAT_EQ(Depth(10, 5), 0.5f);
-  EXPECT_EQ(splat.rows(), std::make_pair(3, 5));
+  EXPECT_EQ(splat.drawn(), std::vector<int>{0});   // the one tile of the image
 }
 
 TEST_F(PointSplatTest, EachSampleIsCoveredByItsOwnPosition) {
@@ -100,9 +97,10 @@ TEST_F(PointSplatTest, SquaresAreOutlinedAndSpheresShadedAsPointFragDoes) {
   EXPECT_EQ(Depth(8, 3), PointSplat::kEmpty);
 }
 
-TEST_F(PointSplatTest, ManyPointsAreCoveredInTwoBandsWithTheSameResult) {
-  // 2 x 5,000 one-pixel points over a 100 x 50 image, the far red ones after the near blue ones in
-  // one half and before them in the other: enough for a second thread; every pixel is blue
+TEST_F(PointSplatTest, ManyPointsAreCoveredTileByTileOnTwoThreadsWithTheSameResult) {
+  // 2 x 5,000 one-pixel points over a 100 x 50 image (4 x 2 tiles), the far red ones after the
+  // near blue ones in one half and before them in the other: enough for a second thread; every
+  // pixel is blue
   constexpr int kW = 100, kH = 50;
   Eigen::Matrix4d P = Orthographic();
   P(0, 0) = 2.0 / kW, P(1, 1) = 2.0 / kH;
@@ -118,9 +116,70 @@ TEST_F(PointSplatTest, ManyPointsAreCoveredInTwoBandsWithTheSameResult) {
   splat.Add(points, Eigen::Matrix4d::Identity(), P);
   splat.Cover();
   int blue = 0;
-  for (const PointSplat::Texel& texel : splat.texels()) blue += texel.colour == Rgba(0, 0, 255);
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) blue += splat.At(x, y, 0).colour == Rgba(0, 0, 255);
+  }
   EXPECT_EQ(blue, kW * kH);
-  EXPECT_EQ(splat.rows(), std::make_pair(0, kH - 1));
+  EXPECT_EQ(splat.drawn(), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+  const PointSplat::Tile last = splat.TileAt(7);   // the corner tile ends at the image's edges
+  EXPECT_EQ(std::vector<int>({last.x0, last.y0, last.x1, last.y1}), std::vector<int>({96, 32, kW, kH}));
+}
+
+TEST_F(PointSplatTest, ASquareAcrossTilesIsCoveredInEachAndTheNextFrameStartsEmpty) {
+  // a 6 m flat square at the middle of a 64 x 64 image (window [29, 35) each way): pixels 29..34,
+  // in all four tiles of 32 x 32
+  constexpr int kSide = 64;
+  Eigen::Matrix4d P = Orthographic();
+  P(0, 0) = P(1, 1) = 2.0 / kSide;
+  splat.Clear(kSide, kSide, {{0.5f, 0.5f}});
+  splat.Add(Points(Style::kFlatSquares, 6, {{0, 0, 0}}), Eigen::Matrix4d::Identity(), P);
+  splat.Cover();
+  EXPECT_EQ(splat.drawn(), (std::vector<int>{0, 1, 2, 3}));
+  int covered = 0;
+  for (int y = 0; y < kSide; ++y) {
+    for (int x = 0; x < kSide; ++x) covered += splat.At(x, y, 0).depth != PointSplat::kEmpty;
+  }
+  EXPECT_EQ(covered, 36);
+  EXPECT_EQ(splat.At(31, 31, 0).colour, Rgba(255, 0, 0));
+  EXPECT_EQ(splat.At(32, 32, 0).colour, Rgba(255, 0, 0));
+  // the next frame: a one-pixel point at window (10, 10), [9.5, 10.5): pixel 9 in the first tile
+  // only; the square's samples there are gone, and the other tiles are not drawn
+  splat.Clear(kSide, kSide, {{0.5f, 0.5f}});
+  splat.Add(Points(Style::kPoints, 1, {{-22.f, -22.f, 0.f}}), Eigen::Matrix4d::Identity(), P);
+  splat.Cover();
+  EXPECT_EQ(splat.drawn(), std::vector<int>{0});
+  EXPECT_EQ(splat.At(31, 31, 0).depth, PointSplat::kEmpty);
+  EXPECT_EQ(splat.At(32, 32, 0).depth, PointSplat::kEmpty);
+  EXPECT_NE(splat.At(9, 9, 0).depth, PointSplat::kEmpty);
+}
+
+TEST_F(PointSplatTest, SquaresOverManyTilesTieWithSmallOnesInTheOrderAdded) {
+  // on a 96 x 96 image (3 x 3 tiles), at one depth: a one-pixel red point, a 60 m green square
+  // [18, 78) over all nine tiles (kept aside as a big one), a one-pixel blue point; the later wins
+  // each tie (GL_LEQUAL), as GL draws them
+  constexpr int kSide = 96;
+  Eigen::Matrix4d P = Orthographic();
+  P(0, 0) = P(1, 1) = 2.0 / kSide;
+  splat.Clear(kSide, kSide, {{0.5f, 0.5f}});
+  splat.Add(Points(Style::kPoints, 1, {{-28.f, -28.f, 0.f}}, {1, 0, 0, 1}), Eigen::Matrix4d::Identity(), P);
+  splat.Add(Points(Style::kFlatSquares, 60, {{0, 0, 0}}, {0, 1, 0, 1}), Eigen::Matrix4d::Identity(), P);
+  splat.Add(Points(Style::kPoints, 1, {{28.f, 28.f, 0.f}}, {0, 0, 1, 1}), Eigen::Matrix4d::Identity(), P);
+  splat.Cover();
+  EXPECT_EQ(splat.drawn().size(), 9u);
+  EXPECT_EQ(splat.At(19, 19, 0).colour, Rgba(0, 255, 0));   // red, then green over it
+  EXPECT_EQ(splat.At(75, 75, 0).colour, Rgba(0, 0, 255));   // green, then blue
+  EXPECT_EQ(splat.At(60, 30, 0).colour, Rgba(0, 255, 0));
+  EXPECT_EQ(splat.At(90, 90, 0).depth, PointSplat::kEmpty);   // outside the square
+}
+
+TEST_F(PointSplatTest, ManyPointsOnOnePixelAtOneDepthLeaveTheLastOne) {
+  // enough points for two threads: all red at one spot and depth but the last, blue; on a tie the
+  // later wins, whichever thread covers the tile
+  const std::vector<Eigen::Vector3f> origin(2 * PointSplat::kSquaresPerThread, Eigen::Vector3f::Zero());
+  PointSet points = Points(Style::kPoints, 1, origin);
+  points.colours.back() = {0, 0, 1, 1};
+  Splat(points);
+  EXPECT_EQ(Colour(9, 4), Rgba(0, 0, 255));
 }
 
 TEST_F(PointSplatTest, PointsOutsideTheViewOrNotFiniteAreLeftOutAndHugeOnesHeldToTheView) {
@@ -129,8 +188,8 @@ TEST_F(PointSplatTest, PointsOutsideTheViewOrNotFiniteAreLeftOutAndHugeOnesHeldT
   EXPECT_TRUE(splat.empty());
   // a square far bigger than the view covers all of it
   Splat(Points(Style::kFlatSquares, 1e12f, {{0, 0, 0}, {nan, 0, 0}}));
-  EXPECT_EQ(splat.rows(), std::make_pair(0, kHeight - 1));
   EXPECT_EQ(Colour(0, 0), Rgba(255, 0, 0));
+  EXPECT_EQ(Colour(kWidth - 1, kHeight - 1), Rgba(255, 0, 0));
 }
 
 }  // namespace

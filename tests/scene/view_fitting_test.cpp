@@ -3,29 +3,41 @@
 // visited once (unit, no GL).
 #include "scene/view_fitting.h"
 
+#include <cmath>
 #include <memory>
+#include <random>
 
 #include <gtest/gtest.h>
 
 namespace urdfsnap::scene {
 namespace {
 
-// A scene of one unit cube's corners placed at `X_FG`.
-Scene CubeAt(const Eigen::Affine3d& X_FG) {
-  static const auto cube = [] {
-    auto mesh = std::make_shared<geometry::TriangleMesh>();
-    for (int i = 0; i < 8; ++i) {
-      mesh->positions.emplace_back(i & 1 ? 0.5f : -0.5f, i & 2 ? 0.5f : -0.5f, i & 4 ? 0.5f : -0.5f);
-      mesh->normals.emplace_back(0, 0, 1);
-    }
-    return std::shared_ptr<const geometry::TriangleMesh>(mesh);
-  }();
+// A scene of `mesh` placed at `X_FG`.
+Scene MeshAt(std::shared_ptr<const geometry::TriangleMesh> mesh, const Eigen::Affine3d& X_FG) {
   Scene scene;
   DrawItem item;
-  item.mesh = cube;
+  item.mesh = std::move(mesh);
   item.X_FG = X_FG;
   scene.items.push_back(item);
   return scene;
+}
+
+// A scene of one mesh of `points` (no triangles needed: the fit reads positions) placed at `X_FG`.
+Scene PointsAt(const std::vector<Eigen::Vector3f>& points, const Eigen::Affine3d& X_FG) {
+  auto mesh = std::make_shared<geometry::TriangleMesh>();
+  mesh->positions = points;
+  mesh->normals.assign(points.size(), Eigen::Vector3f(0, 0, 1));
+  return MeshAt(mesh, X_FG);
+}
+
+// A scene of one unit cube's corners placed at `X_FG`.
+Scene CubeAt(const Eigen::Affine3d& X_FG) {
+  static const auto cube = [] {
+    std::vector<Eigen::Vector3f> corners;
+    for (int i = 0; i < 8; ++i) corners.emplace_back(i & 1 ? 0.5f : -0.5f, i & 2 ? 0.5f : -0.5f, i & 4 ? 0.5f : -0.5f);
+    return PointsAt(corners, Eigen::Affine3d::Identity()).items[0].mesh;
+  }();
+  return MeshAt(cube, X_FG);
 }
 
 Eigen::Affine3d Moved(double x, double y, double z) { return Eigen::Affine3d(Eigen::Translation3d(x, y, z)); }
@@ -161,6 +173,64 @@ TEST(FitDistance, IsTheLargestFitOverTheYaws) {
   EXPECT_EQ(FitDistance(scene, view, yaws, 4.0 / 3), largest);
   EXPECT_GT(largest, FitView(scene, view, 4.0 / 3, true).distance);   // some yaw needs more room
   EXPECT_EQ(FitDistance(Scene{}, view, yaws, 4.0 / 3), 0);
+}
+
+
+// A turntable's distance with its points reduced to those near the 3-D hull is the brute force's
+// (FitView at each yaw over every vertex) bit for bit: random clouds, dense grids on boxes
+// (coplanar and collinear points, edge-on at yaw 0), cylinders' rings, several placed meshes, at
+// several pitches and margins.
+TEST(FitDistance, IsTheBruteForceFitOnRandomAndDegenerateSets) {
+  std::mt19937 random(21);
+  std::uniform_real_distribution<float> unit(-1, 1);
+  std::uniform_real_distribution<double> angle(-3, 3);
+  const auto cloud = [&](int n) {
+    std::vector<Eigen::Vector3f> points;
+    for (int i = 0; i < n; ++i) points.emplace_back(unit(random), unit(random), unit(random));
+    return points;
+  };
+  std::vector<Eigen::Vector3f> grid;   // a box's surface and inside, on a grid of 0.25
+  for (int i = 0; i <= 8; ++i) {
+    for (int j = 0; j <= 8; ++j) {
+      for (int k = 0; k <= 4; ++k) grid.emplace_back(0.25f * i - 1, 0.25f * j - 1, 0.25f * k);
+    }
+  }
+  std::vector<Eigen::Vector3f> cylinder;   // rings of 32 at 5 heights, and the axis
+  for (int h = 0; h < 5; ++h) {
+    for (int i = 0; i < 32; ++i) {
+      const float a = static_cast<float>(i * 2 * M_PI / 32);
+      cylinder.emplace_back(0.3f * std::cos(a), 0.3f * std::sin(a), 0.5f * h);
+    }
+    cylinder.emplace_back(0, 0, 0.5f * h);
+  }
+  std::vector<Scene> scenes = {PointsAt(cloud(400), Moved(0, 0, 0)), PointsAt(grid, Moved(0, 0, 0)),
+                               PointsAt(grid, Moved(0.1, 0.2, 0.3) * Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ())),
+                               Joined(PointsAt(cylinder, Moved(0, 0, 0)), PointsAt(cylinder, Moved(0.5, 0.2, 1)))};
+  Scene arm;   // several clouds placed along a bent arm, far from the origin
+  for (int link = 0; link < 6; ++link) {
+    arm = Joined(arm, PointsAt(cloud(150), Moved(100 + 0.3 * link, -50, 0.4 * link) *
+                                               Eigen::AngleAxisd(angle(random), Eigen::Vector3d::UnitX()) *
+                                               Eigen::Scaling(0.1, 0.1, 0.3)));
+  }
+  scenes.push_back(arm);
+  for (size_t s = 0; s < scenes.size(); ++s) {
+    for (const double pitch : {0.0, 0.785398, -0.4}) {
+      OrbitView view;
+      view.pitch = pitch;
+      view.focal = *BoundsCentre(1, [&](int) { return scenes[s]; });
+      std::vector<double> yaws;
+      for (int k = 0; k < 24; ++k) yaws.push_back(k * 2 * M_PI / 24);
+      for (const FitMargin margin : {FitMargin{}, FitMargin{0.1, 0.2}}) {
+        double brute = 0;
+        for (const double yaw : yaws) {
+          OrbitView side = view;
+          side.yaw = yaw;
+          brute = std::max(brute, FitView(scenes[s], side, 4.0 / 3, true, margin).distance);
+        }
+        EXPECT_EQ(FitDistance(scenes[s], view, yaws, 4.0 / 3, margin), brute) << "scene " << s << " pitch " << pitch;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 // Squares and Spheres as camera-facing squares, Boxes as shaded boxes along the set's axes. The points
 // are streamed in batches, one vertex per point: an instance of a square's 4 or a box's 24 corners
 // (gl_VertexID in the shaders), so the GPU memory stays bounded however many points a set holds. Opaque camera-facing sets are
-// splatted on the CPU instead (point_splat.h) and composited by one draw, when a frame has enough
+// splatted on the CPU instead (point_splat.h) and composited by one draw over the tiles it reached, when a frame has enough
 // of their points to make that cheaper (PointSplat::kFewestPoints). Internal to the render
 // library; needs a current GL context.
 #pragma once
@@ -30,7 +30,7 @@ class PointSetDrawing {
   void Draw(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P);
   // Draws the opaque `sets` into the bound framebuffer (depth-tested, writing depth, not blending):
   // the camera-facing ones splatted together and composited once (when they have at least
-  // PointSplat::kFewestPoints points), Boxes and fewer points through Draw.
+  // PointSplat::kFewestPoints squares' worth, PointSplat::GlCost), Boxes and fewer points through Draw.
   void DrawOpaque(const std::vector<const scene::PointSet*>& sets, const Eigen::Matrix4d& V,
                   const Eigen::Matrix4d& P);
 
@@ -45,7 +45,8 @@ class PointSetDrawing {
   std::vector<unsigned char> staging_;
   ShaderProgram splat_program_;
   PointSplat splat_;
-  unsigned splat_array_ = 0;                    // empty: the full-screen triangle has no attributes
+  unsigned splat_array_ = 0;                    // the composite's corners
+  unsigned splat_corners_ = 0;                  // their buffer: clip-space x, y
   unsigned splat_texture_ = 0;                  // PointSplat's texels
   int texture_size_[2] = {0, 0};                // their width and height in texels
 };

@@ -2,12 +2,12 @@
 // into a per-sample colour and depth image, which PointSetDrawing composites into the frame with
 // one draw per sample writing gl_FragDepth (so the robot still hides points behind it and points
 // hide the robot). llvmpipe spends ~0.6 us of rasteriser time per point primitive: 100k points
-// cost 75-95 ms of CPU a frame through GL and ~25 this way (docs/point-clouds.md). Each sample is
+// cost 75-95 ms of CPU a frame through GL and ~21 this way (docs/point-clouds.md). Each sample is
 // covered exactly as llvmpipe covers it (sample inside the square; the square's colour and shape
 // evaluated at the pixel centre, as a multisampled fragment shader runs once per pixel), so the
-// picture is the GL one. The squares are sorted by row before they are covered, so the image is
-// walked row by row rather than at random (a Points frame went from ~35 to ~29 ms of CPU). No GL
-// here.
+// picture is the GL one but where two points' depths tie or nearly tie. The image is covered
+// tile by tile, each tile's samples in the L1 cache, rather than point by point over the whole
+// image. No GL here.
 #pragma once
 
 #include <cstddef>
@@ -25,63 +25,92 @@ class PointSplat {
  public:
   // Whether an opaque set of `points` can be splatted: a camera-facing style (not Boxes).
   static bool Splattable(const scene::PointSet& points) { return points.style != scene::PointSet::Style::kBoxes; }
-  // Fewer opaque camera-facing points in a frame than this are drawn by GL: the splat's cost per
-  // frame whatever it holds (clearing its image, uploading and compositing it per sample: ~4 ms of
-  // CPU at 640x480 with 4x multisampling) is more than GL's ~0.6 us a point below some 5,000 points
-  // (points bench, paired: 2,000 Points 11.1 ms splatted, 7.1 by GL; 20,000 14.2 and 20.8).
-  // A marker's points and sphere lists are usually few.
+  // A frame's opaque camera-facing points whose GlCost is below this are drawn by GL: the splat's
+  // cost whatever it holds (emptying, uploading and compositing per sample the tiles the points
+  // reach: ~8 ms of CPU for a cloud around mrm at 640x480 with 4x multisampling) is more than
+  // GL's ~1.2 us a square below some 5,000 squares. A marker's points and sphere lists are usually
+  // few.
   static constexpr std::size_t kFewestPoints = 4096;
+  // What GL would spend on drawing `points`, in camera-facing squares: a GL point (Points) costs
+  // llvmpipe about a third of a square's two triangles (points bench, CPU ms per frame with mrm,
+  // paired: Points by GL 8.0 / 13.4 / 15.5 at 8,000 / 12,000 / 16,000 points, splatted 13.0 /
+  // 14.1 / 14.5; Flat Squares at 8,000 by GL 14.1, splatted 13.3).
+  static std::size_t GlCost(const scene::PointSet& points) {
+    return points.style == scene::PointSet::Style::kPoints ? points.positions.size() / 3 : points.positions.size();
+  }
 
-  // Empties the image for `width` x `height` pixels, each with the given sample positions (pixel
+  // Starts a frame of `width` x `height` pixels, each with the given sample positions (pixel
   // units within a pixel, GL window coordinates: y up; {0.5, 0.5} without multisampling).
   void Clear(int width, int height, const std::vector<Eigen::Vector2f>& samples);
   // Adds the squares of `points` seen through view `V` and projection `P`.
   void Add(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P);
   // Covers the samples of every square added since Clear: the nearest wins, on a tie the later
-  // (GL_LEQUAL). With many squares the rows are split in two bands, one covered by another thread.
+  // (GL_LEQUAL). The image is cut into tiles of kTileSize x kTileSize pixels whose samples fit in
+  // a core's L1 cache; each tile reached by a square is emptied and covered with its squares in
+  // the order they were added, and with many squares the two threads take tiles in turn (a tile
+  // is written by one thread only, so the image is the same as from one thread).
   void Cover();
+  static constexpr int kTileSize = 32;   // a power of two (the composite shader shifts by it)
   static constexpr std::size_t kSquaresPerThread = 4096;   // fewer squares: one thread
 
-  bool empty() const { return rows_.first > rows_.second; }
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return static_cast<int>(samples_.size()); }
   // One sample: its depth in [0, 1] as GL's depth range maps it (kEmpty where nothing is) and its
-  // colour, rgba8 in memory order, side by side so that a depth test and its write share a line.
+  // colour, rgba8 in memory order.
   struct Texel {
     float depth;
     std::uint32_t colour;
   };
-  // The image: rows bottom first (GL's order), each pixel's samples side by side (sample s of pixel
-  // (x, y) at (y * width + x) * samples + s).
-  const std::vector<Texel>& texels() const { return texels_; }
   static constexpr float kEmpty = 2.f;
-  // The rows [first, second] that hold anything (first > second when empty).
-  std::pair<int, int> rows() const { return rows_; }
+  // A tile's pixels [x0, x1) x [y0, y1) (the last column and row of tiles end at the image's edge).
+  struct Tile {
+    int x0, y0, x1, y1;
+  };
+  // The tiles that squares reached (whose pixels may hold a covered sample), in the image's order
+  // (rows of tiles bottom first); the rest of the image is empty.
+  const std::vector<int>& drawn() const { return drawn_; }
+  bool empty() const { return drawn_.empty(); }
+  Tile TileAt(int tile) const;
+  // A drawn tile's samples as planes of kTileSize rows (bottom first) of kTileSize pixels (those
+  // past the image's edge unused): for each sample in turn its depths' float bits, then its
+  // colours. A row of one sample's depths or colours is contiguous, four columns one vector.
+  const std::uint32_t* TileWords(int tile) const { return planes_.data() + static_cast<std::size_t>(tile) * TileWords(); }
+  std::size_t TileWords() const { return 2 * kPlane * samples_.size(); }
+  static constexpr std::size_t kPlane = static_cast<std::size_t>(kTileSize) * kTileSize;
+  // Sample s of pixel (x, y) (kEmpty outside the tiles drawn).
+  Texel At(int x, int y, int s) const;
 
  private:
-  // A point's square in window coordinates, [x0, x1) x [y0, y1) at `depth`; shape 0 flat, 1
-  // outlined, 2 shaded disc (shaders/point.frag); its rows and columns of pixels that may hold a
-  // covered sample.
+  // A point's square in window coordinates, [x0, x1) x [y0, y1) at `depth`; its 8-bit rgba; shape
+  // 0 flat, 1 outlined, 2 shaded disc (shaders/point.frag); its columns and rows of pixels that
+  // may hold a covered sample; its place in the order squares were added.
   struct Square {
     float x0, x1, y0, y1, depth;
-    Eigen::Vector4f rgba;
+    std::uint32_t rgba8;
     int shape;
     int px0, px1, py0, py1;
+    std::uint32_t order;
   };
   // Keeps the square, snapped as llvmpipe snaps, unless it covers no pixel.
-  void Keep(float x0, float x1, float y0, float y1, float depth, const Eigen::Vector4f& rgba, int shape);
-  // Covers the samples of `square` in rows [first, last]; whether it covered any.
-  bool CoverSquare(const Square& square, int first, int last);
-  // Covers the rows [first, last] with every sorted square that reaches them, widening `rows` to
-  // the rows drawn.
-  void CoverBand(int first, int last, std::pair<int, int>& rows);
-  int width_ = 0, height_ = 0;
-  std::vector<Square> squares_, sorted_;
+  void Keep(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape);
+  // Sorts copies of the squares by the tiles they reach, in the order they were added (big ones
+  // aside), and lists the tiles reached.
+  void Bin();
+  // Empties tile `tile` and covers it with its squares.
+  void CoverTile(int tile);
+  // Covers the samples of `square` within `tile`, whose planes start at `planes`.
+  void CoverSquare(const Square& square, const Tile& tile, std::uint32_t* planes) const;
+  int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0;
+  // as added; by tile, tile t's in binned_[tile_starts_[t]..[t + 1]); those reaching more than 2 x 2
+  // tiles, as added
+  std::vector<Square> squares_, binned_, big_;
+  std::vector<std::uint32_t> tile_starts_;
   std::vector<Eigen::Vector2f> samples_;
   Eigen::Vector2f sample_min_, sample_max_;   // their extent within a pixel
-  std::vector<Texel> texels_;
-  std::pair<int, int> rows_{0, -1};
+  std::vector<float> sample_x_, sample_y_;    // their x and y, as many as a multiple of four
+  std::vector<std::uint32_t> planes_;         // tile by tile (TileWords)
+  std::vector<int> drawn_;
 };
 
 }  // namespace urdfsnap::gl
