@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Throughput of `urdfsnap dataset` at 640x480 (colour, depth, labels, COCO annotations; one process,
-# rendering overlapping encoding on two threads), for mrm and, when its folder is given, Franka's
-# Panda (COLLADA meshes); and the cost of one frame through a camera against the orbit view
-# (`render` of the same robot, same size, both with depth and labels). Wall time follows the load
+# Throughput of `urdfsnap dataset` at 640x480 (colour, depth, labels, COCO annotations; one process:
+# drawing, llvmpipe's rasteriser and the writer on their own threads), for mrm and, when its folder
+# is given, Franka's Panda (COLLADA meshes); and the cost of one frame through a camera (the
+# calibration tests/data/camera/ost.yaml and a pose; rectified, and with --distort) against the
+# orbit view (`render` of the same robot, same size, all with depth and labels). Wall time follows the load
 # of a shared machine (printed first); CPU ms per sample (all threads) is the load-independent
 # figure, and 2000 / that is what two idle cores would reach if both stay busy.
 # usage: bench/dataset/dataset_bench.sh URDFSNAP [SAMPLES] [FRANKA_DESCRIPTION_DIR]
@@ -38,13 +39,17 @@ fi
 mrm=$root/models/mrm_description/urdf/mrm.urdf
 orbit=(render "$mrm" -o "$work/o.png" --depth "$work/od.png" --labels "$work/ol.png")
 camera=(render "$mrm" -o "$work/c.png" --depth "$work/cd.png" --labels "$work/cl.png"
-  --camera-pose 4.5,-6,5,-0.8,-0.3,0.1,0.5)
-total_orbit=0 total_camera=0
+  --camera-info "$root/tests/data/camera/ost.yaml" --camera-pose 4.5,-6,5,-0.8,-0.3,0.1,0.5)
+total_orbit=0 total_camera=0 total_distort=0
+# add_cpu TOTAL: TOTAL plus the user and system seconds in $work/t
+add_cpu() { awk -v t="$1" '{print t + $1 + $2}' "$work/t"; }
 for i in $(seq 20); do
   /usr/bin/time -f '%U %S' -o "$work/t" "$snap" "${orbit[@]}"
-  total_orbit=$(awk -v t="$total_orbit" '{print t + $1 + $2}' "$work/t")
+  total_orbit=$(add_cpu "$total_orbit")
   /usr/bin/time -f '%U %S' -o "$work/t" "$snap" "${camera[@]}"
-  total_camera=$(awk -v t="$total_camera" '{print t + $1 + $2}' "$work/t")
+  total_camera=$(add_cpu "$total_camera")
+  /usr/bin/time -f '%U %S' -o "$work/t" "$snap" "${camera[@]}" --distort
+  total_distort=$(add_cpu "$total_distort")
 done
-awk -v o="$total_orbit" -v c="$total_camera" 'BEGIN {
-  printf "render mrm 640x480 with depth and labels, CPU ms per process (20 interleaved runs): orbit %.1f, camera %.1f\n", 50 * o, 50 * c }'
+awk -v o="$total_orbit" -v c="$total_camera" -v d="$total_distort" 'BEGIN {
+  printf "render mrm 640x480 with depth and labels, CPU ms per process (20 interleaved runs): orbit %.1f, camera %.1f, camera --distort %.1f\n", 50 * o, 50 * c, 50 * d }'

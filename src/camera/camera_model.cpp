@@ -43,7 +43,9 @@ Eigen::Matrix4d CameraModel::GlProjection() const {
 }
 
 image::Frame CameraModel::Finish(image::Frame drawn) const {
-  return remap_ ? remap_->Apply(drawn) : drawn;
+  // returned by name, so moved: the conditional operator copied all three images of every frame
+  if (!remap_) return drawn;
+  return remap_->Apply(drawn);
 }
 
 Eigen::Matrix4d GlViewMatrix(const Eigen::Isometry3d& X_WC) {

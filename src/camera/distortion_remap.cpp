@@ -23,6 +23,11 @@ void CheckSize(int width, int height, const PinholeImage& expected, const char* 
   }
 }
 
+// std::lround of a blend of bytes (0 to 255, never below −0.5), inline: the float is exact in a
+// double, so adding a half and truncating rounds halves up as lround does. lround's library call
+// per channel was 9 % of a --distort dataset's CPU, and Apply 13 % more around it.
+std::uint8_t RoundedByte(float value) { return static_cast<std::uint8_t>(static_cast<int>(static_cast<double>(value) + 0.5)); }
+
 }  // namespace
 
 DistortionRemap::DistortionRemap(const PinholeImage& raw, const Distortion& d) : raw_(raw) {
@@ -85,7 +90,7 @@ image::Frame DistortionRemap::Apply(const image::Frame& source) const {
       for (int c = 0; c < 3; ++c) {
         const float top = a[c] + s.fx * (a[c + 3] - a[c]);
         const float bottom = a[row + c] + s.fx * (a[row + c + 3] - a[row + c]);
-        raw.colour.rgb[i * 3 + c] = static_cast<std::uint8_t>(std::lround(top + s.fy * (bottom - top)));
+        raw.colour.rgb[i * 3 + c] = RoundedByte(top + s.fy * (bottom - top));
       }
     }
   }

@@ -1,9 +1,9 @@
-// LabelRegions: one column-major pass over the label image keeps, per label, its bounding box,
-// area and the run lengths of its mask, so all links cost one scan.
+// LabelRegions: one column-major pass over the label image, a run of equal labels down a column
+// at a time, keeps per label (in a table indexed by the label) its bounding box, area and the run
+// lengths of its mask, so all links cost one scan and a run costs what one pixel did.
 #include "dataset/coco_regions.h"
 
 #include <algorithm>
-#include <map>
 
 namespace urdfsnap::dataset {
 
@@ -16,16 +16,23 @@ struct Runs {
   int x1 = -1, y1 = -1;           // bottom-right pixel so far
 };
 
-void Add(Runs& r, int x, int y) {
+// rows [y, end) of column x belong to r's mask
+void Add(Runs& r, int x, int y, int end) {
   if (r.region.area == 0) {
     r.region.x = x;
     r.region.y = y;
   }
-  ++r.region.area;
+  r.region.area += end - y;
   r.region.x = std::min(r.region.x, x);
   r.region.y = std::min(r.region.y, y);
   r.x1 = std::max(r.x1, x);
-  r.y1 = std::max(r.y1, y);
+  r.y1 = std::max(r.y1, end - 1);
+}
+
+// a run of `r`'s ones or zeros ends before column-major pixel p
+void EndRun(Runs& r, std::int64_t p) {
+  r.counts.push_back(p - r.last_change);
+  r.last_change = p;
 }
 
 // the last run (of ones or zeros) ends with the image, as pycocotools' rleEncode counts it
@@ -58,36 +65,37 @@ std::string CompressRle(const std::vector<std::int64_t>& counts) {
 
 std::vector<Region> LabelRegions(const image::LabelImage& labels) {
   const int w = labels.width, h = labels.height;
-  std::map<int, Runs> runs;      // by label
+  std::vector<Runs> runs;        // by label; area 0 for a label not (yet) seen
   Runs robot;                    // every non-zero pixel
   int previous = 0;              // the label of the pixel before, column-major
-  std::int64_t p = 0;
   for (int x = 0; x < w; ++x) {
-    for (int y = 0; y < h; ++y, ++p) {
-      const int label = labels.labels[static_cast<size_t>(y) * w + x];
+    const std::uint16_t* column = labels.labels.data() + x;
+    for (int y = 0; y < h;) {
+      const int label = column[static_cast<size_t>(y) * w];
+      int end = y + 1;
+      while (end < h && column[static_cast<size_t>(end) * w] == label) ++end;
       if (label != previous) {
         // the previous label's run of ones ends here, this label's run of zeros does
-        for (const int changed : {previous, label}) {
-          if (changed == 0) continue;
-          Runs& r = runs[changed];
-          r.counts.push_back(p - r.last_change);
-          r.last_change = p;
-        }
-        if ((previous == 0) != (label == 0)) {
-          robot.counts.push_back(p - robot.last_change);
-          robot.last_change = p;
-        }
+        const std::int64_t p = static_cast<std::int64_t>(x) * h + y;
+        if (label >= static_cast<int>(runs.size())) runs.resize(static_cast<size_t>(label) + 1);
+        if (previous != 0) EndRun(runs[previous], p);
+        if (label != 0) EndRun(runs[label], p);
+        if ((previous == 0) != (label == 0)) EndRun(robot, p);
         previous = label;
       }
-      if (label == 0) continue;
-      Add(runs[label], x, y);
-      Add(robot, x, y);
+      if (label != 0) {
+        Add(runs[label], x, y, end);
+        Add(robot, x, y, end);
+      }
+      y = end;
     }
   }
   std::vector<Region> regions;
-  const std::int64_t total = p;
-  for (auto& [label, r] : runs) {
-    r.region.label = label;
+  const std::int64_t total = static_cast<std::int64_t>(w) * h;
+  for (size_t label = 1; label < runs.size(); ++label) {
+    Runs& r = runs[label];
+    if (r.region.area == 0) continue;
+    r.region.label = static_cast<int>(label);
     regions.push_back(Finish(r, total));
   }
   if (robot.region.area > 0) regions.push_back(Finish(robot, total));
