@@ -17,6 +17,7 @@
 #include "gl/internal/mesh_batches.h"
 #include "gl/internal/point_set_drawing.h"
 #include "gl/internal/shader_program.h"
+#include "gl/internal/streamed_drawing.h"
 
 namespace urdfsnap::gl {
 
@@ -67,42 +68,6 @@ class GpuCache {
   size_t purge_at_ = 64;
 };
 
-// Appends one vertex of the line shader: position, then rgba.
-void AppendVertex(const Eigen::Vector3f& p, const Eigen::Vector4f& rgba, std::vector<float>& floats) {
-  floats.insert(floats.end(), p.data(), p.data() + 3);
-  floats.insert(floats.end(), rgba.data(), rgba.data() + 4);
-}
-
-Eigen::Vector4f PointColour(const scene::LineSet& lines, size_t i) {
-  return i < lines.colours.size() ? lines.colours[i] : lines.rgba;
-}
-
-std::vector<float> LineVertices(const scene::LineSet& lines) {
-  std::vector<float> floats;
-  floats.reserve(lines.points.size() * 7);
-  for (size_t i = 0; i < lines.points.size(); ++i) AppendVertex(lines.points[i], PointColour(lines, i), floats);
-  return floats;
-}
-
-// billboard_line.cpp: each segment a quad `width` wide, its sides offset from the segment by half
-// the width along the direction across both the segment and the line of sight from `eye`.
-std::vector<float> RibbonVertices(const scene::LineSet& lines, const Eigen::Vector3d& eye) {
-  std::vector<float> floats;
-  floats.reserve(lines.points.size() / 2 * 6 * 7);
-  for (size_t i = 0; i + 1 < lines.points.size(); i += 2) {
-    const Eigen::Vector3f a = lines.points[i], b = lines.points[i + 1];
-    const Eigen::Vector3f sight = (a + b) / 2 - eye.cast<float>();
-    Eigen::Vector3f across = (b - a).cross(sight);
-    if (across.squaredNorm() == 0) continue;   // a point, or seen end on
-    across = across.normalized() * (lines.width / 2);
-    const Eigen::Vector4f ca = PointColour(lines, i), cb = PointColour(lines, i + 1);
-    const Eigen::Vector3f a0 = a - across, a1 = a + across, b0 = b - across, b1 = b + across;
-    AppendVertex(a0, ca, floats), AppendVertex(a1, ca, floats), AppendVertex(b1, cb, floats);
-    AppendVertex(a0, ca, floats), AppendVertex(b1, cb, floats), AppendVertex(b0, cb, floats);
-  }
-  return floats;
-}
-
 // Whether every colour of `set` (a PointSet, FlatTriangles) is opaque: RViz's point cloud blends
 // (without depth writes) once its alpha or any point's is below 1 (point_cloud.cpp,
 // PointCloud::setAlpha), and so does a triangle list whose alpha is (triangle_list_marker.cpp).
@@ -127,10 +92,7 @@ struct SceneRenderer::Impl {
   Impl(int samples, const BackendChoice& backend)
       : samples(samples),
         context(CreateGlContext(backend.backend, backend.asked_by)),
-        lit("lit.vert", "lit.frag"),
-        line("line.vert", "line.frag") {
-    glGenVertexArrays(1, &stream_array);
-    glGenBuffers(1, &stream_buffer);
+        lit("lit.vert", "lit.frag") {
     glGenBuffers(1, &instance_buffer);
   }
   ~Impl() {
@@ -142,26 +104,6 @@ struct SceneRenderer::Impl {
       // nothing to delete them in: they go with the context
     }
     glDeleteBuffers(1, &instance_buffer);
-    glDeleteBuffers(1, &stream_buffer);
-    glDeleteVertexArrays(1, &stream_array);
-  }
-
-  // Fills the stream buffer with `floats` and sets up attribute i from `sizes[i]` of each vertex.
-  void Stream(const std::vector<float>& floats, std::initializer_list<int> sizes) {
-    glBindVertexArray(stream_array);
-    glBindBuffer(GL_ARRAY_BUFFER, stream_buffer);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(floats.size() * sizeof(float)),
-                 floats.data(), GL_STREAM_DRAW);
-    int stride = 0;
-    for (int size : sizes) stride += size;
-    int offset = 0, index = 0;
-    for (int size : sizes) {
-      glEnableVertexAttribArray(index);
-      glVertexAttribPointer(index++, size, GL_FLOAT, GL_FALSE, stride * static_cast<GLsizei>(sizeof(float)),
-                            reinterpret_cast<const void*>(offset * sizeof(float)));
-      offset += size;
-    }
-    for (; index < 2; ++index) glDisableVertexAttribArray(index);
   }
 
   // Draws the instances of `batch` with the lit program, textured when its items are.
@@ -185,62 +127,6 @@ struct SceneRenderer::Impl {
   void DrawBatches(MeshBatches& batches) {
     for (const MeshBatch& batch : batches.batches()) DrawBatch(batch);
     batches.Clear();
-  }
-
-  // 1-pixel lines, or with a width the camera-facing ribbons of RibbonVertices
-  void DrawLines(const scene::LineSet& lines, const Eigen::Matrix4d& PV, const Eigen::Vector3d& eye) {
-    line.Use();
-    line.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
-    const std::vector<float> floats = lines.width > 0 ? RibbonVertices(lines, eye) : LineVertices(lines);
-    Stream(floats, {3, 4});
-    glDisable(GL_CULL_FACE);
-    glDrawArrays(lines.width > 0 ? GL_TRIANGLES : GL_LINES, 0, static_cast<GLsizei>(floats.size() / 7));
-    glEnable(GL_CULL_FACE);
-  }
-
-  void DrawTriangles(const scene::FlatTriangles& triangles, const Eigen::Matrix4d& PV) {
-    line.Use();
-    line.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
-    std::vector<float> floats;
-    floats.reserve(triangles.positions.size() * 7);
-    for (size_t i = 0; i < triangles.positions.size(); ++i) {
-      AppendVertex(triangles.positions[i], triangles.colours[i], floats);
-    }
-    Stream(floats, {3, 4});
-    glDisable(GL_CULL_FACE);   // triangle_list_marker.cpp: CULL_NONE
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.positions.size()));
-    glEnable(GL_CULL_FACE);
-  }
-
-  // movable_text.cpp: depth-checked, no depth write, depth bias (1, 1), which Ogre's GL render
-  // system applies as glPolygonOffset(-1, -1); two triangles per character, as MovableText's
-  void DrawLabel(const scene::TextLabel& label, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
-    if (label.quads.empty()) return;
-    const ShaderProgram& text = this->text.Get();
-    text.Use();
-    text.Set("projection", Eigen::Matrix4f(P.cast<float>()));
-    text.Set("anchor_view", Eigen::Vector3f((V * label.anchor.homogeneous()).head<3>().cast<float>()));
-    text.Set("colour", label.rgba);
-    text.Set("glyphs", 0);
-    textures.Get(label.texture).Bind(0);
-    std::vector<float> floats;
-    floats.reserve(label.quads.size() * 24);
-    for (const auto& q : label.quads) {
-      const float corners[6][4] = {
-          {q.min.x(), q.max.y(), q.uv_min.x(), q.uv_max.y()},   // upper left
-          {q.min.x(), q.min.y(), q.uv_min.x(), q.uv_min.y()},   // lower left
-          {q.max.x(), q.max.y(), q.uv_max.x(), q.uv_max.y()},   // upper right
-          {q.max.x(), q.max.y(), q.uv_max.x(), q.uv_max.y()},   // upper right
-          {q.min.x(), q.min.y(), q.uv_min.x(), q.uv_min.y()},   // lower left
-          {q.max.x(), q.min.y(), q.uv_max.x(), q.uv_min.y()}};  // lower right
-      for (const auto& corner : corners) floats.insert(floats.end(), corner, corner + 4);
-    }
-    Stream(floats, {2, 2});
-    glFrontFace(GL_CCW);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-1.f, -1.f);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(label.quads.size() * 6));
-    glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
   // The colour image: opaque geometry first, then transparent geometry, lines and text blended
@@ -297,7 +183,7 @@ struct SceneRenderer::Impl {
     point_sets().DrawOpaque(opaque_points, V, P);
     for (const auto& triangles : scene.triangles) {
       if (Opaque(triangles)) {
-        DrawTriangles(triangles, PV);
+        streamed.DrawTriangles(triangles, PV);
       } else {
         transparent.push_back({(Centre(triangles.positions) - eye).squaredNorm(), &triangles});
       }
@@ -333,13 +219,13 @@ struct SceneRenderer::Impl {
       }
       DrawBatches(batches);
       if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
-        DrawLines(**lines, PV, eye);
+        streamed.DrawLines(**lines, PV, eye);
       } else if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
         point_sets().Draw(**points, V, P);
       } else if (const auto* triangles = std::get_if<const scene::FlatTriangles*>(&t.what)) {
-        DrawTriangles(**triangles, PV);
-      } else {
-        DrawLabel(*std::get<const scene::TextLabel*>(t.what), V, P);
+        streamed.DrawTriangles(**triangles, PV);
+      } else if (const scene::TextLabel& label = *std::get<const scene::TextLabel*>(t.what); !label.quads.empty()) {
+        streamed.DrawLabel(label, textures.Get(label.texture), V, P);
       }
     }
     DrawBatches(batches);
@@ -384,8 +270,7 @@ struct SceneRenderer::Impl {
   std::unique_ptr<GlContext> context;
   ShaderProgram lit;                           // untextured surfaces
   LazyShaderProgram lit_textured{"lit.vert", "lit.frag", "TEXTURED"};   // and textured ones
-  ShaderProgram line;
-  LazyShaderProgram text{"text.vert", "text.frag"};
+  StreamedDrawing streamed;                    // lines, flat triangles and text labels
   LazyShaderProgram label{"label.vert", "label.frag"};
   // the point programs, made for the first point set drawn
   std::optional<PointSetDrawing> point_sets_made;
@@ -393,7 +278,6 @@ struct SceneRenderer::Impl {
     if (!point_sets_made) point_sets_made.emplace();
     return *point_sets_made;
   }
-  unsigned stream_array = 0, stream_buffer = 0;   // per-frame vertices: lines and text
   unsigned instance_buffer = 0;                    // per-draw MeshInstances
   MeshBatches batches;                             // the lit meshes of the draw being gathered
   std::unique_ptr<Framebuffer> framebuffer;

@@ -1,0 +1,131 @@
+// Line sets, flat triangles and text labels into GL: their vertices built on the CPU each frame
+// and streamed through one buffer.
+#include "gl/internal/streamed_drawing.h"
+
+#include "gl/internal/gl_api.h"
+
+namespace urdfsnap::gl {
+
+namespace {
+
+// Appends one vertex of the line shader: position, then rgba.
+void AppendVertex(const Eigen::Vector3f& p, const Eigen::Vector4f& rgba, std::vector<float>& floats) {
+  floats.insert(floats.end(), p.data(), p.data() + 3);
+  floats.insert(floats.end(), rgba.data(), rgba.data() + 4);
+}
+
+Eigen::Vector4f PointColour(const scene::LineSet& lines, size_t i) {
+  return i < lines.colours.size() ? lines.colours[i] : lines.rgba;
+}
+
+std::vector<float> LineVertices(const scene::LineSet& lines) {
+  std::vector<float> floats;
+  floats.reserve(lines.points.size() * 7);
+  for (size_t i = 0; i < lines.points.size(); ++i) AppendVertex(lines.points[i], PointColour(lines, i), floats);
+  return floats;
+}
+
+// billboard_line.cpp: each segment a quad `width` wide, its sides offset from the segment by half
+// the width along the direction across both the segment and the line of sight from `eye`.
+std::vector<float> RibbonVertices(const scene::LineSet& lines, const Eigen::Vector3d& eye) {
+  std::vector<float> floats;
+  floats.reserve(lines.points.size() / 2 * 6 * 7);
+  for (size_t i = 0; i + 1 < lines.points.size(); i += 2) {
+    const Eigen::Vector3f a = lines.points[i], b = lines.points[i + 1];
+    const Eigen::Vector3f sight = (a + b) / 2 - eye.cast<float>();
+    Eigen::Vector3f across = (b - a).cross(sight);
+    if (across.squaredNorm() == 0) continue;   // a point, or seen end on
+    across = across.normalized() * (lines.width / 2);
+    const Eigen::Vector4f ca = PointColour(lines, i), cb = PointColour(lines, i + 1);
+    const Eigen::Vector3f a0 = a - across, a1 = a + across, b0 = b - across, b1 = b + across;
+    AppendVertex(a0, ca, floats), AppendVertex(a1, ca, floats), AppendVertex(b1, cb, floats);
+    AppendVertex(a0, ca, floats), AppendVertex(b1, cb, floats), AppendVertex(b0, cb, floats);
+  }
+  return floats;
+}
+
+}  // namespace
+
+StreamedDrawing::StreamedDrawing() : line_("line.vert", "line.frag") {
+  glGenVertexArrays(1, &stream_array_);
+  glGenBuffers(1, &stream_buffer_);
+}
+
+StreamedDrawing::~StreamedDrawing() {
+  glDeleteBuffers(1, &stream_buffer_);
+  glDeleteVertexArrays(1, &stream_array_);
+}
+
+void StreamedDrawing::Stream(const std::vector<float>& floats, std::initializer_list<int> sizes) {
+  glBindVertexArray(stream_array_);
+  glBindBuffer(GL_ARRAY_BUFFER, stream_buffer_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(floats.size() * sizeof(float)), floats.data(),
+               GL_STREAM_DRAW);
+  int stride = 0;
+  for (int size : sizes) stride += size;
+  int offset = 0, index = 0;
+  for (int size : sizes) {
+    glEnableVertexAttribArray(index);
+    glVertexAttribPointer(index++, size, GL_FLOAT, GL_FALSE, stride * static_cast<GLsizei>(sizeof(float)),
+                          reinterpret_cast<const void*>(offset * sizeof(float)));
+    offset += size;
+  }
+  for (; index < 2; ++index) glDisableVertexAttribArray(index);
+}
+
+void StreamedDrawing::DrawLines(const scene::LineSet& lines, const Eigen::Matrix4d& PV, const Eigen::Vector3d& eye) {
+  line_.Use();
+  line_.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
+  const std::vector<float> floats = lines.width > 0 ? RibbonVertices(lines, eye) : LineVertices(lines);
+  Stream(floats, {3, 4});
+  glDisable(GL_CULL_FACE);
+  glDrawArrays(lines.width > 0 ? GL_TRIANGLES : GL_LINES, 0, static_cast<GLsizei>(floats.size() / 7));
+  glEnable(GL_CULL_FACE);
+}
+
+void StreamedDrawing::DrawTriangles(const scene::FlatTriangles& triangles, const Eigen::Matrix4d& PV) {
+  line_.Use();
+  line_.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
+  std::vector<float> floats;
+  floats.reserve(triangles.positions.size() * 7);
+  for (size_t i = 0; i < triangles.positions.size(); ++i) {
+    AppendVertex(triangles.positions[i], triangles.colours[i], floats);
+  }
+  Stream(floats, {3, 4});
+  glDisable(GL_CULL_FACE);   // triangle_list_marker.cpp: CULL_NONE
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.positions.size()));
+  glEnable(GL_CULL_FACE);
+}
+
+// movable_text.cpp: depth-checked, no depth write, depth bias (1, 1), which Ogre's GL render
+// system applies as glPolygonOffset(-1, -1); two triangles per character, as MovableText's
+void StreamedDrawing::DrawLabel(const scene::TextLabel& label, const GpuTexture& glyphs, const Eigen::Matrix4d& V,
+                                const Eigen::Matrix4d& P) {
+  const ShaderProgram& text = text_.Get();
+  text.Use();
+  text.Set("projection", Eigen::Matrix4f(P.cast<float>()));
+  text.Set("anchor_view", Eigen::Vector3f((V * label.anchor.homogeneous()).head<3>().cast<float>()));
+  text.Set("colour", label.rgba);
+  text.Set("glyphs", 0);
+  glyphs.Bind(0);
+  std::vector<float> floats;
+  floats.reserve(label.quads.size() * 24);
+  for (const auto& q : label.quads) {
+    const float corners[6][4] = {
+        {q.min.x(), q.max.y(), q.uv_min.x(), q.uv_max.y()},   // upper left
+        {q.min.x(), q.min.y(), q.uv_min.x(), q.uv_min.y()},   // lower left
+        {q.max.x(), q.max.y(), q.uv_max.x(), q.uv_max.y()},   // upper right
+        {q.max.x(), q.max.y(), q.uv_max.x(), q.uv_max.y()},   // upper right
+        {q.min.x(), q.min.y(), q.uv_min.x(), q.uv_min.y()},   // lower left
+        {q.max.x(), q.min.y(), q.uv_max.x(), q.uv_min.y()}};  // lower right
+    for (const auto& corner : corners) floats.insert(floats.end(), corner, corner + 4);
+  }
+  Stream(floats, {2, 2});
+  glFrontFace(GL_CCW);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-1.f, -1.f);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(label.quads.size() * 6));
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+}  // namespace urdfsnap::gl
