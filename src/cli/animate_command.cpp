@@ -60,8 +60,8 @@ namespace {
 // How long a turntable of a still pose lasts when --duration does not say.
 constexpr double kStillTurntableSeconds = 6;
 
-// The pieces a frame sequence is cut into per worker (JobOptions::kPiecesPerWorker's 4 is for
-// dataset's dearer pieces): a run of frames costs a line each way and its files opened, and the
+// The pieces a frame sequence is cut into per worker (dataset's samples, dearer, are cut into 4):
+// a run of frames costs a line each way and its files opened, and the
 // workers end within a piece of each other. With 4, one worker of a 121-frame Panda turntable sat
 // idle for 0.2-0.5 s at the end while the other drew its last 15 frames.
 constexpr int kFramePiecesPerWorker = 16;
@@ -374,7 +374,7 @@ void WriteByWorkers(const AnimateOptions& o, const std::string& suffix, const Pr
 }
 
 // A worker process of a parent's `animate --jobs N` (the hidden --worker-pieces and
-// --worker-suffix): the frames of each piece the parent hands it, under the temporary names the
+// --worker-output, a suffix): the frames of each piece the parent hands it, under the temporary names the
 // parent moves into place; its progress on stdout, its warnings on stderr for the parent to gather.
 void DrawPieces(const AnimateOptions& o, request::RenderSession& session, const PreparedAnimation& a,
                 Warnings& warnings) {
@@ -384,7 +384,7 @@ void DrawPieces(const AnimateOptions& o, request::RenderSession& session, const 
         shard::FramesOfShard(a.plan.frame_count, shard::CheckedShard(*piece, o.jobs.worker_pieces, "piece"));
     if (range.size() == 0) continue;
     OpenOutputs open;
-    OpenRange(o, a, range, {o.jobs.worker_suffix, true}, open, warnings);
+    OpenRange(o, a, range, {o.jobs.worker_output, true}, open, warnings);
     animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(a.scene.robot.settings.samples), *a.frames,
                                range, open.Pointers(o.mask_dilate),
                                [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);

@@ -47,6 +47,11 @@ struct DatasetOptions {
   GlOptions gl_options;
 };
 
+// The pieces the samples are cut into per worker: a sample costs several frames' work (colour,
+// labels, depth, three PNGs, its COCO entries), so few pieces keep the workers within one of
+// each other.
+constexpr int kSamplePiecesPerWorker = 4;
+
 // render's options that a dataset draws per sample, or that a dataset has no use for
 constexpr std::string_view kDrawnPerSample[] = {"yaw", "pitch", "distance", "focal", "fit", "fit-margin",
                                                 "camera-pose", "underlay", "underlay-alpha"};
@@ -92,7 +97,7 @@ dataset::CocoParts PieceParts(const dataset::DatasetSpec& spec, const std::strin
 }
 
 // A worker process of a parent's `dataset --jobs N` (the hidden --worker-pieces and
-// --worker-suffix): the samples of each piece the parent hands it, and their COCO entries in the
+// --worker-output, a suffix): the samples of each piece the parent hands it, and their COCO entries in the
 // piece's files; its progress on stdout, its warnings on stderr for the parent to gather.
 void DrawPieces(const DatasetOptions& o, const render::RobotRenderer& renderer, gl::SceneRenderer& gl,
                 const render::CameraSettings& camera, dataset::DatasetSpec spec, Warnings& warnings) {
@@ -100,7 +105,7 @@ void DrawPieces(const DatasetOptions& o, const render::RobotRenderer& renderer, 
   std::int64_t done = 0;
   while (const std::optional<int> piece = NextPiece()) {
     spec.range = shard::FramesOfShard(spec.count, shard::CheckedShard(*piece, o.jobs.worker_pieces, "piece"));
-    const dataset::CocoParts parts = PieceParts(spec, o.jobs.worker_suffix, *piece);
+    const dataset::CocoParts parts = PieceParts(spec, o.jobs.worker_output, *piece);
     AtomicFile images(parts.images), annotations(parts.annotations);
     dataset::WriteSamples(renderer, gl, camera, spec, images, annotations,
                           [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);
@@ -168,7 +173,7 @@ void Run(DatasetOptions& o) {
 
   // workers start before this process reads the model, which they read too
   const std::string suffix = jobs > 1 ? ".part-" + RandomSuffix() : "";
-  const int pieces = JobOptions::kPiecesPerWorker * jobs;
+  const int pieces = kSamplePiecesPerWorker * jobs;
   std::optional<PieceFiles> piece_files;
   std::optional<WorkerProcesses> workers;
   if (jobs > 1) {

@@ -17,7 +17,6 @@
 #include "cli/shard_options.h"
 #include "cli/worker_processes.h"
 #include "common/error.h"
-#include "common/usable_cores.h"
 #include "docs/animation_output.h"
 #include "docs/page_check.h"
 #include "docs/page_folder.h"
@@ -45,9 +44,7 @@ struct DocsOptions {
   std::string animations, stills = "webp";
   bool quiet = false;
   ShardOptions sharding;            // a contiguous part of the page's pictures and animations
-  int jobs = 0;                     // --jobs: worker processes; 0 = one per usable core
-  int worker_pieces = 0;            // a worker's: the pieces its parent cut the page into
-  std::string worker_folder;        // the parent's folder a worker writes its files into
+  JobOptions jobs;                  // worker processes making the pictures; a worker's pieces and folder
   RenderOptions render;             // the pose (-j, --joints) and the view and display options
   std::vector<std::string> refused; // the kNotOnDocs options given, in order
   GlOptions gl_options;
@@ -129,7 +126,8 @@ PagePlan PlanPage(DocsOptions& o, const gl::BackendChoice& backend, Warnings& wa
   return plan;
 }
 
-// A worker process of a parent's `docs --jobs N` (the hidden --worker-pieces and --worker-folder):
+// A worker process of a parent's `docs --jobs N` (the hidden --worker-pieces and --worker-output,
+// the parent's folder):
 // the pictures and animations of each piece the parent hands it into the parent's folder, its
 // progress on stdout, its warnings on stderr for the parent to gather; no documents.
 void RunWorker(DocsOptions& o) {
@@ -145,9 +143,9 @@ void RunWorker(DocsOptions& o) {
     const auto next = [&]() -> std::optional<std::vector<docs::PageImage>> {
       const std::optional<int> piece = NextPiece();
       if (!piece) return std::nullopt;
-      return docs::PiecePageImages(plan.files, shard::CheckedShard(*piece, o.worker_pieces, "piece"));
+      return docs::PiecePageImages(plan.files, shard::CheckedShard(*piece, o.jobs.worker_pieces, "piece"));
     };
-    docs::RenderPagePieces(plan.prepared.robot, plan.page, plan.look, next, o.worker_folder, warnings,
+    docs::RenderPagePieces(plan.prepared.robot, plan.page, plan.look, next, o.jobs.worker_output, warnings,
                            [](std::int64_t done, std::int64_t) { ReportImagesDone(done); });
   } catch (...) {
     PrintWarningsBeforeError(warnings);
@@ -156,16 +154,8 @@ void RunWorker(DocsOptions& o) {
   PrintWarningsBeforeError(warnings);   // the parent gathers them (and applies --strict)
 }
 
-// How many worker processes make the page: --jobs (default the cores this process may use), one
-// when the run is a shard of a larger job or reads standard input (a worker could not read it
-// again).
-int WorkerCount(const DocsOptions& o, const shard::ShardChoice& choice) {
-  if (choice.sharded() || ReadsStandardInput(OwnCommandLine())) return 1;
-  return o.jobs > 0 ? o.jobs : UsableCores();
-}
-
 void Run(DocsOptions& o) {
-  if (o.worker_pieces > 0) return RunWorker(o);
+  if (o.jobs.worker()) return RunWorker(o);
   if (o.output.empty() == o.check.empty()) {
     throw Error("docs: give -o DIR to write a page, or --check DIR to compare a committed page with a fresh one");
   }
@@ -186,7 +176,7 @@ void Run(DocsOptions& o) {
   }
   const shard::ShardChoice choice =
       o.sharding.Choose(o.check.empty() ? "" : "docs --check compares the whole page with a fresh one");
-  const int jobs = WorkerCount(o, choice);
+  const int jobs = o.jobs.WorkerCount(choice.sharded());   // one process for a shard of a larger job
   const gl::BackendChoice backend = o.gl_options.Choice();
   // one process: Mesa loads while the model is read; workers load it themselves
   std::optional<std::future<void>> gl_loading;
@@ -200,9 +190,7 @@ void Run(DocsOptions& o) {
     std::optional<WorkerProcesses> workers;
     if (jobs > 1) {
       const int pieces = kPiecesPerWorker * jobs;
-      workers.emplace(jobs, "docs",
-                      std::vector<std::string>{"--worker-pieces", std::to_string(pieces), "--worker-folder", folder.string()},
-                      pieces);
+      workers.emplace(jobs, "docs", JobOptions::WorkerOptions(pieces, folder.string()), pieces);
     }
     PagePlan plan = PlanPage(o, backend, warnings);
     const std::vector<docs::PageImage> files = docs::ShardPageImages(plan.files, choice.shard);
@@ -288,13 +276,9 @@ void AddDocsCommand(CLI::App& app) {
     }
   }
   o->gl_options.AddOptions(*cmd);
-  cmd->add_option("--jobs", o->jobs,
-                  "make the page in N worker processes at once, each a shard of its pictures and "
-                  "animations (default: one per core this process may use; 1: in this process). "
-                  "With --shard, or a model or joint file on standard input, one process")
-      ->check(CLI::Range(1, 256));
-  cmd->add_option("--worker-pieces", o->worker_pieces)->group("");   // WorkerProcesses' own
-  cmd->add_option("--worker-folder", o->worker_folder)->group("");
+  o->jobs.AddOptions(*cmd, "make the page in N worker processes at once, each a shard of its pictures and "
+                          "animations (default: one per core this process may use; 1: in this process). "
+                          "With --shard, or a model or joint file on standard input, one process");
   cmd->callback([o] { RunStoppable([o] { Run(*o); }); });   // a signal ends it after the page's folder is removed
 }
 

@@ -9,7 +9,7 @@ namespace urdfsnap::cli {
 void JobOptions::AddOptions(CLI::App& command, const std::string& help) {
   command.add_option("--jobs", jobs, help)->check(CLI::Range(1, 256));
   command.add_option("--worker-pieces", worker_pieces)->group("");   // WorkerProcesses' own
-  command.add_option("--worker-suffix", worker_suffix)->group("");
+  command.add_option("--worker-output", worker_output)->group("");
 }
 
 int JobOptions::WorkerCount(bool one_process) const {
@@ -17,9 +17,9 @@ int JobOptions::WorkerCount(bool one_process) const {
   return jobs > 0 ? jobs : UsableCores();
 }
 
-std::vector<std::string> JobOptions::WorkerOptions(int pieces, const std::string& suffix) {
+std::vector<std::string> JobOptions::WorkerOptions(int pieces, const std::string& output) {
   // a worker takes the pieces it is handed, whatever shard a job engine's variables name
-  return {"--no-shard", "--worker-pieces", std::to_string(pieces), "--worker-suffix", suffix};
+  return {"--no-shard", "--worker-pieces", std::to_string(pieces), "--worker-output", output};
 }
 
 void RunStoppable(const std::function<void()>& run) {

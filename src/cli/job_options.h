@@ -1,5 +1,5 @@
 // --jobs N for the commands whose work is split over worker processes on one machine (animate's
-// frame sequences, dataset), the hidden options their workers are started with, and the
+// frame sequences, dataset, docs), the hidden options their workers are started with, and the
 // command's callback that ends the process by a stopping signal after its clean-up.
 #pragma once
 
@@ -14,11 +14,9 @@ namespace urdfsnap::cli {
 struct JobOptions {
   int jobs = 0;               // --jobs: worker processes; 0 = one per usable core
   int worker_pieces = 0;      // a worker's: the pieces its parent cut the work into
-  std::string worker_suffix;  // a worker's: the suffix of the files it leaves for its parent
-
-  // The pieces the work is cut into per worker (contiguous runs of frames or samples, each worker
-  // taking the next as it finishes one): a worker slowed by other programs takes fewer.
-  static constexpr int kPiecesPerWorker = 4;
+  // a worker's: where it leaves its files for its parent, a suffix of their names (animate,
+  // dataset) or the parent's folder (docs)
+  std::string worker_output;
 
   bool worker() const { return worker_pieces > 0; }
 
@@ -31,8 +29,10 @@ struct JobOptions {
   // Adds --jobs, saying `help`, and the workers' hidden options to `command`.
   void AddOptions(CLI::App& command, const std::string& help);
 
-  // The options that make this command a worker: `pieces` pieces, its files named with `suffix`.
-  static std::vector<std::string> WorkerOptions(int pieces, const std::string& suffix);
+  // The options that make this command a worker: the work cut into `pieces` pieces (contiguous
+  // runs of frames, samples or pictures, each worker taking the next as it finishes one, so that a
+  // worker slowed by other programs takes fewer), its files left at `output` (worker_output).
+  static std::vector<std::string> WorkerOptions(int pieces, const std::string& output);
 };
 
 // Runs `run`; when it ends by StoppedBySignal (its clean-up done), ends this process by that signal.
