@@ -115,8 +115,9 @@ void CheckOptionValues(request::RenderRequest base) {
   request::ResolveRequest(base, request::RequestFiles{}, request::CommandLineLabel);
 }
 
-// How the page names the calibrated camera it shows ("" for the orbit view): the calibration
-// file and where the camera is, as the command line gave them.
+// How the page names the calibrated camera it shows, "" exactly when it shows the orbit view (no
+// --camera-info, --camera-frame or --camera-pose): the calibration file and where the camera is,
+// as the command line gave them.
 std::string CameraViewText(const request::RenderRequest& base) {
   std::string text = std::filesystem::path(base.camera_info).filename().string();
   const std::string at = !base.camera_frame.empty() ? "frame " + base.camera_frame
@@ -275,10 +276,9 @@ struct Server::Impl {
     nlohmann::json recording = nullptr;
     if (options.recording) recording = {{"duration", options.recording->duration}};
     // a calibrated camera is placed as given: the page's orbit controls have nothing to move
-    const request::RenderRequest& base = options.base;
-    const bool camera = !base.camera_info.empty() || !base.camera_frame.empty() || !base.camera_pose.empty();
-    SetJson(res, 200, {{"model", state->generation}, {"error", error}, {"recording", recording}, {"camera", camera},
-                       {"camera_view", CameraViewText(base)}});
+    const std::string camera_view = CameraViewText(options.base);
+    SetJson(res, 200, {{"model", state->generation}, {"error", error}, {"recording", recording},
+                       {"camera", !camera_view.empty()}, {"camera_view", camera_view}});
   }
 
   void Route() {
