@@ -64,6 +64,7 @@
   X(PFNGLGETACTIVEUNIFORMPROC, glGetActiveUniform)                    \
   X(PFNGLGETERRORPROC, glGetError)                                    \
   X(PFNGLGETINTEGERVPROC, glGetIntegerv)                              \
+  X(PFNGLGETTEXIMAGEPROC, glGetTexImage)                              \
   X(PFNGLGETMULTISAMPLEFVPROC, glGetMultisamplefv)                    \
   X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                  \
   X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                            \
@@ -82,6 +83,7 @@
   X(PFNGLSHADERSOURCEPROC, glShaderSource)                            \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                \
   X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                          \
+  X(PFNGLTEXSTORAGE2DPROC, glTexStorage2D)                            \
   X(PFNGLTEXSUBIMAGE2DPROC, glTexSubImage2D)                          \
   X(PFNGLUNIFORM1FPROC, glUniform1f)                                  \
   X(PFNGLUNIFORM1IPROC, glUniform1i)                                  \
