@@ -4,13 +4,16 @@
 // frames. Every output appears only when complete; --print-frame K instead prints the `render`
 // options that make frame K.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <future>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <thread>
 #include <utility>
 
 #include "animation/animation_frames.h"
@@ -60,7 +63,7 @@ namespace {
 // How long a turntable of a still pose lasts when --duration does not say.
 constexpr double kStillTurntableSeconds = 6;
 
-// The pieces a frame sequence is cut into per worker (dataset's samples, dearer, are cut into 4):
+// The pieces a frame sequence is cut into per drawing process (dataset's samples, dearer, are cut into 4):
 // a run of frames costs a line each way and its files opened, and the
 // workers end within a piece of each other. With 4, one worker of a 121-frame Panda turntable sat
 // idle for 0.2-0.5 s at the end while the other drew its last 15 frames.
@@ -348,12 +351,34 @@ void WriteAnimation(const AnimateOptions& o, const shard::ShardChoice& choice, r
   PrintNewWarnings(warnings, later);
 }
 
-// A frame sequence drawn by `workers` (started with `suffix` as the temporary names of their files):
-// this process writes the link names, sums the workers' progress into its line and, once every
-// worker has finished, moves every frame's files into place (or, after an error or a signal,
-// removes them).
-void WriteByWorkers(const AnimateOptions& o, const std::string& suffix, const PreparedAnimation& a,
-                    WorkerProcesses& workers, OutputPlan& outputs, Warnings& warnings) {
+// Draws piece `piece` of `pieces` of the frames into files under the temporary names of `suffix`
+// (left for the parent that chose it), calling `progress` with the frames of the piece done so far;
+// returns how many frames the piece has.
+std::int64_t DrawPiece(const AnimateOptions& o, request::RenderSession& session, const PreparedAnimation& a, int piece,
+                       int pieces, const std::string& suffix, const std::function<void(std::int64_t)>& progress,
+                       Warnings& warnings) {
+  const shard::FrameRange range =
+      shard::FramesOfShard(a.plan.frame_count, shard::CheckedShard(piece, pieces, "piece"));
+  if (range.size() == 0) return 0;
+  OpenOutputs open;
+  OpenRange(o, a, range, {suffix, true}, open, warnings);
+  animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(a.scene.robot.settings.samples), *a.frames,
+                             range, open.Pointers(o.mask_dilate), progress, warnings);
+  return range.size();
+}
+
+// Thrown out of this process's own frames once its workers have failed or were stopped (the
+// exception Wait threw says which).
+struct WorkersEnded {};
+
+// A frame sequence drawn by `workers` (started with `suffix` as the temporary names of their files,
+// the frames cut into `pieces`) and by this process beside them, taking pieces as they do: a worker
+// fewer to start, read the model and upload it to the GL. Wait runs on a second thread; this one
+// writes the link names, sums everyone's progress into its line and, once every piece is drawn,
+// moves every frame's files into place (or, after an error or a signal, removes them).
+void WriteByWorkers(const AnimateOptions& o, const std::string& suffix, request::RenderSession& session,
+                    const PreparedAnimation& a, WorkerProcesses& workers, int pieces, OutputPlan& outputs,
+                    Warnings& warnings) {
   const shard::FrameRange range{0, a.plan.frame_count};
   a.frames->Positions(0, warnings);
   std::vector<std::unique_ptr<video::NumberedFiles>> staged;
@@ -365,11 +390,44 @@ void WriteByWorkers(const AnimateOptions& o, const std::string& suffix, const Pr
   WriteLabelNames(o, a, outputs);
   PrintWarnings(warnings);   // --strict ends here; the workers are stopped
   stream::ProgressBar bar(range.size(), "frames", BarDisplay(o));
-  Warnings later;
-  workers.Wait([&](std::int64_t done) { bar.Update(done); }, later);
+  std::mutex progress_mutex;   // the bar and the counts below, updated by both threads
+  std::int64_t by_workers = 0, by_this = 0;
+  Warnings later, own;         // the workers' (Wait's thread) and this process's frames'
+  std::atomic<bool> workers_ended = false;
+  std::exception_ptr waited;
+  std::thread waiter([&] {
+    try {
+      workers.Wait([&](std::int64_t done) {
+        const std::lock_guard lock(progress_mutex);
+        bar.Update((by_workers = done) + by_this);
+      }, later);
+    } catch (...) {
+      waited = std::current_exception();
+      workers_ended = true;
+    }
+  });
+  try {
+    std::int64_t done = 0;
+    while (const std::optional<int> piece = workers.TakePiece()) {
+      done += DrawPiece(o, session, a, *piece, pieces, suffix, [&](std::int64_t written) {
+        if (workers_ended) throw WorkersEnded{};
+        const std::lock_guard lock(progress_mutex);
+        bar.Update(by_workers + (by_this = done + written));
+      }, own);
+    }
+  } catch (const WorkersEnded&) {
+    // Wait's exception, below
+  } catch (...) {
+    workers.Interrupt();
+    waiter.join();
+    throw;
+  }
+  waiter.join();
+  if (waited) std::rethrow_exception(waited);
   for (const auto& files : staged) files->Finish();
   outputs.Commit();
   bar.Finish(WrittenText(o.output, range));
+  for (const std::string& message : own.messages()) later.Add(message);
   PrintNewWarnings(warnings, later);
 }
 
@@ -380,30 +438,25 @@ void DrawPieces(const AnimateOptions& o, request::RenderSession& session, const 
                 Warnings& warnings) {
   std::int64_t done = 0;
   while (const std::optional<int> piece = NextPiece()) {
-    const shard::FrameRange range =
-        shard::FramesOfShard(a.plan.frame_count, shard::CheckedShard(*piece, o.jobs.worker_pieces, "piece"));
-    if (range.size() == 0) continue;
-    OpenOutputs open;
-    OpenRange(o, a, range, {o.jobs.worker_output, true}, open, warnings);
-    animation::RenderAnimation(*a.scene.robot.renderer, session.GlRenderer(a.scene.robot.settings.samples), *a.frames,
-                               range, open.Pointers(o.mask_dilate),
-                               [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);
-    done += range.size();
+    done += DrawPiece(o, session, a, *piece, o.jobs.worker_pieces, o.jobs.worker_output,
+                      [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);
   }
   PrintWarningsBeforeError(warnings);   // the parent gathers them (and applies --strict)
 }
 
-// How many worker processes draw the animation (JobOptions::WorkerCount): one for a video (one
-// file, encoded in order), --print-frame or a shard of a larger job.
+// How many processes draw the animation (JobOptions::WorkerCount; with more than one, this one and
+// one worker fewer): one for a video (one file, encoded in order), --print-frame or a shard of a
+// larger job.
 int WorkerCount(const AnimateOptions& o) {
   return o.jobs.WorkerCount(!o.print_frame.empty() || o.output.empty() ||
                             video::OutputFormatOf(o.output) != video::OutputFormat::kPngSequence ||
                             o.sharding.Choose().sharded());
 }
 
-// One animation (of the one MODEL, or of one of many bags) drawn through `session`, or by `jobs`
-// worker processes; `gl_loading` is the GL library being loaded (not for workers: they load it).
-void RunOne(AnimateOptions& o, request::RenderSession& session, const std::optional<std::future<void>>& gl_loading,
+// One animation (of the one MODEL, or of one of many bags) drawn through `session`, or by this
+// process and `jobs` - 1 worker processes; `gl_loading` is the GL library being loaded (started
+// here with the workers).
+void RunOne(AnimateOptions& o, request::RenderSession& session, std::optional<std::future<void>>& gl_loading,
             int jobs) {
   request::RenderRequest& r = o.render.request;
   // MODEL given as a bag: its motion and the robot description it recorded
@@ -448,10 +501,11 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::optio
   }
   // workers start before this process reads the model, which they read too
   const std::string suffix = jobs > 1 ? ".part-" + RandomSuffix() : "";
+  const int pieces = kFramePiecesPerWorker * jobs;
   std::optional<WorkerProcesses> workers;
   if (jobs > 1) {
-    const int pieces = kFramePiecesPerWorker * jobs;
-    workers.emplace(jobs, "animate", JobOptions::WorkerOptions(pieces, suffix), pieces);
+    workers.emplace(jobs - 1, "animate", JobOptions::WorkerOptions(pieces, suffix), pieces);
+    gl_loading = gl::StartLoadingGl(o.gl_options.Choice().backend);   // its thread with the stop signals blocked
   }
 
   Warnings warnings;
@@ -481,7 +535,8 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, const std::optio
     if (!o.print_frame.empty()) return PrintFrame(o, animation, warnings);
     if (workers) {
       if (animation.fit != render::Fit::kNone) workers->Tell(ViewLine(animation.frames->fitted_view()));
-      return WriteByWorkers(o, suffix, animation, *workers, outputs, warnings);
+      ready_gl(animation);
+      return WriteByWorkers(o, suffix, session, animation, *workers, pieces, outputs, warnings);
     }
     ready_gl(animation);
     if (o.jobs.worker()) return DrawPieces(o, session, animation, warnings);
@@ -610,9 +665,10 @@ void AddAnimateCommand(CLI::App& app) {
   o->displays.AddOptions(*cmd);
   o->camera.AddOptions(*cmd, "each frame's moment");
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the encoder");
-  o->jobs.AddOptions(*cmd, "draw a frame sequence in N worker processes at once, each taking contiguous runs of "
-                          "its frames as it finishes the last (default: one per core this process may use; 1: "
-                          "in this process). A video, --shard, or a model on standard input: one process");
+  o->jobs.AddOptions(*cmd, "draw a frame sequence in N processes at once (this one and N-1 workers), each taking "
+                          "contiguous runs of its frames as it finishes the last (default: one per core this "
+                          "process may use; 1: in this process). A video, --shard, or a model on standard input: "
+                          "one process");
   // a stopping signal ends the command after the staged frames and the folders made are removed
   cmd->callback([o] { RunStoppable([o] { Run(*o); }); });
 }

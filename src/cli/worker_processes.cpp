@@ -76,6 +76,7 @@ WorkerProcesses::WorkerProcesses(int count, const std::string& command, const st
   sigaddset(&stop, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop, &caller_mask_);
   signal_fd_ = signalfd(-1, &stop, SFD_CLOEXEC);
+  if (pipe2(interrupt_, O_CLOEXEC) != 0) interrupt_[0] = interrupt_[1] = -1;
   // a worker that has ended makes writing to its stdin fail (EPIPE), not end this process
   struct sigaction ignore {};
   ignore.sa_handler = SIG_IGN;
@@ -84,6 +85,7 @@ WorkerProcesses::WorkerProcesses(int count, const std::string& command, const st
   const auto at = std::find(arguments.begin() + std::min<size_t>(1, arguments.size()), arguments.end(), command);
   try {
     if (signal_fd_ < 0) throw Error(SystemError("cannot start worker processes: signalfd"));
+    if (interrupt_[0] < 0) throw Error(SystemError("cannot start worker processes: pipe"));
     if (at == arguments.end()) throw Error("cannot start worker processes: no '" + command + "' in this process's command line");
     arguments.insert(at + 1, options.begin(), options.end());
     workers_.resize(count);
@@ -91,6 +93,7 @@ WorkerProcesses::WorkerProcesses(int count, const std::string& command, const st
   } catch (...) {
     StopAll();
     if (signal_fd_ >= 0) close(signal_fd_);
+    CloseInterrupt();
     sigaction(SIGPIPE, &caller_sigpipe_, nullptr);
     pthread_sigmask(SIG_SETMASK, &caller_mask_, nullptr);
     throw;
@@ -100,6 +103,7 @@ WorkerProcesses::WorkerProcesses(int count, const std::string& command, const st
 WorkerProcesses::~WorkerProcesses() {
   StopAll();
   close(signal_fd_);
+  CloseInterrupt();
   sigaction(SIGPIPE, &caller_sigpipe_, nullptr);
   pthread_sigmask(SIG_SETMASK, &caller_mask_, nullptr);
 }
@@ -190,8 +194,8 @@ bool WorkerProcesses::Drain(Worker& worker, int fd, Warnings& warnings) {
 
 void WorkerProcesses::HandOut(Worker& worker) {
   if (worker.in < 0) return;
-  if (next_piece_ <= pieces_) {
-    const std::string line = std::to_string(next_piece_++) + "\n";
+  if (const std::optional<int> piece = TakePiece()) {
+    const std::string line = std::to_string(*piece) + "\n";
     if (write(worker.in, line.data(), line.size()) == static_cast<ssize_t>(line.size())) return;
   }
   close(worker.in);   // no piece left (or the worker has gone: its end is read from its stdout)
@@ -218,10 +222,15 @@ void WorkerProcesses::Wait(const std::function<void(std::int64_t done)>& progres
         owners.push_back(&worker);
       }
     }
+    fds.push_back({interrupt_[0], POLLIN, 0});
     fds.push_back({signal_fd_, POLLIN, 0});
     if (poll(fds.data(), fds.size(), -1) < 0) {
       if (errno == EINTR) continue;
       throw Error(SystemError("waiting for the worker processes: poll"));
+    }
+    if (fds[fds.size() - 2].revents & POLLIN) {
+      StopAll();
+      return;
     }
     if (fds.back().revents & POLLIN) {
       signalfd_siginfo info{};
@@ -229,7 +238,7 @@ void WorkerProcesses::Wait(const std::function<void(std::int64_t done)>& progres
       StopAll();
       throw StoppedBySignal{n == sizeof info ? static_cast<int>(info.ssi_signo) : SIGTERM};
     }
-    for (size_t i = 0; i + 1 < fds.size(); ++i) {
+    for (size_t i = 0; i + 2 < fds.size(); ++i) {
       if (fds[i].revents == 0) continue;
       Worker& worker = *owners[i];
       if (Drain(worker, fds[i].fd, warnings)) continue;
@@ -265,6 +274,25 @@ void WorkerProcesses::Tell(const std::string& line) {
       close(worker.in);
       worker.in = -1;
     }
+  }
+}
+
+std::optional<int> WorkerProcesses::TakePiece() {
+  const std::lock_guard lock(next_piece_mutex_);
+  if (next_piece_ > pieces_) return std::nullopt;
+  return next_piece_++;
+}
+
+void WorkerProcesses::Interrupt() {
+  const char byte = 0;
+  while (write(interrupt_[1], &byte, 1) < 0 && errno == EINTR) {
+  }
+}
+
+void WorkerProcesses::CloseInterrupt() {
+  for (int& fd : interrupt_) {
+    if (fd >= 0) close(fd);
+    fd = -1;
   }
 }
 

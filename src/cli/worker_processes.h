@@ -3,7 +3,7 @@
 // command line it was given and, after the command's name, options that make it a worker. The work
 // is cut into pieces (shards K/M of it, M a few times the workers), handed to the workers one at a
 // time as they finish the one before, so that a worker with cheaper pieces takes more of them and
-// all end together. Each worker is a process with its own GL context: Mesa's llvmpipe rasterises
+// all end together (the parent may take pieces too, drawing beside its workers). Each worker is a process with its own GL context: Mesa's llvmpipe rasterises
 // the contexts of one process on one shared set of threads, so only processes keep every core busy.
 //
 // What a worker and its parent say to each other:
@@ -23,6 +23,7 @@
 #include <csignal>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <string>
@@ -72,6 +73,13 @@ class WorkerProcesses {
   // what the parent works out once for all of them (animate's camera fitted over every frame).
   void Tell(const std::string& line);
 
+  // For a parent that draws pieces too, on another thread than Wait's: the next piece's number,
+  // taken as a worker would take it, or nullopt when none is left.
+  std::optional<int> TakePiece();
+  // For that parent when its own pieces failed: makes Wait, on the other thread, stop every worker
+  // and return.
+  void Interrupt();
+
  private:
   struct Worker {
     pid_t pid = -1;
@@ -90,10 +98,13 @@ class WorkerProcesses {
   // The error Wait throws for worker `index` that ended with `status` (waitpid's).
   std::string Failure(size_t index, int status) const;
   void StopAll();
+  void CloseInterrupt();
 
   std::vector<Worker> workers_;
   int pieces_ = 0;
+  std::mutex next_piece_mutex_;   // HandOut's and TakePiece's threads
   int next_piece_ = 1;
+  int interrupt_[2] = {-1, -1};   // a pipe: a byte on it ends Wait
   sigset_t caller_mask_;
   struct sigaction caller_sigpipe_ {};
   int signal_fd_ = -1;
