@@ -1,7 +1,7 @@
 // `animate --jobs N` against the binary: a frame sequence drawn by worker processes is the one
 // process's sequence byte for byte (colour, depth, labels, masks, keypoints, the link names), with
 // one summary line and no temporary file left; a failing worker is the command's one error with
-// nothing written; SIGTERM stops the workers and leaves nothing.
+// nothing written; SIGTERM stops the workers and leaves nothing; the command draws beside N-1 workers.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -59,17 +59,19 @@ TEST_F(AnimateJobsTest, AFailingWorkerIsTheCommandsOneError) {
 }
 
 // SIGTERM to a sequence being drawn by workers stops them, removes their frames and the folder
-// made, and ends the command by that signal.
+// made, and ends the command by that signal. With --jobs 2 the command draws beside one worker.
 TEST_F(AnimateJobsTest, SigtermStopsTheWorkersAndLeavesNothing) {
   URDFSNAP_REQUIRE_GL();
   // started in the background; killed once a worker's first frame is there under its temporary name
   const std::string script =
       "sh -c '\"$0\" \"$@\" & pid=$!; "
       "while ! ls " + Path("f") + " 2>/dev/null | grep -q part; do kill -0 $pid 2>/dev/null || break; sleep 0.02; done; "
+      "echo workers $(pgrep -c -f -- \"--worker-[p]ieces.*" + Path("f") + "\"); "
       "kill -TERM $pid; wait $pid; echo status $?; "
       "sleep 0.2; pgrep -f -- \"--worker-[p]ieces.*" + Path("f") + "\" || echo no workers' " + std::string(URDFSNAP_BINARY);
   const Result r = RunProgram(script, "animate " + mrm_ + " --turntable --duration 20 --size 640x480 --jobs 2 -o " +
                                           Path("f/%03d.png"));
+  EXPECT_NE(r.output.find("workers 1\n"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;   // 128 + SIGTERM
   EXPECT_NE(r.output.find("no workers"), std::string::npos) << r.output;
   EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf"}));
