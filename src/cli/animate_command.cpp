@@ -525,7 +525,9 @@ void RunOne(AnimateOptions& o, request::RenderSession& session, std::optional<st
       if (std::exchange(gl_ready, true)) return;
       gl_loading->wait();
       const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, a.scene.robot.renderer->scene().triangle_count());
-      if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
+      if (o.gl_options.verbose && !rasteriser.empty() && !workers) {
+        std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());   // else the workers say it
+      }
     };
     PreparedAnimation animation;
     PrepareAnimation(o, session, animation, warnings, [&](const PreparedAnimation& a) {
@@ -570,7 +572,10 @@ void Run(AnimateOptions& o) {
   // one process: Mesa loads while the model is read (before workers block the stop signals)
   std::optional<std::future<void>> gl_loading;
   if (jobs == 1) gl_loading = gl::StartLoadingGl(backend.backend);
-  request::RenderSession session(backend);
+  // with workers, their --verbose lines are said (once, by WorkerProcesses), not this process's same ones
+  gl::BackendChoice own_backend = backend;
+  if (jobs > 1) own_backend.on_context = nullptr;
+  request::RenderSession session(own_backend);
   if (bags.size() < 2) return RunOne(o, session, gl_loading, jobs);
   if (!o.trajectory.empty() || !o.print_frame.empty()) {
     throw Error("animate: " + std::to_string(bags.size()) + " bags are animated each with its own motion and "
