@@ -15,7 +15,7 @@ packages=(
   libtinyxml2-dev libexpat1-dev libassimp-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev libbenchmark-dev fonts-liberation libfreetype-dev python3
   libcpp-httplib-dev nodejs
-  libzstd-dev liblz4-dev libsqlite3-dev libqhull-dev
+  libzstd-dev liblz4-dev libsqlite3-dev libqhull-dev libdeflate-dev
   libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev libavutil-dev libwebp-dev ffmpeg
   chromium  # the browser tests (the HTML report, serve's page), headless; CI fails them without it
   python3-jsonschema python3-yaml help2man dpkg-dev

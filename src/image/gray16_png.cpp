@@ -1,5 +1,5 @@
-// EncodeGray16Png: libpng's write API into memory, big-endian samples as PNG stores them, zlib
-// level 1 and no row filter as for the colour images (rendered images compress well either way).
+// EncodeGray16Png: libpng's write API into memory, big-endian samples as PNG stores them, with
+// libpng's zlib at level 1 and no row filter (rendered images compress well either way).
 #include "image/gray16_png.h"
 
 #include <png.h>

@@ -1,10 +1,11 @@
-// PNG encoding: stb_image_write compiled here, privately (STB_IMAGE_WRITE_STATIC), with zlib's
-// compress2 at level 1 as its deflate and the row filter off.
+// PNG encoding: stb_image_write compiled here, privately (STB_IMAGE_WRITE_STATIC), with
+// libdeflate at level 2 as its deflate and the row filter off.
 #include "image/png_writer.h"
 
-#include <zlib.h>
+#include <libdeflate.h>
 
 #include <cstdlib>
+#include <memory>
 #include <string_view>
 
 #include "common/error.h"
@@ -12,14 +13,28 @@
 
 namespace {
 
-// stb's PNG writer calls this in place of its own deflate (about 10x slower); `quality` is stb's
-// compression level, which level 1 overrides: on rendered images (large flat areas) it gives files
-// about as small in a fraction of the time. The result is released by stb with free().
-unsigned char* ZlibCompressFast(unsigned char* data, int data_len, int* out_len, int /*quality*/) {
-  uLongf size = compressBound(static_cast<uLong>(data_len));
-  auto* out = static_cast<unsigned char*>(std::malloc(size));
+// Each thread's compressor, made on its first image: its tables (~0.5 MB) are reused, not rebuilt.
+libdeflate_compressor* ThreadCompressor() {
+  struct Free {
+    void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+  };
+  // libdeflate's level 2: on rendered 640x480 images (mrm, meshbot, Panda) 20-27% faster than
+  // zlib's level 1, which was used before, and files 13-30% smaller; its level 1 is slower.
+  thread_local const std::unique_ptr<libdeflate_compressor, Free> compressor(libdeflate_alloc_compressor(2));
+  return compressor.get();
+}
+
+// stb's PNG writer calls this in place of its own deflate (about 10x slower than zlib's level 1);
+// `quality` is stb's compression level, which this ignores. Returns a zlib stream (header, deflate,
+// Adler-32) that stb releases with free(), or null when out of memory.
+unsigned char* DeflateFast(unsigned char* data, int data_len, int* out_len, int /*quality*/) {
+  libdeflate_compressor* compressor = ThreadCompressor();
+  if (compressor == nullptr) return nullptr;
+  const size_t bound = libdeflate_zlib_compress_bound(compressor, static_cast<size_t>(data_len));
+  auto* out = static_cast<unsigned char*>(std::malloc(bound));
   if (out == nullptr) return nullptr;
-  if (compress2(out, &size, data, static_cast<uLong>(data_len), 1) != Z_OK) {
+  const size_t size = libdeflate_zlib_compress(compressor, data, static_cast<size_t>(data_len), out, bound);
+  if (size == 0) {   // cannot happen with the bound's room; treated as out of memory
     std::free(out);
     return nullptr;
   }
@@ -29,7 +44,7 @@ unsigned char* ZlibCompressFast(unsigned char* data, int data_len, int* out_len,
 
 }  // namespace
 
-#define STBIW_ZLIB_COMPRESS ZlibCompressFast
+#define STBIW_ZLIB_COMPRESS DeflateFast
 #define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBI_WRITE_NO_STDIO

@@ -1,5 +1,5 @@
-// PNG encoding of RGB images, tuned for speed: stb_image_write's PNG framing with zlib's deflate at
-// level 1 and no row filter (about 1.4 ms instead of about 10 ms for 640x480, similar file size).
+// PNG encoding of RGB images, tuned for speed: stb_image_write's PNG framing with libdeflate's deflate
+// at level 2 and no row filter (about 1.1 ms instead of about 10 ms for 640x480, similar file size).
 #pragma once
 
 #include <cstdint>
