@@ -32,8 +32,8 @@ constexpr float kOpaqueAlpha = 0.9998f;
 // mesh file could ask for millions.
 constexpr int kMaxTextureUnits = 32;
 
-// From this many triangles per pixel and up (1 in 8), the colour pass draws the label and depth
-// images too (SceneRenderer::Impl::OneDrawLabels).
+// With a triangle per this many pixels or more, the colour pass draws the label and depth images
+// too (SceneRenderer::Impl::OneDrawLabels).
 constexpr long long kPixelsPerTriangleForOneDraw = 8;
 
 struct Transparent {
