@@ -6,7 +6,9 @@
 // one shape are one draw (RViz's Ogre draws each marker on its own; the pixels are the same).
 // Compiled twice (gl/scene_renderer.cpp): with TEXTURED defined for textured surfaces, and
 // without, where no texture coordinate is fetched or interpolated (a third less to set up and
-// interpolate per triangle).
+// interpolate per triangle); with LABELS defined (scene_renderer.cpp's one-draw path) it also
+// passes on the instance's link label and the vertex's depth along the view axis, for the label
+// and depth images drawn in the same pass.
 #version 330 core
 
 layout(location = 0) in vec3 position;
@@ -25,6 +27,13 @@ layout(location = 2) in vec2 uv;
 out vec2 texture_uv;
 #endif
 
+#ifdef LABELS
+layout(location = 12) in uint label;   // per instance: 1 + the link's index
+uniform vec4 clip_to_view_depth;       // dot with a clip-space position: its view-space depth (-z)
+flat out uint vertex_label;
+out float view_depth;
+#endif
+
 void main() {
   gl_Position = model_view_projection * vec4(position, 1.0);
   // the light shines along -z in view space, so n . l is the view-space normal's z
@@ -32,5 +41,9 @@ void main() {
   vertex_colour = vec4(min(emissive + diffuse.rgb * max(0.0, n.z), vec3(1.0)), diffuse.a);
 #ifdef TEXTURED
   texture_uv = uv;
+#endif
+#ifdef LABELS
+  vertex_label = label;
+  view_depth = dot(clip_to_view_depth, gl_Position);
 #endif
 }

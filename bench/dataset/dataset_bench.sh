@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Throughput of `urdfsnap dataset` at 640x480 (colour, depth, labels, COCO annotations; one process:
 # drawing, llvmpipe's rasteriser and the writer on their own threads), for mrm and, when its folder
-# is given, Franka's Panda (COLLADA meshes); and the cost of one frame through a camera (the
+# is given, Franka's Panda (COLLADA meshes), also in two worker processes (`--jobs 2`, the default
+# on 2 cores); and the cost of one frame through a camera (the
 # calibration tests/data/camera/ost.yaml and a pose; rectified, and with --distort) against the
 # orbit view (`render` of the same robot, same size, all with depth and labels). Wall time follows the load
 # of a shared machine (printed first); CPU ms per sample (all threads) is the load-independent
@@ -16,23 +17,25 @@ franka=${3:-}
 source "$(dirname "$0")/../bench_work.sh" dataset_bench
 
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
-printf '%-8s %8s %8s %10s %10s %12s %12s\n' robot samples wall_s samples/s cpu_s cpu_ms/sample 2core_max/s
+printf '%-8s %4s %8s %8s %10s %10s %12s %12s\n' robot jobs samples wall_s samples/s cpu_s cpu_ms/sample 2core_max/s
 
-# bench NAME MODEL [OPTIONS...]
+# bench NAME JOBS MODEL [OPTIONS...]
 bench() {
-  local name=$1 model=$2
-  shift 2
+  local name=$1 jobs=$2 model=$3
+  shift 3
   rm -rf "$work/out"
   /usr/bin/time -f '%e %U %S' -o "$work/time" "$snap" dataset "$model" -o "$work/out" --count "$samples" \
-    --seed 1 --no-shard --jobs 1 --quiet "$@" 2>/dev/null
+    --seed 1 --no-shard --jobs "$jobs" --quiet "$@" 2>/dev/null
   read -r wall user sys <"$work/time"
-  awk -v n="$name" -v s="$samples" -v w="$wall" -v u="$user" -v y="$sys" 'BEGIN {
-    c = u + y; printf "%-8s %8d %8.2f %10.1f %10.2f %12.2f %12.0f\n", n, s, w, s / w, c, 1000 * c / s, 2 * s / c }'
+  awk -v n="$name" -v j="$jobs" -v s="$samples" -v w="$wall" -v u="$user" -v y="$sys" 'BEGIN {
+    c = u + y; printf "%-8s %4d %8d %8.2f %10.1f %10.2f %12.2f %12.0f\n", n, j, s, w, s / w, c, 1000 * c / s, 2 * s / c }'
 }
 
-bench mrm "$root/models/mrm_description/urdf/mrm.urdf"
+bench mrm 1 "$root/models/mrm_description/urdf/mrm.urdf"
 if [ -n "$franka" ]; then
-  bench panda "$franka/robots/panda/panda.urdf.xacro" --package "franka_description=$franka"
+  for jobs in 1 2; do
+    bench panda "$jobs" "$franka/robots/panda/panda.urdf.xacro" --package "franka_description=$franka"
+  done
 fi
 
 # one frame through a camera against the orbit view: 20 interleaved pairs of render processes

@@ -52,6 +52,13 @@ struct DatasetOptions {
 // each other.
 constexpr int kSamplePiecesPerWorker = 4;
 
+// By default a robot of fewer triangles than this is drawn in one process (its render and writer
+// threads keep two cores busy): mrm (812 triangles) in two worker processes took ~25 % more CPU and
+// longer (400 samples, 3 alternating pairs at load 4-5: 3.7-6.6 s against 1.8-4.1 s), Panda
+// (126,598) gains from them (docs/benchmarks.md, "Dataset samples"). llvmpipe's boundary between
+// light and raster-bound scenes (gl/rasteriser_threads.h).
+constexpr std::size_t kOneProcessBelowTriangles = gl::kRasterBoundTriangles;
+
 // render's options that a dataset draws per sample, or that a dataset has no use for
 constexpr std::string_view kDrawnPerSample[] = {"yaw", "pitch", "distance", "focal", "fit", "fit-margin",
                                                 "camera-pose", "underlay", "underlay-alpha"};
@@ -138,7 +145,10 @@ class PieceFiles {
 void Run(DatasetOptions& o) {
   if (o.jobs.worker()) StopWhenParentEnds();
   const gl::BackendChoice backend = o.gl_options.Choice();
-  const int jobs = o.jobs.WorkerCount(o.sharding.Choose().sharded());
+  const int most_jobs = o.jobs.WorkerCount(o.sharding.Choose().sharded());
+  // by default the number of processes waits for the scene (see kOneProcessBelowTriangles): 0 until
+  // then; --jobs N is N from the start
+  int jobs = o.jobs.jobs > 0 || most_jobs == 1 ? most_jobs : 0;
   // one process: Mesa loads while the model is read (before workers block the stop signals)
   std::optional<std::future<void>> gl_loading;
   if (jobs == 1) gl_loading = gl::StartLoadingGl(backend.backend);
@@ -171,15 +181,17 @@ void Run(DatasetOptions& o) {
                                          std::to_string(spec.range.end - 1)
                                    : "no samples: fewer samples than shards");
 
-  // workers start before this process reads the model, which they read too
-  const std::string suffix = jobs > 1 ? ".part-" + RandomSuffix() : "";
-  const int pieces = kSamplePiecesPerWorker * jobs;
+  // workers given by --jobs start before this process reads the model, which they read too
   std::optional<PieceFiles> piece_files;
   std::optional<WorkerProcesses> workers;
-  if (jobs > 1) {
+  const auto start_workers = [&] {
+    if (jobs == 1) return;
+    const std::string suffix = ".part-" + RandomSuffix();
+    const int pieces = kSamplePiecesPerWorker * jobs;
     piece_files.emplace(spec, suffix, pieces);
     workers.emplace(jobs, "dataset", JobOptions::WorkerOptions(pieces, suffix), pieces);
-  }
+  };
+  if (jobs > 1) start_workers();
 
   Warnings warnings;
   try {
@@ -204,6 +216,17 @@ void Run(DatasetOptions& o) {
                                          : ParseInterval(o.distance, "--distance", 1e-3, 1e6);
     }
     PrintWarnings(warnings);
+    if (jobs == 0) {
+      const std::size_t triangles = renderer.scene().triangle_count();
+      jobs = triangles < kOneProcessBelowTriangles ? 1 : most_jobs;
+      if (o.gl_options.verbose) {
+        std::fprintf(stderr, "urdfsnap: %zu triangles: %s\n", triangles,
+                     jobs == 1 ? "one process (--jobs N for worker processes)"
+                               : (std::to_string(jobs) + " worker processes").c_str());
+      }
+      if (jobs == 1) gl_loading = gl::StartLoadingGl(backend.backend);
+      start_workers();
+    }
     Warnings later;
     std::optional<gl::SceneRenderer> gl;
     if (!workers) {
@@ -262,8 +285,9 @@ void AddDatasetCommand(CLI::App& app) {
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the writer");
   o->jobs.AddOptions(*cmd, "write the samples in N worker processes at once, each taking contiguous runs of "
                           "them as it finishes the last, into one annotations.json (default: one per core this "
-                          "process may use; 1: in this process). With --shard, or a model on standard input, "
-                          "one process");
+                          "process may use, or this process alone for a robot of fewer than 20,000 triangles, "
+                          "whose drawing and writing threads keep two cores busy; 1: in this process). With "
+                          "--shard, or a model on standard input, one process");
   // a stopping signal ends the command after the pieces' COCO entry files are removed
   cmd->callback([o] { RunStoppable([o] { Run(*o); }); });
 }

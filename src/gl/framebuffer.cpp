@@ -2,6 +2,8 @@
 #include "gl/internal/framebuffer.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -58,9 +60,9 @@ std::vector<T> ReadRows(int width, int height, int components, GLenum format, GL
 
 }  // namespace
 
-Framebuffer::Framebuffer(int width, int height, int samples)
+Framebuffer::Framebuffer(int width, int height, int samples, bool labels)
     : width_(width), height_(height), samples_(samples) {
-  glGenRenderbuffers(3, renderbuffers_);
+  glGenRenderbuffers(labels ? 5 : 3, renderbuffers_);
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
   glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
   // 24-bit depth, like the Ogre GL render system RViz uses
@@ -73,6 +75,11 @@ Framebuffer::Framebuffer(int width, int height, int samples)
   glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[1]);
+  if (labels) {
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[3]);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RG32UI, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, renderbuffers_[3]);
+  }
   UseWindowRowOrder();
   Check(draw_fbo_, width, height, samples);
 
@@ -80,17 +87,40 @@ Framebuffer::Framebuffer(int width, int height, int samples)
   glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[2]);
   Check(resolve_fbo_, width, height, 0);
+
+  if (labels) {
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[4]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RG32UI, width, height);
+    glGenFramebuffers(1, &label_fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, label_fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[4]);
+    Check(label_fbo_, width, height, 0);
+  }
 }
 
 Framebuffer::~Framebuffer() {
   glDeleteFramebuffers(1, &draw_fbo_);
   glDeleteFramebuffers(1, &resolve_fbo_);
-  glDeleteRenderbuffers(3, renderbuffers_);
+  if (label_fbo_ != 0) glDeleteFramebuffers(1, &label_fbo_);
+  glDeleteRenderbuffers(label_fbo_ != 0 ? 5 : 3, renderbuffers_);
 }
 
 void Framebuffer::Bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
   glViewport(0, 0, width_, height_);
+  if (labels()) StopLabels();
+}
+
+void Framebuffer::StartLabels() const {
+  const GLenum outputs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, outputs);
+  const GLuint nothing[4] = {0, 0, 0, 0};
+  glClearBufferuiv(GL_COLOR, 1, nothing);
+}
+
+void Framebuffer::StopLabels() const {
+  const GLenum outputs[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
+  glDrawBuffers(2, outputs);
 }
 
 image::Image Framebuffer::ReadPixels() const {
@@ -99,6 +129,24 @@ image::Image Framebuffer::ReadPixels() const {
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_);
   return {width_, height_, ReadRows<std::uint8_t>(width_, height_, 3, GL_RGB, GL_UNSIGNED_BYTE)};
+}
+
+image::LabelImage Framebuffer::ReadLabels(image::DepthImage* depth) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, label_fbo_);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, label_fbo_);
+  const std::vector<std::uint32_t> pairs = ReadRows<std::uint32_t>(width_, height_, 2, GL_RG_INTEGER, GL_UNSIGNED_INT);
+  const size_t pixels = pairs.size() / 2;
+  image::LabelImage labels{width_, height_, std::vector<std::uint16_t>(pixels)};
+  if (depth) *depth = {width_, height_, std::vector<float>(pixels)};
+  for (size_t i = 0; i < pixels; ++i) {
+    labels.labels[i] = static_cast<std::uint16_t>(pairs[2 * i]);
+    if (depth) depth->metres[i] = pairs[2 * i] == 0 ? std::nanf("") : std::bit_cast<float>(pairs[2 * i + 1]);
+  }
+  return labels;
 }
 
 LabelFramebuffer::LabelFramebuffer(int width, int height) : width_(width), height_(height) {

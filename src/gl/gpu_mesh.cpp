@@ -105,6 +105,10 @@ void GpuMesh::DrawInstances(unsigned instances, int count) const {
       glVertexAttribDivisor(location, 1);
     }
   }
+  glEnableVertexAttribArray(location);
+  glVertexAttribIPointer(location, 1, GL_UNSIGNED_INT, sizeof(MeshInstance),
+                         reinterpret_cast<const void*>(offsetof(MeshInstance, label)));
+  glVertexAttribDivisor(location, 1);
   glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, count);
 }
 

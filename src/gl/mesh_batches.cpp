@@ -16,6 +16,7 @@ MeshInstance Instance(const scene::DrawItem& item, const Eigen::Matrix4d& MV, co
   Eigen::Map<Eigen::Matrix3f>(instance.normal_to_view) = normal_to_view.cast<float>();
   Eigen::Map<Eigen::Vector4f>(instance.diffuse) = item.rgba;
   Eigen::Map<Eigen::Vector3f>(instance.emissive) = item.emissive;
+  instance.label = item.link < 0 ? 0 : static_cast<std::uint32_t>(item.link) + 1;
   return instance;
 }
 

@@ -32,6 +32,10 @@ constexpr float kOpaqueAlpha = 0.9998f;
 // mesh file could ask for millions.
 constexpr int kMaxTextureUnits = 32;
 
+// With a triangle per this many pixels or more, the colour pass draws the label and depth images
+// too (SceneRenderer::Impl::OneDrawLabels).
+constexpr long long kPixelsPerTriangleForOneDraw = 8;
+
 struct Transparent {
   double depth;            // squared distance from the eye, for back-to-front order
   std::variant<const scene::DrawItem*, const scene::LineSet*, const scene::TextLabel*, const scene::PointSet*,
@@ -86,6 +90,13 @@ Eigen::Vector3d Centre(const Points& points) {
   return centre;
 }
 
+// Throws unless link index `link` fits the label image's 16 bits (as 1 + link, 0 meaning none).
+void CheckLabelFits(int link) {
+  if (link >= 0xFFFF) {
+    throw Error("the label image holds 65534 links; link index " + std::to_string(link) + " does not fit");
+  }
+}
+
 }  // namespace
 
 struct SceneRenderer::Impl {
@@ -106,10 +117,14 @@ struct SceneRenderer::Impl {
     glDeleteBuffers(1, &instance_buffer);
   }
 
-  // Draws the instances of `batch` with the lit program, textured when its items are.
-  void DrawBatch(const MeshBatch& batch) {
-    const ShaderProgram& program = batch.key.texture_units > 0 ? lit_textured.Get() : lit;
+  // Draws the instances of `batch` with the lit program, textured when its items are, and with
+  // `labels` writing each instance's label and depth too (Framebuffer::StartLabels).
+  void DrawBatch(const MeshBatch& batch, bool labels) {
+    const bool textured = batch.key.texture_units > 0;
+    const ShaderProgram& program =
+        labels ? (textured ? lit_textured_labels.Get() : lit_labels.Get()) : (textured ? lit_textured.Get() : lit);
     program.Use();
+    if (labels) program.Set("clip_to_view_depth", clip_to_view_depth);
     if (batch.key.texture_units > 0) {
       program.Set("texture_units", batch.key.texture_units);
       program.Set("image", 0);
@@ -123,28 +138,54 @@ struct SceneRenderer::Impl {
     batch.mesh->DrawInstances(instance_buffer, static_cast<int>(batch.instances.size()));
   }
 
-  // Draws the batches of `batches` in order and empties it.
-  void DrawBatches(MeshBatches& batches) {
-    for (const MeshBatch& batch : batches.batches()) DrawBatch(batch);
+  // Draws the batches of `batches` in order (with `labels` as DrawBatch's) and empties it.
+  void DrawBatches(MeshBatches& batches, bool labels = false) {
+    for (const MeshBatch& batch : batches.batches()) DrawBatch(batch, labels);
     batches.Clear();
   }
 
   // The colour image: opaque geometry first, then transparent geometry, lines and text blended
-  // back to front, as Ogre orders RViz's scene.
+  // back to front, as Ogre orders RViz's scene. With `labels`, the opaque meshes write their
+  // labels and depths into the framebuffer too (see OneDrawLabels).
   image::Image DrawColour(const scene::Scene& scene, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P,
-                          int width, int height) {
-    ClearColourFramebuffer(scene.background, width, height);
+                          int width, int height, bool labels) {
+    ClearColourFramebuffer(scene.background, width, height, labels);
     const Eigen::Vector3d eye = V.inverse().topRightCorner<3, 1>();
-    DrawBlended(DrawOpaque(scene, V, P, eye), V, P, eye);
+    if (labels) clip_to_view_depth = -Eigen::Vector4f(P.inverse().row(2).cast<float>());
+    DrawBlended(DrawOpaque(scene, V, P, eye, labels), V, P, eye);
     return framebuffer->ReadPixels();
   }
 
-  // Binds the colour framebuffer (made anew for another size) cleared to `background`, depth-tested
-  // and back faces culled.
-  void ClearColourFramebuffer(const Eigen::Vector3f& background, int width, int height) {
-    if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height) {
+  // Whether the colour pass draws the label and depth images too (one vertex pass instead of two).
+  // It can when every draw item is an opaque link's (then the nearest item at a sample is the same
+  // in both images: nothing but links writes depth among the items, and lines, text and blended
+  // geometry write none) and GL multisamples integer images as the colour image is. It pays when
+  // the items have many triangles for the image's size: a label pass costs llvmpipe ~57 ns a
+  // triangle (126,598 triangles of Franka's Panda: 7.2 ms) besides its pixels, the label
+  // attachment ~2.2 ms a 640x480 frame (multisampled clear, writes and resolve), so from about a
+  // triangle per 8 pixels (docs/benchmarks.md, "Dataset samples").
+  bool OneDrawLabels(const scene::Scene& scene, int width, int height) {
+    if (!max_integer_samples) {
+      int most = 0;
+      glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &most);
+      max_integer_samples = most;
+    }
+    if (samples > *max_integer_samples) return false;
+    long long triangles = 0;
+    for (const auto& item : scene.items) {
+      if (item.link < 0 || item.rgba.w() < kOpaqueAlpha) return false;
+      triangles += meshes.Get(item.mesh).triangles();
+    }
+    return triangles * kPixelsPerTriangleForOneDraw >= static_cast<long long>(width) * height;
+  }
+
+  // Binds the colour framebuffer (made anew for another size, or with a label attachment when
+  // `labels` first asks for one) cleared to `background`, depth-tested and back faces culled.
+  void ClearColourFramebuffer(const Eigen::Vector3f& background, int width, int height, bool labels) {
+    if (!framebuffer || framebuffer->width() != width || framebuffer->height() != height ||
+        (labels && !framebuffer->labels())) {
       framebuffer.reset();
-      framebuffer = std::make_unique<Framebuffer>(width, height, samples);
+      framebuffer = std::make_unique<Framebuffer>(width, height, samples, labels);
     }
     framebuffer->Bind();
     glClearColor(background.x(), background.y(), background.z(), 1.0f);
@@ -157,21 +198,25 @@ struct SceneRenderer::Impl {
     glCullFace(GL_BACK);
   }
 
-  // Draws the opaque meshes, point sets and triangles, writing depth; returns the rest (transparent
-  // ones, every line set and label) with their squared distances from `eye`, back to front.
+  // Draws the opaque meshes (with `labels`, their labels and depths too), point sets and triangles,
+  // writing depth; returns the rest (transparent ones, every line set and label) with their squared
+  // distances from `eye`, back to front.
   std::vector<Transparent> DrawOpaque(const scene::Scene& scene, const Eigen::Matrix4d& V,
-                                      const Eigen::Matrix4d& P, const Eigen::Vector3d& eye) {
+                                      const Eigen::Matrix4d& P, const Eigen::Vector3d& eye, bool labels) {
     const Eigen::Matrix4d PV = P * V;
     glDisable(GL_BLEND);
     std::vector<Transparent> transparent;
     for (const auto& item : scene.items) {
+      if (labels) CheckLabelFits(item.link);
       if (item.rgba.w() >= kOpaqueAlpha) {
         batches.Add(item, meshes.Get(item.mesh), kMaxTextureUnits, V, PV, MeshBatches::Join::kAny);
       } else {
         transparent.push_back({(item.X_FG.translation() - eye).squaredNorm(), &item});
       }
     }
-    DrawBatches(batches);
+    if (labels) framebuffer->StartLabels();
+    DrawBatches(batches, labels);
+    if (labels) framebuffer->StopLabels();
     std::vector<const scene::PointSet*> opaque_points;
     for (const auto& points : scene.points) {
       if (Opaque(points)) {
@@ -252,9 +297,7 @@ struct SceneRenderer::Impl {
     label.Set("projection", Eigen::Matrix4f(P.cast<float>()));
     for (const auto& item : scene.items) {
       if (item.link < 0) continue;
-      if (item.link >= 0xFFFF) {
-        throw Error("the label image holds 65534 links; link index " + std::to_string(item.link) + " does not fit");
-      }
+      CheckLabelFits(item.link);
       const Eigen::Matrix4d M = item.X_FG.matrix();
       const GpuMesh& mesh = meshes.Get(item.mesh);
       if (mesh.OutsideClipVolume(P * V * M)) continue;
@@ -267,9 +310,14 @@ struct SceneRenderer::Impl {
   }
 
   int samples;
+  std::optional<int> max_integer_samples;      // GL's, asked when first needed
   std::unique_ptr<GlContext> context;
   ShaderProgram lit;                           // untextured surfaces
   LazyShaderProgram lit_textured{"lit.vert", "lit.frag", "TEXTURED"};   // and textured ones
+  // the same writing labels and depths too, and what turns a clip-space position into its depth
+  LazyShaderProgram lit_labels{"lit.vert", "lit.frag", "LABELS"};
+  LazyShaderProgram lit_textured_labels{"lit.vert", "lit.frag", "TEXTURED LABELS"};
+  Eigen::Vector4f clip_to_view_depth = Eigen::Vector4f::Zero();
   StreamedDrawing streamed;                    // lines, flat triangles and text labels
   LazyShaderProgram label{"label.vert", "label.frag"};
   // the point programs, made for the first point set drawn
@@ -312,8 +360,14 @@ image::Frame SceneRenderer::Render(const scene::Scene& scene, const Eigen::Matri
   Impl& r = *impl_;
   r.context->MakeCurrent();
   image::Frame frame;
-  if (outputs.colour) frame.colour = r.DrawColour(scene, V, P, width, height);
-  if (outputs.depth || outputs.labels) {
+  const bool one_draw = outputs.colour && (outputs.depth || outputs.labels) && r.OneDrawLabels(scene, width, height);
+  if (outputs.colour) frame.colour = r.DrawColour(scene, V, P, width, height, one_draw);
+  if (one_draw) {
+    image::DepthImage depth;
+    image::LabelImage labels = r.framebuffer->ReadLabels(outputs.depth ? &depth : nullptr);
+    if (outputs.depth) frame.depth = std::move(depth);
+    if (outputs.labels) frame.labels = std::move(labels);
+  } else if (outputs.depth || outputs.labels) {
     image::LabelImage labels = r.DrawLabels(scene, V, P, width, height);
     if (outputs.depth) frame.depth = r.label_framebuffer->ReadDepths(labels);
     if (outputs.labels) frame.labels = std::move(labels);

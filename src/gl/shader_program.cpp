@@ -2,6 +2,8 @@
 #include "gl/internal/shader_program.h"
 
 #include <algorithm>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "common/error.h"
@@ -28,12 +30,14 @@ std::string InfoLog(GLuint object, bool is_program) {
   return log.data();
 }
 
-// Compiles shaders/<name>, with `define` #define'd at the end of its #version line (GLSL wants
-// #version before anything but comments).
-GLuint Compile(GLenum stage, const std::string& name, const std::string& define) {
+// Compiles shaders/<name>, with each space-separated word of `defines` #define'd at the end of its
+// #version line (GLSL wants #version before anything but comments).
+GLuint Compile(GLenum stage, const std::string& name, const std::string& defines) {
   const std::string_view source = EmbeddedShader(name);
   const size_t version_end = std::min(source.find('\n', source.find("#version")), source.size());
-  const std::string defined = define.empty() ? "" : "\n#define " + define;
+  std::string defined;
+  std::istringstream words(defines);
+  for (std::string word; words >> word;) defined += "\n#define " + word;
   const GLchar* texts[3] = {source.data(), defined.data(), source.data() + version_end};
   const GLint lengths[3] = {static_cast<GLint>(version_end), static_cast<GLint>(defined.size()),
                             static_cast<GLint>(source.size() - version_end)};

@@ -1,5 +1,5 @@
-// 16-bit greyscale PNG files (depth in millimetres, link labels), written with libpng: stb's PNG
-// writer only has 8-bit channels.
+// 16-bit greyscale PNG files (depth in millimetres, link labels): stb's PNG writer only has 8-bit
+// channels, so the few PNG chunks are framed here around libdeflate's zlib stream.
 #pragma once
 
 #include <cstdint>

@@ -5,30 +5,19 @@
 #include <libdeflate.h>
 
 #include <cstdlib>
-#include <memory>
 #include <string_view>
 
 #include "common/error.h"
 #include "common/atomic_file.h"
+#include "image/zlib_compressor.h"
 
 namespace {
-
-// Each thread's compressor, made on its first image: its tables (~0.5 MB) are reused, not rebuilt.
-libdeflate_compressor* ThreadCompressor() {
-  struct Free {
-    void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
-  };
-  // libdeflate's level 2: on rendered 640x480 images (mrm, meshbot, Panda) 20-27% faster than
-  // zlib's level 1, which was used before, and files 13-30% smaller; its level 1 is slower.
-  thread_local const std::unique_ptr<libdeflate_compressor, Free> compressor(libdeflate_alloc_compressor(2));
-  return compressor.get();
-}
 
 // stb's PNG writer calls this in place of its own deflate (about 10x slower than zlib's level 1);
 // `quality` is stb's compression level, which this ignores. Returns a zlib stream (header, deflate,
 // Adler-32) that stb releases with free(), or null when out of memory.
 unsigned char* DeflateFast(unsigned char* data, int data_len, int* out_len, int /*quality*/) {
-  libdeflate_compressor* compressor = ThreadCompressor();
+  libdeflate_compressor* compressor = urdfsnap::image::ThreadZlibCompressor();
   if (compressor == nullptr) return nullptr;
   const size_t bound = libdeflate_zlib_compress_bound(compressor, static_cast<size_t>(data_len));
   auto* out = static_cast<unsigned char*>(std::malloc(bound));

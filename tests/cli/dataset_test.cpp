@@ -153,6 +153,22 @@ TEST_F(DatasetTest, WorkersWriteTheSameFilesAsOneProcess) {
   EXPECT_EQ(FilesBelow(Path("three")), files);
 }
 
+// By default a light robot (mrm: 812 triangles) is drawn in this process alone, which --verbose
+// says; --jobs N starts N worker processes whatever the robot.
+TEST_F(DatasetTest, ALightRobotIsOneProcessUnlessJobsAreGiven) {
+  URDFSNAP_REQUIRE_GL();
+  const std::string dataset = "dataset " + kMrm + " --count 2 --size 96x72 --quiet --verbose -o ";
+  const Result light = RunUrdfsnap(dataset + Path("light"));
+  ASSERT_EQ(light.status, 0) << light.output;
+  EXPECT_NE(light.output.find("urdfsnap: 812 triangles: one process (--jobs N for worker processes)\n"),
+            std::string::npos)
+      << light.output;
+  const Result given = RunUrdfsnap(dataset + Path("given") + " --jobs 2");
+  ASSERT_EQ(given.status, 0) << given.output;
+  EXPECT_EQ(given.output.find("triangles:"), std::string::npos) << given.output;
+  EXPECT_EQ(FilesBelow(Path("given")), FilesBelow(Path("light")));
+}
+
 // A worker that fails (here: every file past 4 KB refused, as on a full disk) is the command's one
 // error line, status 2, with no annotations.json and none of the workers' entry files.
 TEST_F(DatasetTest, AFailingWorkerIsTheCommandsOneError) {

@@ -1,9 +1,11 @@
 // The depth and link-label images against geometry computed by hand: the depth of known faces at
 // known pixels, the link there, nothing off the robot, transparent links included, grid and TF
-// markers and text never in them, exact values (no multisample blend).
+// markers and text never in them, exact values (no multisample blend); dense meshes' drawn by the
+// colour pass, at its first sample.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 
 #include "gl/scene_renderer.h"
 #include "front_view.h"
@@ -129,6 +131,91 @@ TEST_F(FrameOutputsTest, ValuesAreExactAtEdgesAndOnlyWhatIsAskedForIsMade) {
   const image::Frame labels_only = renderer_->Render(scene, FrontView(), kWidth, kHeight, {false, false, true});
   EXPECT_TRUE(labels_only.colour.rgb.empty());
   EXPECT_EQ(labels_only.labels.labels, frame.labels.labels);
+}
+
+// A square of 2·n·n triangles in the plane x = 0.2 z, y and z in [-0.5, 0.5], facing the camera.
+geometry::TriangleMesh DenseSlantedSquare(int n) {
+  geometry::TriangleMesh square;
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      const float y = -0.5f + static_cast<float>(i) / n, z = -0.5f + static_cast<float>(j) / n;
+      square.positions.emplace_back(0.2f * z, y, z);
+      square.normals.push_back(Eigen::Vector3f(1, 0, -0.2f).normalized());
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const auto corner = static_cast<std::uint32_t>(i * (n + 1) + j);
+      square.indices.insert(square.indices.end(),
+                            {corner, corner + n + 1, corner + n + 2, corner, corner + n + 2, corner + 1});
+    }
+  }
+  return square;
+}
+
+// A dense square (800 triangles on 64x48 pixels: a triangle per 8 pixels or more, so the colour
+// pass draws the labels and depths too) 0.3 m behind the image plane of FrontView, link 1, in
+// front of a box, link 0.
+Scene DenseScene() {
+  DrawItem square;
+  square.mesh = std::make_shared<const geometry::TriangleMesh>(DenseSlantedSquare(20));
+  square.X_FG = Eigen::Translation3d(-0.3, 0, 0);
+  square.rgba = {0, 1, 0, 1};
+  square.link = 1;
+  Scene scene;
+  scene.items.push_back(Box(0, {-0.8, 0, 0}, {0.2, 2, 2}));
+  scene.items.push_back(square);
+  return scene;
+}
+
+TEST_F(FrameOutputsTest, DenseMeshesTakeLabelsAndDepthFromTheColourPassDifferingOnlyOnOutlines) {
+  const Scene scene = DenseScene();
+  const image::Frame one_draw = Render(scene);
+  // without the colour image they have a pass of their own, sampling pixel centres
+  const image::Frame own_pass = renderer_->Render(scene, FrontView(), kWidth, kHeight, {false, true, true});
+  int outline = 0, moved = 0;
+  for (int y = 1; y < kHeight - 1; ++y) {
+    for (int x = 1; x < kWidth - 1; ++x) {
+      const int centre = LabelAt(own_pass, x, y);
+      bool interior = true;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) interior = interior && LabelAt(own_pass, x + dx, y + dy) == centre;
+      }
+      outline += interior ? 0 : 1;
+      const int label = LabelAt(one_draw, x, y);
+      if (label != centre) {
+        ++moved;
+        EXPECT_FALSE(interior) << x << "," << y;
+      } else if (interior && label != 0) {
+        EXPECT_NEAR(DepthAt(one_draw, x, y), DepthAt(own_pass, x, y), 1e-4f) << x << "," << y;
+      }
+      if (label == 0) {
+        EXPECT_TRUE(std::isnan(DepthAt(one_draw, x, y))) << x << "," << y;
+      }
+    }
+  }
+  EXPECT_GT(moved, 0);
+  EXPECT_LT(moved, outline);
+  EXPECT_EQ(LabelAt(one_draw, 32, 24), 2);
+  EXPECT_EQ(LabelAt(one_draw, 32, 5), 1);   // the box above the square
+}
+
+TEST_F(FrameOutputsTest, DenseMeshesLabelsAreThoseAtTheFirstSampleOfEachPixel) {
+  // llvmpipe's first sample lies at (0.375, 0.125) of a pixel from its top left corner (see
+  // RendererTest.MultisamplesLieWhereTheyLieInRvizsWindow): a link covering only the upper left
+  // eighth of pixel (32, 24) is that pixel's label, one covering only its lower right eighth is
+  // not; a pass of their own sees neither (the centre is the square's)
+  const auto label_at_32_24 = [&](double x0, double x1, double y0, double y1, const image::FrameOutputs& outputs) {
+    Scene scene = DenseScene();
+    scene.items.push_back(ImageRectangle(x0, x1, y0, y1));
+    scene.items.back().link = 4;
+    return LabelAt(renderer_->Render(scene, FrontView(), kWidth, kHeight, outputs), 32, 24);
+  };
+  const image::FrameOutputs all{true, true, true}, no_colour{false, true, true};
+  EXPECT_EQ(label_at_32_24(32, 32.5, 24, 24.25, all), 5);
+  EXPECT_EQ(label_at_32_24(32.5, 33, 24.75, 25, all), 2);
+  EXPECT_EQ(label_at_32_24(32, 32.5, 24, 24.25, no_colour), 2);
+  EXPECT_EQ(label_at_32_24(32.5, 33, 24.75, 25, no_colour), 2);
 }
 
 }  // namespace

@@ -95,6 +95,7 @@
   X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                    \
   X(PFNGLUSEPROGRAMPROC, glUseProgram)                                \
   X(PFNGLVERTEXATTRIBDIVISORPROC, glVertexAttribDivisor)              \
+  X(PFNGLVERTEXATTRIBIPOINTERPROC, glVertexAttribIPointer)            \
   X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer)              \
   X(PFNGLVIEWPORTPROC, glViewport)
 

@@ -6,21 +6,25 @@
 // render library; needs a current GL context.
 #pragma once
 
+#include <cstdint>
+
 #include <Eigen/Core>
 
 #include "geometry/triangle_mesh.h"
 
 namespace urdfsnap::gl {
 
-// One drawing of a mesh, as shaders/lit.vert reads it per instance (attributes 3 to 11): where the
+// One drawing of a mesh, as shaders/lit.vert reads it per instance (attributes 3 to 12): where the
 // mesh goes (model-view-projection matrix), how its normals turn into the view (the inverse
-// transpose of the model-view matrix, which undoes scaling), its diffuse rgba and emissive rgb.
-// Column-major, as GL takes matrices; 128 bytes.
+// transpose of the model-view matrix, which undoes scaling), its diffuse rgba and emissive rgb, and
+// its link label (1 + the link's index, 0 for none; read only by the LABELS variant).
+// Column-major, as GL takes matrices; 132 bytes.
 struct MeshInstance {
   float model_view_projection[16];
   float normal_to_view[9];
   float diffuse[4];
   float emissive[3];
+  std::uint32_t label;
 };
 
 class GpuMesh {
@@ -30,10 +34,12 @@ class GpuMesh {
   GpuMesh(const GpuMesh&) = delete;
   GpuMesh& operator=(const GpuMesh&) = delete;
 
+  int triangles() const { return index_count_ / 3; }
+
   // Draws the triangles with the program in use (attribute 0 position, 1 normal, 2 uv).
   void Draw() const;
   // Draws `count` instances, the MeshInstances at the start of buffer `instances`, in their order
-  // (so blended instances keep it), with the program in use (attributes 0 to 2 as Draw's, 3 to 11
+  // (so blended instances keep it), with the program in use (attributes 0 to 2 as Draw's, 3 to 12
   // the instance's).
   void DrawInstances(unsigned instances, int count) const;
 

@@ -13,8 +13,9 @@ namespace urdfsnap::gl {
 
 class ShaderProgram {
  public:
-  // Compiles shaders/<vertex_name> and shaders/<fragment_name> and links them; `define`, when not
-  // empty, is #define'd in both (after their #version line), for the sources' #ifdef variants.
+  // Compiles shaders/<vertex_name> and shaders/<fragment_name> and links them; each space-separated
+  // word of `define` is #define'd in both (after their #version line), for the sources' #ifdef
+  // variants.
   // Throws urdfsnap::Error with the shader's name and GL's info log when either step fails.
   ShaderProgram(const std::string& vertex_name, const std::string& fragment_name, const std::string& define = "");
   ~ShaderProgram();
