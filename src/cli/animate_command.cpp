@@ -4,16 +4,13 @@
 // frames. Every output appears only when complete; --print-frame K instead prints the `render`
 // options that make frame K.
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <future>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <thread>
 #include <utility>
 
 #include "animation/animation_frames.h"
@@ -33,6 +30,7 @@
 #include "cli/ignored_options.h"
 #include "cli/job_options.h"
 #include "cli/model_source.h"
+#include "cli/pieces_beside_workers.h"
 #include "cli/render_options.h"
 #include "cli/shard_options.h"
 #include "cli/worker_processes.h"
@@ -367,10 +365,6 @@ std::int64_t DrawPiece(const AnimateOptions& o, request::RenderSession& session,
   return range.size();
 }
 
-// Thrown out of this process's own frames once its workers have failed or were stopped (the
-// exception Wait threw says which).
-struct WorkersEnded {};
-
 // A frame sequence drawn by `workers` (started with `suffix` as the temporary names of their files,
 // the frames cut into `pieces`) and by this process beside them, taking pieces as they do: a worker
 // fewer to start, read the model and upload it to the GL. Wait runs on a second thread; this one
@@ -390,40 +384,10 @@ void WriteByWorkers(const AnimateOptions& o, const std::string& suffix, request:
   WriteLabelNames(o, a, outputs);
   PrintWarnings(warnings);   // --strict ends here; the workers are stopped
   stream::ProgressBar bar(range.size(), "frames", BarDisplay(o));
-  std::mutex progress_mutex;   // the bar and the counts below, updated by both threads
-  std::int64_t by_workers = 0, by_this = 0;
   Warnings later, own;         // the workers' (Wait's thread) and this process's frames'
-  std::atomic<bool> workers_ended = false;
-  std::exception_ptr waited;
-  std::thread waiter([&] {
-    try {
-      workers.Wait([&](std::int64_t done) {
-        const std::lock_guard lock(progress_mutex);
-        bar.Update((by_workers = done) + by_this);
-      }, later);
-    } catch (...) {
-      waited = std::current_exception();
-      workers_ended = true;
-    }
-  });
-  try {
-    std::int64_t done = 0;
-    while (const std::optional<int> piece = workers.TakePiece()) {
-      done += DrawPiece(o, session, a, *piece, pieces, suffix, [&](std::int64_t written) {
-        if (workers_ended) throw WorkersEnded{};
-        const std::lock_guard lock(progress_mutex);
-        bar.Update(by_workers + (by_this = done + written));
-      }, own);
-    }
-  } catch (const WorkersEnded&) {
-    // Wait's exception, below
-  } catch (...) {
-    workers.Interrupt();
-    waiter.join();
-    throw;
-  }
-  waiter.join();
-  if (waited) std::rethrow_exception(waited);
+  DrawBesideWorkers(workers, [&](int piece, const std::function<void(std::int64_t)>& progress) {
+    return DrawPiece(o, session, a, piece, pieces, suffix, progress, own);
+  }, [&](std::int64_t done) { bar.Update(done); }, later);
   for (const auto& files : staged) files->Finish();
   outputs.Commit();
   bar.Finish(WrittenText(o.output, range));

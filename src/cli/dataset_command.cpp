@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <optional>
 #include <string_view>
@@ -15,6 +16,7 @@
 #include "cli/gl_options.h"
 #include "cli/job_options.h"
 #include "cli/model_source.h"
+#include "cli/pieces_beside_workers.h"
 #include "cli/shard_options.h"
 #include "cli/worker_processes.h"
 #include "common/atomic_file.h"
@@ -47,7 +49,7 @@ struct DatasetOptions {
   GlOptions gl_options;
 };
 
-// The pieces the samples are cut into per worker: a sample costs several frames' work (colour,
+// The pieces the samples are cut into per drawing process: a sample costs several frames' work (colour,
 // labels, depth, three PNGs, its COCO entries), so few pieces keep the workers within one of
 // each other.
 constexpr int kSamplePiecesPerWorker = 4;
@@ -103,22 +105,32 @@ dataset::CocoParts PieceParts(const dataset::DatasetSpec& spec, const std::strin
   return {stem + ".images", stem + ".annotations"};
 }
 
+// Writes the samples of piece `piece` of `pieces`, and their COCO entries in the piece's files
+// (named with `suffix`, left for the parent), calling `progress` with the piece's samples written
+// so far; returns how many samples the piece has. The sample folders are made.
+std::int64_t DrawPiece(const render::RobotRenderer& renderer, gl::SceneRenderer& gl,
+                       const render::CameraSettings& camera, dataset::DatasetSpec spec, int piece, int pieces,
+                       const std::string& suffix, const std::function<void(std::int64_t)>& progress,
+                       Warnings& warnings) {
+  spec.range = shard::FramesOfShard(spec.count, shard::CheckedShard(piece, pieces, "piece"));
+  const dataset::CocoParts parts = PieceParts(spec, suffix, piece);
+  AtomicFile images(parts.images), annotations(parts.annotations);
+  dataset::WriteSamples(renderer, gl, camera, spec, images, annotations, progress, warnings);
+  images.Commit();
+  annotations.Commit();
+  return spec.range.size();
+}
+
 // A worker process of a parent's `dataset --jobs N` (the hidden --worker-pieces and
 // --worker-output, a suffix): the samples of each piece the parent hands it, and their COCO entries in the
 // piece's files; its progress on stdout, its warnings on stderr for the parent to gather.
 void DrawPieces(const DatasetOptions& o, const render::RobotRenderer& renderer, gl::SceneRenderer& gl,
-                const render::CameraSettings& camera, dataset::DatasetSpec spec, Warnings& warnings) {
+                const render::CameraSettings& camera, const dataset::DatasetSpec& spec, Warnings& warnings) {
   dataset::MakeSampleFolders(spec.folder);
   std::int64_t done = 0;
   while (const std::optional<int> piece = NextPiece()) {
-    spec.range = shard::FramesOfShard(spec.count, shard::CheckedShard(*piece, o.jobs.worker_pieces, "piece"));
-    const dataset::CocoParts parts = PieceParts(spec, o.jobs.worker_output, *piece);
-    AtomicFile images(parts.images), annotations(parts.annotations);
-    dataset::WriteSamples(renderer, gl, camera, spec, images, annotations,
-                          [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);
-    images.Commit();
-    annotations.Commit();
-    done += spec.range.size();
+    done += DrawPiece(renderer, gl, camera, spec, *piece, o.jobs.worker_pieces, o.jobs.worker_output,
+                      [&](std::int64_t written) { ReportImagesDone(done + written); }, warnings);
   }
   PrintWarningsBeforeError(warnings);   // the parent gathers them (and applies --strict)
 }
@@ -181,15 +193,21 @@ void Run(DatasetOptions& o) {
                                          std::to_string(spec.range.end - 1)
                                    : "no samples: fewer samples than shards");
 
-  // workers given by --jobs start before this process reads the model, which they read too
+  // with --jobs N > 1, this process draws beside N-1 workers, which start before it reads the
+  // model (they read it too); Mesa loads after they block the stop signals (its thread then has
+  // them blocked too)
   std::optional<PieceFiles> piece_files;
   std::optional<WorkerProcesses> workers;
+  std::string suffix;
+  int pieces = 0;
   const auto start_workers = [&] {
-    if (jobs == 1) return;
-    const std::string suffix = ".part-" + RandomSuffix();
-    const int pieces = kSamplePiecesPerWorker * jobs;
-    piece_files.emplace(spec, suffix, pieces);
-    workers.emplace(jobs, "dataset", JobOptions::WorkerOptions(pieces, suffix), pieces);
+    if (jobs > 1) {
+      suffix = ".part-" + RandomSuffix();
+      pieces = kSamplePiecesPerWorker * jobs;
+      piece_files.emplace(spec, suffix, pieces);
+      workers.emplace(jobs - 1, "dataset", JobOptions::WorkerOptions(pieces, suffix), pieces);
+    }
+    gl_loading = gl::StartLoadingGl(backend.backend);
   };
   if (jobs > 1) start_workers();
 
@@ -222,30 +240,37 @@ void Run(DatasetOptions& o) {
       if (o.gl_options.verbose) {
         std::fprintf(stderr, "urdfsnap: %zu triangles: %s\n", triangles,
                      jobs == 1 ? "one process (--jobs N for worker processes)"
-                               : (std::to_string(jobs) + " worker processes").c_str());
+                               : (std::to_string(jobs) + " processes (this one and its workers)").c_str());
       }
-      if (jobs == 1) gl_loading = gl::StartLoadingGl(backend.backend);
       start_workers();
     }
     Warnings later;
-    std::optional<gl::SceneRenderer> gl;
-    if (!workers) {
-      // the writer thread keeps a core busy while samples are drawn, unless drawing outweighs it
-      // (as animate decides; set while no other thread runs: before the GL context reads it)
-      gl_loading->wait();
-      const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, renderer.scene().triangle_count());
-      if (o.gl_options.verbose && !rasteriser.empty()) std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
-      gl.emplace(settings.samples, backend);
-      if (o.jobs.worker()) return DrawPieces(o, renderer, *gl, *settings.camera, spec, later);
+    // the writer thread keeps a core busy while samples are drawn, unless drawing outweighs it
+    // (as animate decides; set before the GL context reads it, while no thread but Wait's (not
+    // started yet) and Mesa's loader runs)
+    gl_loading->wait();
+    const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, renderer.scene().triangle_count());
+    // with workers, they say their --verbose lines (passed on once), not this process the same
+    if (o.gl_options.verbose && !rasteriser.empty() && !workers) {
+      std::fprintf(stderr, "urdfsnap: %s\n", rasteriser.c_str());
     }
+    gl::BackendChoice own_backend = backend;
+    if (workers) own_backend.on_context = nullptr;
+    gl::SceneRenderer gl(settings.samples, own_backend);
+    if (o.jobs.worker()) return DrawPieces(o, renderer, gl, *settings.camera, spec, later);
     stream::ProgressBar bar(spec.range.size(), "samples",
                             o.quiet ? stream::ProgressBar::Display::kNever : stream::ProgressBar::Display::kIfTerminal);
     const auto progress = [&](std::int64_t done) { bar.Update(done); };
     if (workers) {
-      workers->Wait(progress, later);
+      dataset::MakeSampleFolders(spec.folder);
+      Warnings own;   // this process's samples' (Wait's thread adds the workers' to `later`)
+      DrawBesideWorkers(*workers, [&](int piece, const std::function<void(std::int64_t)>& piece_progress) {
+        return DrawPiece(renderer, gl, *settings.camera, spec, piece, pieces, suffix, piece_progress, own);
+      }, progress, later);
+      for (const std::string& message : own.messages()) later.Add(message);
       dataset::WriteCocoFile(*robot, spec, piece_files->parts());
     } else {
-      dataset::WriteDataset(renderer, *gl, *settings.camera, spec, progress, later);
+      dataset::WriteDataset(renderer, gl, *settings.camera, spec, progress, later);
     }
     bar.Finish();
     PrintWarnings(later);
@@ -283,8 +308,8 @@ void AddDatasetCommand(CLI::App& app) {
   o->sharding.AddOptions(*cmd, "samples");
   AddSceneOptions(*cmd, o->request);
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the writer");
-  o->jobs.AddOptions(*cmd, "write the samples in N worker processes at once, each taking contiguous runs of "
-                          "them as it finishes the last, into one annotations.json (default: one per core this "
+  o->jobs.AddOptions(*cmd, "write the samples in N processes at once (this one and N-1 workers), each taking "
+                          "contiguous runs of them as it finishes the last, into one annotations.json (default: one per core this "
                           "process may use, or this process alone for a robot of fewer than 20,000 triangles, "
                           "whose drawing and writing threads keep two cores busy; 1: in this process). With "
                           "--shard, or a model on standard input, one process");
