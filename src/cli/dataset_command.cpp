@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "cli/frame_memory.h"
 #include "cli/gl_options.h"
 #include "cli/job_options.h"
 #include "cli/model_source.h"
@@ -156,6 +157,7 @@ class PieceFiles {
 
 void Run(DatasetOptions& o) {
   if (o.jobs.worker()) StopWhenParentEnds();
+  ReuseFreedFrameMemory();
   const gl::BackendChoice backend = o.gl_options.Choice();
   const int most_jobs = o.jobs.WorkerCount(o.sharding.Choose().sharded());
   // by default the number of processes waits for the scene (see kOneProcessBelowTriangles): 0 until
