@@ -56,10 +56,10 @@ struct DatasetOptions {
 constexpr int kSamplePiecesPerWorker = 4;
 
 // By default a robot of fewer triangles than this is drawn in one process (its render and writer
-// threads keep two cores busy): mrm (812 triangles) in two worker processes took ~25 % more CPU and
-// longer (400 samples, 3 alternating pairs at load 4-5: 3.7-6.6 s against 1.8-4.1 s), Panda
-// (126,598) gains from them (docs/benchmarks.md, "Dataset samples"). llvmpipe's boundary between
-// light and raster-bound scenes (gl/rasteriser_threads.h).
+// threads keep two cores busy): mrm (812 triangles) in two processes (this one beside a worker)
+// took ~15 % more CPU and was no faster (400 samples, 5 alternating rounds at load 2.8-3.3:
+// 1.61-1.82 s against 1.64-1.76 s), Panda (126,598) gains from them (docs/benchmarks.md, "Dataset
+// samples"). llvmpipe's boundary between light and raster-bound scenes (gl/rasteriser_threads.h).
 constexpr std::size_t kOneProcessBelowTriangles = gl::kRasterBoundTriangles;
 
 // render's options that a dataset draws per sample, or that a dataset has no use for
