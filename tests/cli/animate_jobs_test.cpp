@@ -62,18 +62,9 @@ TEST_F(AnimateJobsTest, AFailingWorkerIsTheCommandsOneError) {
 // made, and ends the command by that signal. With --jobs 2 the command draws beside one worker.
 TEST_F(AnimateJobsTest, SigtermStopsTheWorkersAndLeavesNothing) {
   URDFSNAP_REQUIRE_GL();
-  // started in the background; killed once a worker's first frame is there under its temporary name
-  const std::string script =
-      "sh -c '\"$0\" \"$@\" & pid=$!; "
-      "while ! ls " + Path("f") + " 2>/dev/null | grep -q part; do kill -0 $pid 2>/dev/null || break; sleep 0.02; done; "
-      "echo workers $(pgrep -c -f -- \"--worker-[p]ieces.*" + Path("f") + "\"); "
-      "kill -TERM $pid; wait $pid; echo status $?; "
-      "sleep 0.2; pgrep -f -- \"--worker-[p]ieces.*" + Path("f") + "\" || echo no workers' " + std::string(URDFSNAP_BINARY);
-  const Result r = RunProgram(script, "animate " + mrm_ + " --turntable --duration 20 --size 640x480 --jobs 2 -o " +
-                                          Path("f/%03d.png"));
-  EXPECT_NE(r.output.find("workers 1\n"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;   // 128 + SIGTERM
-  EXPECT_NE(r.output.find("no workers"), std::string::npos) << r.output;
+  ExpectSigtermStopsTheOneWorker("animate " + mrm_ + " --turntable --duration 20 --size 640x480 --jobs 2 -o " +
+                                     Path("f/%03d.png"),
+                                 Path("f"));
   EXPECT_EQ(Listing(), (std::vector<std::string>{"mrm.urdf"}));
 }
 

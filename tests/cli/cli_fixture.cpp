@@ -41,6 +41,20 @@ void ExpectTheOneFullDiskError(const std::string& arguments) {
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << arguments << "\n" << r.output;
 }
 
+void ExpectSigtermStopsTheOneWorker(const std::string& arguments, const std::string& folder) {
+  const std::string workers = "pgrep -f -- \"--worker-[p]ieces.*" + folder + "\"";
+  const std::string script =
+      "sh -c '\"$0\" \"$@\" & pid=$!; "
+      "while ! ls " + folder + " 2>/dev/null | grep -q part; do kill -0 $pid 2>/dev/null || break; sleep 0.02; done; "
+      "echo workers $(" + workers + " | wc -l); "
+      "kill -TERM $pid; wait $pid; echo status $?; "
+      "sleep 0.2; " + workers + " || echo no workers' " + std::string(URDFSNAP_BINARY);
+  const Result r = RunProgram(script, arguments);
+  EXPECT_NE(r.output.find("workers 1\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;   // 128 + SIGTERM
+  EXPECT_NE(r.output.find("no workers"), std::string::npos) << r.output;
+}
+
 std::string ReadBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream bytes;

@@ -33,6 +33,12 @@ Result RunProgram(const std::string& program, const std::string& arguments,
 // large"), exit status 2.
 void ExpectTheOneFullDiskError(const std::string& arguments);
 
+// Runs "urdfsnap ARGUMENTS" (with --jobs 2) in the background, sends it SIGTERM once a file with
+// "part" in its name (a worker's or the command's own, under its temporary name) is in `folder`,
+// and expects exactly one worker process to have run beside the command, the command to end by
+// that signal (status 143) and no worker to be left.
+void ExpectSigtermStopsTheOneWorker(const std::string& arguments, const std::string& folder);
+
 // The bytes of a file ("" when it cannot be read).
 std::string ReadBytes(const std::string& path);
 

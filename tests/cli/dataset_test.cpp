@@ -184,17 +184,8 @@ TEST_F(DatasetTest, AFailingWorkerIsTheCommandsOneError) {
 // with no annotations.json.
 TEST_F(DatasetTest, SigtermStopsTheOneWorkerAndLeavesNoAnnotations) {
   URDFSNAP_REQUIRE_GL();
-  // started in the background; killed once a piece's entry file is there under its temporary name
-  const std::string script =
-      "sh -c '\"$0\" \"$@\" & pid=$!; "
-      "while ! ls " + Path("d") + " 2>/dev/null | grep -q part; do kill -0 $pid 2>/dev/null || break; sleep 0.02; done; "
-      "echo workers $(pgrep -c -f -- \"--worker-[p]ieces.*" + Path("d") + "\"); "
-      "kill -TERM $pid; wait $pid; echo status $?; "
-      "sleep 0.2; pgrep -f -- \"--worker-[p]ieces.*" + Path("d") + "\" || echo no workers' " + std::string(URDFSNAP_BINARY);
-  const Result r = RunProgram(script, "dataset " + kMrm + " -o " + Path("d") + " --count 5000 --size 640x480 --jobs 2");
-  EXPECT_NE(r.output.find("workers 1\n"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;   // 128 + SIGTERM
-  EXPECT_NE(r.output.find("no workers"), std::string::npos) << r.output;
+  ExpectSigtermStopsTheOneWorker("dataset " + kMrm + " -o " + Path("d") + " --count 5000 --size 640x480 --jobs 2",
+                                 Path("d"));
   for (const auto& entry : std::filesystem::directory_iterator(Path("d"))) {
     EXPECT_TRUE(entry.is_directory()) << entry.path();   // images/, depth/, labels/ only
   }
