@@ -50,9 +50,9 @@ struct DatasetOptions {
   GlOptions gl_options;
 };
 
-// The pieces the samples are cut into per drawing process: a sample costs several frames' work (colour,
-// labels, depth, three PNGs, its COCO entries), so few pieces keep the workers within one of
-// each other.
+// The pieces the samples are cut into per drawing process: a sample costs several frames' work
+// (colour, labels, depth, three PNGs, its COCO entries), so few pieces keep the processes within
+// one of each other.
 constexpr int kSamplePiecesPerWorker = 4;
 
 // By default a robot of fewer triangles than this is drawn in one process (its render and writer
@@ -108,7 +108,7 @@ dataset::CocoParts PieceParts(const dataset::DatasetSpec& spec, const std::strin
 
 // Writes the samples of piece `piece` of `pieces`, and their COCO entries in the piece's files
 // (named with `suffix`, left for the parent), calling `progress` with the piece's samples written
-// so far; returns how many samples the piece has. The sample folders are made.
+// so far; returns how many samples the piece has. The sample folders must have been made.
 std::int64_t DrawPiece(const render::RobotRenderer& renderer, gl::SceneRenderer& gl,
                        const render::CameraSettings& camera, dataset::DatasetSpec spec, int piece, int pieces,
                        const std::string& suffix, const std::function<void(std::int64_t)>& progress,
@@ -248,8 +248,7 @@ void Run(DatasetOptions& o) {
     }
     Warnings later;
     // the writer thread keeps a core busy while samples are drawn, unless drawing outweighs it
-    // (as animate decides; set before the GL context reads it, while no thread but Wait's (not
-    // started yet) and Mesa's loader runs)
+    // (as animate decides; set while no other thread runs: before the GL context reads it)
     gl_loading->wait();
     const std::string rasteriser = gl::LeaveCoresToOtherThreads(1, renderer.scene().triangle_count());
     // with workers, they say their --verbose lines (passed on once), not this process the same
@@ -311,10 +310,10 @@ void AddDatasetCommand(CLI::App& app) {
   AddSceneOptions(*cmd, o->request);
   o->gl_options.AddOptions(*cmd, ", and how many threads llvmpipe rasterises on beside the writer");
   o->jobs.AddOptions(*cmd, "write the samples in N processes at once (this one and N-1 workers), each taking "
-                          "contiguous runs of them as it finishes the last, into one annotations.json (default: one per core this "
-                          "process may use, or this process alone for a robot of fewer than 20,000 triangles, "
-                          "whose drawing and writing threads keep two cores busy; 1: in this process). With "
-                          "--shard, or a model on standard input, one process");
+                          "contiguous runs of them as it finishes the last, into one annotations.json (default: "
+                          "one per core this process may use, or this process alone for a robot of fewer than "
+                          "20,000 triangles, whose drawing and writing threads keep two cores busy; 1: in this "
+                          "process). With --shard, or a model on standard input, one process");
   // a stopping signal ends the command after the pieces' COCO entry files are removed
   cmd->callback([o] { RunStoppable([o] { Run(*o); }); });
 }
