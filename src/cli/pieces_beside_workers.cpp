@@ -1,7 +1,10 @@
 // DrawBesideWorkers: Wait on a second thread, this process's pieces on the calling one.
 #include "cli/pieces_beside_workers.h"
 
+#include <signal.h>
+
 #include <atomic>
+#include <ctime>
 #include <exception>
 #include <mutex>
 #include <optional>
@@ -15,13 +18,25 @@ namespace {
 // exception Wait threw says which).
 struct WorkersEnded {};
 
+// Throws StoppedBySignal for a SIGINT or SIGTERM waiting for this process, taking it: once Wait has
+// returned, nothing reads them (they stay blocked until the WorkerProcesses are destroyed).
+void ThrowIfStopped() {
+  sigset_t stop;
+  sigemptyset(&stop);
+  sigaddset(&stop, SIGINT);
+  sigaddset(&stop, SIGTERM);
+  const timespec now{};
+  const int signal = sigtimedwait(&stop, nullptr, &now);
+  if (signal > 0) throw StoppedBySignal{signal};
+}
+
 }  // namespace
 
 void DrawBesideWorkers(WorkerProcesses& workers, const DrawOnePiece& draw_piece,
                        const std::function<void(std::int64_t done)>& progress, Warnings& worker_warnings) {
   std::mutex progress_mutex;   // `progress` and the counts below, updated by both threads
   std::int64_t by_workers = 0, by_this = 0;
-  std::atomic<bool> workers_ended = false;
+  std::atomic<bool> workers_ended = false, workers_done = false;
   std::exception_ptr waited;
   std::thread waiter([&] {
     try {
@@ -29,6 +44,7 @@ void DrawBesideWorkers(WorkerProcesses& workers, const DrawOnePiece& draw_piece,
         const std::lock_guard lock(progress_mutex);
         progress((by_workers = done) + by_this);
       }, worker_warnings);
+      workers_done = true;
     } catch (...) {
       waited = std::current_exception();
       workers_ended = true;
@@ -39,6 +55,7 @@ void DrawBesideWorkers(WorkerProcesses& workers, const DrawOnePiece& draw_piece,
     while (const std::optional<int> piece = workers.TakePiece()) {
       done += draw_piece(*piece, [&](std::int64_t written) {
         if (workers_ended) throw WorkersEnded{};
+        if (workers_done) ThrowIfStopped();   // this process's last pieces stop as the workers would
         const std::lock_guard lock(progress_mutex);
         progress(by_workers + (by_this = done + written));
       });
@@ -52,6 +69,7 @@ void DrawBesideWorkers(WorkerProcesses& workers, const DrawOnePiece& draw_piece,
   }
   waiter.join();
   if (waited) std::rethrow_exception(waited);
+  ThrowIfStopped();
 }
 
 }  // namespace urdfsnap::cli

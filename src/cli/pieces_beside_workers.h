@@ -21,7 +21,8 @@ using DrawOnePiece = std::function<std::int64_t(int piece, const std::function<v
 // warnings go to `worker_warnings` (`draw_piece` keeps this process's own: Warnings is one
 // thread's). When the workers fail or a signal stops them, this process's piece is abandoned at
 // its next progress call and Wait's exception thrown; when `draw_piece` throws, the workers are
-// stopped and its exception thrown.
+// stopped and its exception thrown. A SIGINT or SIGTERM that arrives after the workers have ended
+// stops this process's pieces too (StoppedBySignal), as Wait would have.
 void DrawBesideWorkers(WorkerProcesses& workers, const DrawOnePiece& draw_piece,
                        const std::function<void(std::int64_t done)>& progress, Warnings& worker_warnings);
 
