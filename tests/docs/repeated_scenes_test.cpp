@@ -13,7 +13,9 @@ scene::Scene Box(double x) {
   item.X_FG = Eigen::Translation3d(x, 0, 0);
   item.link = 1;
   scene.items.push_back(item);
-  scene.lines.push_back({{Eigen::Vector3f::Zero(), Eigen::Vector3f::UnitX()}});
+  scene::LineSet line;
+  line.points = {Eigen::Vector3f::Zero(), Eigen::Vector3f::UnitX()};
+  scene.lines.push_back(line);
   return scene;
 }
 
