@@ -47,7 +47,9 @@ TEST(DistortionRemap, EachRawPixelShowsItsRay) {
       EXPECT_NEAR(out.colour.rgb[i * 3], 100 + 50 * ray->x(), 1.0) << u << "," << v;
       // depth and label come from the nearest pinhole pixel: within half a pinhole pixel's ray
       EXPECT_NEAR(out.depth.metres[i], 2 + ray->y(), 0.5 / remap.source().k.fy + 1e-6);
-      if (std::abs(ray->x()) > 1.0 / remap.source().k.fx) EXPECT_EQ(out.labels.labels[i], ray->x() < 0 ? 1 : 2);
+      if (std::abs(ray->x()) > 1.0 / remap.source().k.fx) {
+        EXPECT_EQ(out.labels.labels[i], ray->x() < 0 ? 1 : 2);
+      }
     }
   }
 }
