@@ -1,0 +1,159 @@
+// CoverageCull: per small instance, its vertices to window coordinates on the CPU and each
+// triangle's facing and sample coverage judged with a margin that only ever keeps too much.
+#include "gl/internal/coverage_cull.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <Eigen/Geometry>
+
+namespace urdfsnap::gl {
+
+namespace {
+
+// An instance is culled when its triangles are at least this many per pixel of the square around
+// its bounding sphere on screen: then most of them cover no sample (docs/displays.md, "Fidelity
+// and speed": a 0.1 m sphere in RViz's default view is 720 triangles over ~20 pixels).
+constexpr double kTrianglesPerPixel = 1;
+
+// How far a window-space coordinate llvmpipe computes may lie from ours beyond the float error
+// bound (Margin): its snapping to 1/256 pixel (off by half that at most), twice over.
+constexpr double kSnapSlack = 1.0 / 256;
+
+// A triangle this many pixels wide or high (with its slack) is kept without looking for a sample
+// it covers: it most likely does, and looking costs more the larger it is.
+constexpr float kLargestTested = 2;
+
+// A bound on the relative error of a float dot product of four terms (as lit.vert's
+// model_view_projection * position, computed by llvmpipe and again by us): 2^-20 is ~8 float
+// ulps, four times the worst case of four roundings.
+constexpr double kFloatError = 1.0 / (1 << 20);
+
+// An instance whose positions may be off by more than this many pixels is drawn whole.
+constexpr double kMostError = 0.25;
+
+// The largest integer at most `x` and the least at least `x` (window coordinates, well within an
+// int), without a call to floorf or ceilf (x86-64 without SSE 4.1 has no rounding instruction).
+int Floor(float x) {
+  const int truncated = static_cast<int>(x);
+  return truncated - (x < static_cast<float>(truncated));
+}
+int Ceil(float x) {
+  const int truncated = static_cast<int>(x);
+  return truncated + (x > static_cast<float>(truncated));
+}
+
+}  // namespace
+
+CoverageCull::CoverageCull(int width, int height, std::vector<Eigen::Vector2f> samples)
+    : width_(width), height_(height), samples_(std::move(samples)) {}
+
+double CoverageCull::Margin(const Eigen::Matrix4d& mvp, const Eigen::Vector3d& centre, double radius,
+                            int triangles) const {
+  // wholly inside the six planes (-w <= x, y, z <= w) by more than the radius: nothing clipped
+  const Eigen::Vector4d c = centre.homogeneous();
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const double side : {1.0, -1.0}) {
+      const Eigen::Vector4d plane = mvp.row(3).transpose() + side * mvp.row(axis).transpose();
+      if (!(plane.dot(c) > radius * plane.head<3>().norm())) return -1;
+    }
+  }
+  const double w_min = mvp.row(3).dot(c) - radius * mvp.row(3).head<3>().norm();
+  if (!(w_min > 0)) return -1;
+  // the square around the sphere on screen, at its nearest depth
+  const double half_x = radius * mvp.row(0).head<3>().norm() / w_min * width_ / 2;
+  const double half_y = radius * mvp.row(1).head<3>().norm() / w_min * height_ / 2;
+  if (triangles < kTrianglesPerPixel * 4 * half_x * half_y) return -1;
+  // x, y and w are each off by at most kFloatError times the sum of their terms' sizes, so x / w
+  // (within [-1, 1]) by at most twice that over w
+  const Eigen::Vector4d extent((centre.cwiseAbs().array() + radius).matrix().homogeneous());
+  double terms = 0;
+  for (const int row : {0, 1, 3}) terms = std::max(terms, mvp.row(row).cwiseAbs().dot(extent));
+  const double error = 2 * kFloatError * terms / w_min * std::max(width_, height_) / 2;
+  return error <= kMostError ? error : -1;
+}
+
+bool CoverageCull::Drawn(const Eigen::Vector2f& a, const Eigen::Vector2f& b, const Eigen::Vector2f& c,
+                         float slack) const {
+  // twice the signed area, front faces positive; with each corner off by `slack` pixels (and
+  // a sample where it is) an edge function (b - a) x (p - a) is off by at most
+  // 2 slack (|b - a| + |p - a|, 1-norms) + 4 slack^2
+  const Eigen::Vector2f e1 = b - a, e2 = c - a;
+  const float area = (e1.x() * e2.y() - e1.y() * e2.x()) * (clockwise_ ? -1.f : 1.f);
+  const float area_slack = 4 * slack * (e1.lpNorm<1>() + e2.lpNorm<1>()) + 16 * slack * slack;
+  if (area < -area_slack) return false;   // back-facing: GL culls it
+  const Eigen::Vector2f lo = a.cwiseMin(b).cwiseMin(c).array() - slack;
+  const Eigen::Vector2f hi = a.cwiseMax(b).cwiseMax(c).array() + slack;
+  // facing unsure, or large: kept
+  if (area <= area_slack || hi.x() - lo.x() >= kLargestTested || hi.y() - lo.y() >= kLargestTested) return true;
+  const float sign = clockwise_ ? -1.f : 1.f;   // edge functions positive inside
+  const Eigen::Vector2f corners[3] = {a, b, c};
+  for (const Eigen::Vector2f& s : samples_) {
+    for (int row = Ceil(lo.y() - s.y()); row <= Floor(hi.y() - s.y()); ++row) {
+      for (int column = Ceil(lo.x() - s.x()); column <= Floor(hi.x() - s.x()); ++column) {
+        const Eigen::Vector2f p = Eigen::Vector2f(static_cast<float>(column), static_cast<float>(row)) + s;
+        bool inside = true;
+        for (int k = 0; k < 3 && inside; ++k) {
+          const Eigen::Vector2f& from = corners[k];
+          const Eigen::Vector2f edge = corners[(k + 1) % 3] - from, to_p = p - from;
+          const float e = sign * (edge.x() * to_p.y() - edge.y() * to_p.x());
+          inside = e >= -(2 * slack * (edge.lpNorm<1>() + to_p.lpNorm<1>()) + 4 * slack * slack);
+        }
+        if (inside) return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool CoverageCull::Cull(const geometry::TriangleMesh& mesh, const Eigen::Vector3d& centre, double radius,
+                        bool clockwise, const std::vector<MeshInstance>& instances,
+                        std::vector<std::uint32_t>& indices, std::vector<InstanceTriangles>& commands) {
+  indices.clear();
+  commands.clear();
+  const auto all = static_cast<std::uint32_t>(mesh.indices.size());
+  std::uint32_t whole_first = 0;   // where the mesh's own indices are in `indices`, once needed
+  bool whole_added = false, culled = false;
+  clockwise_ = clockwise;
+  window_.resize(mesh.positions.size());
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const Eigen::Map<const Eigen::Matrix4f> mvp(instances[i].model_view_projection);
+    InstanceTriangles command;
+    command.base_instance = static_cast<std::uint32_t>(i);
+    const double error = Margin(mvp.cast<double>(), centre, radius, mesh.triangle_count());
+    if (error < 0) {
+      if (!whole_added) {
+        whole_first = static_cast<std::uint32_t>(indices.size());
+        indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
+        whole_added = true;
+      }
+      command.first_index = whole_first;
+      command.count = all;
+      commands.push_back(command);
+      continue;
+    }
+    culled = true;
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      const Eigen::Vector4f clip = mvp * mesh.positions[v].homogeneous();
+      window_[v] = {(clip.x() / clip.w() * 0.5f + 0.5f) * static_cast<float>(width_),
+                    (clip.y() / clip.w() * 0.5f + 0.5f) * static_cast<float>(height_)};
+    }
+    const auto slack = static_cast<float>(error + kSnapSlack);
+    command.first_index = static_cast<std::uint32_t>(indices.size());
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      if (Drawn(window_[mesh.indices[t]], window_[mesh.indices[t + 1]], window_[mesh.indices[t + 2]], slack)) {
+        indices.insert(indices.end(), {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]});
+      }
+    }
+    command.count = static_cast<std::uint32_t>(indices.size()) - command.first_index;
+    if (command.count > 0) commands.push_back(command);
+  }
+  if (!culled) {
+    indices.clear();
+    commands.clear();
+  }
+  return culled;
+}
+
+}  // namespace urdfsnap::gl
