@@ -21,9 +21,9 @@ constexpr double kTrianglesPerPixel = 1;
 // bound (Margin): its snapping to 1/256 pixel (off by half that at most), twice over.
 constexpr double kSnapSlack = 1.0 / 256;
 
-// A triangle this many pixels wide or high (with its slack) is kept without looking for a sample
-// it covers: it most likely does, and looking costs more the larger it is.
-constexpr float kLargestTested = 2;
+// A triangle whose box (with its slack) is this many square pixels or more is kept without looking
+// for a sample it covers: it most likely does, and looking costs more the larger it is.
+constexpr float kLargestTested = 16;
 
 // A bound on the relative error of a float dot product of four terms (as lit.vert's
 // model_view_projection * position, computed by llvmpipe and again by us): 2^-20 is ~8 float
@@ -76,29 +76,39 @@ double CoverageCull::Margin(const Eigen::Matrix4d& mvp, const Eigen::Vector3d& c
 
 bool CoverageCull::Drawn(const Eigen::Vector2f& a, const Eigen::Vector2f& b, const Eigen::Vector2f& c,
                          float slack) const {
-  // twice the signed area, front faces positive; with each corner off by `slack` pixels (and
-  // a sample where it is) an edge function (b - a) x (p - a) is off by at most
-  // 2 slack (|b - a| + |p - a|, 1-norms) + 4 slack^2
+  // twice the signed area, front faces positive; with each corner off by `slack` pixels it is
+  // off by at most 2 slack (|b - a| + |c - a|, 1-norms) + 4 slack^2, doubled here for safety
+  const float sign = clockwise_ ? -1.f : 1.f;
   const Eigen::Vector2f e1 = b - a, e2 = c - a;
-  const float area = (e1.x() * e2.y() - e1.y() * e2.x()) * (clockwise_ ? -1.f : 1.f);
+  const float area = sign * (e1.x() * e2.y() - e1.y() * e2.x());
   const float area_slack = 4 * slack * (e1.lpNorm<1>() + e2.lpNorm<1>()) + 16 * slack * slack;
   if (area < -area_slack) return false;   // back-facing: GL culls it
+  // else GL may draw it: then it faces front, and its edge functions are those below
   const Eigen::Vector2f lo = a.cwiseMin(b).cwiseMin(c).array() - slack;
   const Eigen::Vector2f hi = a.cwiseMax(b).cwiseMax(c).array() + slack;
-  // facing unsure, or large: kept
-  if (area <= area_slack || hi.x() - lo.x() >= kLargestTested || hi.y() - lo.y() >= kLargestTested) return true;
-  const float sign = clockwise_ ? -1.f : 1.f;   // edge functions positive inside
-  const Eigen::Vector2f corners[3] = {a, b, c};
+  const Eigen::Vector2f box = hi - lo;
+  if (box.x() * box.y() >= kLargestTested) return true;
+  // each edge's function sign (edge x (p - from)), positive inside; with the corners and so the
+  // edge off by `slack` it is off by at most 2 slack (|edge| + |p - from|) + 4 slack^2, and
+  // |p - from| is within the box's width plus height for a sample p in the box
+  struct Edge {
+    Eigen::Vector2f from, along;
+    float tolerance;
+  };
+  Edge edges[3] = {{a, b - a, 0}, {b, c - b, 0}, {c, a - c, 0}};
+  for (Edge& edge : edges) {
+    edge.along *= sign;
+    edge.tolerance = -(2 * slack * (edge.along.lpNorm<1>() + box.x() + box.y()) + 4 * slack * slack);
+  }
   for (const Eigen::Vector2f& s : samples_) {
+    const int column_lo = Ceil(lo.x() - s.x()), column_hi = Floor(hi.x() - s.x());
     for (int row = Ceil(lo.y() - s.y()); row <= Floor(hi.y() - s.y()); ++row) {
-      for (int column = Ceil(lo.x() - s.x()); column <= Floor(hi.x() - s.x()); ++column) {
-        const Eigen::Vector2f p = Eigen::Vector2f(static_cast<float>(column), static_cast<float>(row)) + s;
+      const float y = static_cast<float>(row) + s.y();
+      for (int column = column_lo; column <= column_hi; ++column) {
+        const float x = static_cast<float>(column) + s.x();
         bool inside = true;
-        for (int k = 0; k < 3 && inside; ++k) {
-          const Eigen::Vector2f& from = corners[k];
-          const Eigen::Vector2f edge = corners[(k + 1) % 3] - from, to_p = p - from;
-          const float e = sign * (edge.x() * to_p.y() - edge.y() * to_p.x());
-          inside = e >= -(2 * slack * (edge.lpNorm<1>() + to_p.lpNorm<1>()) + 4 * slack * slack);
+        for (const Edge& edge : edges) {
+          inside = inside && edge.along.x() * (y - edge.from.y()) - edge.along.y() * (x - edge.from.x()) >= edge.tolerance;
         }
         if (inside) return true;
       }
