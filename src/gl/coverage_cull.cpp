@@ -13,9 +13,12 @@ namespace urdfsnap::gl {
 namespace {
 
 // An instance is culled when its triangles are at least this many per pixel of the square around
-// its bounding sphere on screen: then most of them cover no sample (docs/displays.md, "Fidelity
-// and speed": a 0.1 m sphere in RViz's default view is 720 triangles over ~20 pixels).
-constexpr double kTrianglesPerPixel = 1;
+// its bounding sphere on screen: then most of them cover no sample. A 0.1 m sphere in RViz's
+// default view is 720 triangles over a ~36-pixel square (~20 in each); culled it keeps ~120 and
+// costs ~4 ms less per 91 spheres. A 0.1 m cylinder (160 over ~60, 2.6 a pixel) keeps ~70 of its
+// triangles, but dropping its back faces (which llvmpipe drops cheaply itself) and a few slivers
+// saved nothing measurable, so it is drawn whole (docs/displays.md, "Fidelity and speed").
+constexpr double kTrianglesPerPixel = 4;
 
 // How far a window-space coordinate llvmpipe computes may lie from ours beyond the float error
 // bound (Margin): its snapping to 1/256 pixel (off by half that at most), twice over.
