@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <utility>
 
 #include <Eigen/Geometry>
@@ -35,6 +36,9 @@ constexpr double kFloatError = 1.0 / (1 << 20);
 
 // An instance whose positions may be off by more than this many pixels is drawn whole.
 constexpr double kMostError = 0.25;
+
+// Nor is one whose clip coordinates could come near float's range (3.4e38).
+constexpr double kLargestTerms = 1e30;
 
 // The largest integer at most `x` and the least at least `x` (window coordinates, well within an
 // int), without a call to floorf or ceilf (x86-64 without SSE 4.1 has no rounding instruction).
@@ -73,6 +77,7 @@ double CoverageCull::Margin(const Eigen::Matrix4d& mvp, const Eigen::Vector3d& c
   const Eigen::Vector4d extent((centre.cwiseAbs().array() + radius).matrix().homogeneous());
   double terms = 0;
   for (const int row : {0, 1, 3}) terms = std::max(terms, mvp.row(row).cwiseAbs().dot(extent));
+  if (!(terms < kLargestTerms)) return -1;   // so that the float clip coordinates stay finite
   const double error = 2 * kFloatError * terms / w_min * std::max(width_, height_) / 2;
   return error <= kMostError ? error : -1;
 }
@@ -91,6 +96,22 @@ bool CoverageCull::Drawn(const Eigen::Vector2f& a, const Eigen::Vector2f& b, con
   const Eigen::Vector2f hi = a.cwiseMax(b).cwiseMax(c).array() + slack;
   const Eigen::Vector2f box = hi - lo;
   if (box.x() * box.y() >= kLargestTested) return true;
+  // the samples in the box; under a pixel each way it holds at most one of each of the pattern's,
+  // in the box's first column (row) when its offset is past the box's left (lower) edge's, else
+  // in the next
+  Eigen::Vector2f in_box[4];
+  int found = 0;
+  const bool small = box.x() < 1 && box.y() < 1 && samples_.size() <= std::size(in_box);
+  if (small) {
+    const int column = Floor(lo.x()), row = Floor(lo.y());
+    const float left = lo.x() - static_cast<float>(column), lower = lo.y() - static_cast<float>(row);
+    for (const Eigen::Vector2f& s : samples_) {
+      const float x = static_cast<float>(column + (s.x() < left)) + s.x();
+      const float y = static_cast<float>(row + (s.y() < lower)) + s.y();
+      if (x <= hi.x() && y <= hi.y()) in_box[found++] = {x, y};
+    }
+    if (found == 0) return false;
+  }
   // each edge's function sign (edge x (p - from)), positive inside; with the corners and so the
   // edge off by `slack` it is off by at most 2 slack (|edge| + |p - from|) + 4 slack^2, and
   // |p - from| is within the box's width plus height for a sample p in the box
@@ -103,17 +124,21 @@ bool CoverageCull::Drawn(const Eigen::Vector2f& a, const Eigen::Vector2f& b, con
     edge.along *= sign;
     edge.tolerance = -(2 * slack * (edge.along.lpNorm<1>() + box.x() + box.y()) + 4 * slack * slack);
   }
+  const auto covers = [&edges](float x, float y) {
+    bool inside = true;
+    for (const Edge& edge : edges) {
+      inside = inside && edge.along.x() * (y - edge.from.y()) - edge.along.y() * (x - edge.from.x()) >= edge.tolerance;
+    }
+    return inside;
+  };
+  if (small) {
+    return std::any_of(in_box, in_box + found, [&](const Eigen::Vector2f& p) { return covers(p.x(), p.y()); });
+  }
   for (const Eigen::Vector2f& s : samples_) {
     const int column_lo = Ceil(lo.x() - s.x()), column_hi = Floor(hi.x() - s.x());
     for (int row = Ceil(lo.y() - s.y()); row <= Floor(hi.y() - s.y()); ++row) {
-      const float y = static_cast<float>(row) + s.y();
       for (int column = column_lo; column <= column_hi; ++column) {
-        const float x = static_cast<float>(column) + s.x();
-        bool inside = true;
-        for (const Edge& edge : edges) {
-          inside = inside && edge.along.x() * (y - edge.from.y()) - edge.along.y() * (x - edge.from.x()) >= edge.tolerance;
-        }
-        if (inside) return true;
+        if (covers(static_cast<float>(column) + s.x(), static_cast<float>(row) + s.y())) return true;
       }
     }
   }
