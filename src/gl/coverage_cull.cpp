@@ -150,6 +150,11 @@ bool CoverageCull::Cull(const geometry::TriangleMesh& mesh, const Eigen::Vector3
                         std::vector<std::uint32_t>& indices, std::vector<InstanceTriangles>& commands) {
   indices.clear();
   commands.clear();
+  // a mesh made through the C++ API may name vertices it lacks: GL's business, not ours
+  const std::size_t vertices = mesh.positions.size();
+  if (std::any_of(mesh.indices.begin(), mesh.indices.end(), [&](std::uint32_t v) { return v >= vertices; })) {
+    return false;
+  }
   const auto all = static_cast<std::uint32_t>(mesh.indices.size());
   std::uint32_t whole_first = 0;   // where the mesh's own indices are in `indices`, once needed
   bool whole_added = false, culled = false;

@@ -85,5 +85,12 @@ TEST_F(CoverageCullTest, SphereBetweenSamplesKeepsNothing) {
   EXPECT_TRUE(commands_.empty());
 }
 
+TEST_F(CoverageCullTest, MeshNamingAVertexItLacksIsLeftToGl) {
+  geometry::TriangleMesh broken = sphere_;
+  broken.indices.back() = static_cast<std::uint32_t>(broken.positions.size());
+  EXPECT_FALSE(cull_.Cull(broken, Eigen::Vector3d::Zero(), 0.5, false, {Sphere({1, 2, 0}, 0.1)}, indices_, commands_));
+  EXPECT_TRUE(commands_.empty());
+}
+
 }  // namespace
 }  // namespace urdfsnap::gl
