@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
+#include <limits>
 #include <utility>
 
 #include <Eigen/Geometry>
@@ -54,7 +54,15 @@ int Ceil(float x) {
 }  // namespace
 
 CoverageCull::CoverageCull(int width, int height, std::vector<Eigen::Vector2f> samples)
-    : width_(width), height_(height), samples_(std::move(samples)) {}
+    : width_(width), height_(height), samples_(std::move(samples)) {
+  // lanes past the pattern's samples lie at infinity, in no box
+  sample_x_.setConstant(std::numeric_limits<float>::infinity());
+  sample_y_.setConstant(std::numeric_limits<float>::infinity());
+  for (std::size_t s = 0; s < std::min<std::size_t>(samples_.size(), 4); ++s) {
+    sample_x_[static_cast<Eigen::Index>(s)] = samples_[s].x();
+    sample_y_[static_cast<Eigen::Index>(s)] = samples_[s].y();
+  }
+}
 
 double CoverageCull::Margin(const Eigen::Matrix4d& mvp, const Eigen::Vector3d& centre, double radius,
                             int triangles) const {
@@ -96,21 +104,19 @@ bool CoverageCull::Drawn(const Eigen::Vector2f& a, const Eigen::Vector2f& b, con
   const Eigen::Vector2f hi = a.cwiseMax(b).cwiseMax(c).array() + slack;
   const Eigen::Vector2f box = hi - lo;
   if (box.x() * box.y() >= kLargestTested) return true;
-  // the samples in the box; under a pixel each way it holds at most one of each of the pattern's,
-  // in the box's first column (row) when its offset is past the box's left (lower) edge's, else
-  // in the next
-  Eigen::Vector2f in_box[4];
-  int found = 0;
-  const bool small = box.x() < 1 && box.y() < 1 && samples_.size() <= std::size(in_box);
+  // the samples in the box; under a pixel each way it holds at most one of each of the pattern's
+  // (all four at once, as vectors), in the box's first column (row) when its offset is past the
+  // box's left (lower) edge's, else in the next
+  const bool small = box.x() < 1 && box.y() < 1 && samples_.size() <= 4;
+  Eigen::Array4f xs, ys;
+  Eigen::Array4i in_box;
   if (small) {
-    const int column = Floor(lo.x()), row = Floor(lo.y());
-    const float left = lo.x() - static_cast<float>(column), lower = lo.y() - static_cast<float>(row);
-    for (const Eigen::Vector2f& s : samples_) {
-      const float x = static_cast<float>(column + (s.x() < left)) + s.x();
-      const float y = static_cast<float>(row + (s.y() < lower)) + s.y();
-      if (x <= hi.x() && y <= hi.y()) in_box[found++] = {x, y};
-    }
-    if (found == 0) return false;
+    const auto column = static_cast<float>(Floor(lo.x())), row = static_cast<float>(Floor(lo.y()));
+    const float left = lo.x() - column, lower = lo.y() - row;
+    xs = column + sample_x_ + (sample_x_ < left).cast<float>();
+    ys = row + sample_y_ + (sample_y_ < lower).cast<float>();
+    in_box = ((xs <= hi.x()) && (ys <= hi.y())).cast<int>();
+    if (!in_box.any()) return false;
   }
   // each edge's function sign (edge x (p - from)), positive inside; with the corners and so the
   // edge off by `slack` it is off by at most 2 slack (|edge| + |p - from|) + 4 slack^2, and
@@ -132,7 +138,10 @@ bool CoverageCull::Drawn(const Eigen::Vector2f& a, const Eigen::Vector2f& b, con
     return inside;
   };
   if (small) {
-    return std::any_of(in_box, in_box + found, [&](const Eigen::Vector2f& p) { return covers(p.x(), p.y()); });
+    for (int s = 0; s < 4; ++s) {
+      if (in_box[s] && covers(xs[s], ys[s])) return true;
+    }
+    return false;
   }
   for (const Eigen::Vector2f& s : samples_) {
     const int column_lo = Ceil(lo.x() - s.x()), column_hi = Floor(hi.x() - s.x());

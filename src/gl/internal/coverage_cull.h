@@ -57,6 +57,7 @@ class CoverageCull {
 
   int width_, height_;
   std::vector<Eigen::Vector2f> samples_;
+  Eigen::Array4f sample_x_, sample_y_;   // the first four samples' x and y, as vectors
   bool clockwise_ = false;                 // the batch's front faces
   std::vector<Eigen::Vector2f> window_;   // an instance's vertices in window coordinates
 };
