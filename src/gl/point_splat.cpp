@@ -22,12 +22,20 @@ std::uint32_t Pack(const Eigen::Vector4f& rgba) {
   return Byte(rgba[0]) | Byte(rgba[1]) << 8 | Byte(rgba[2]) << 16 | Byte(rgba[3]) << 24;
 }
 
-// ceil for window coordinates, without a libm call; a square reaching far off the screen (a big
-// one near the camera) is held at a million pixels, well within int
-int Ceil(float v) {
-  v = std::clamp(v, -1e6f, 1e6f);
-  const int i = static_cast<int>(v);
-  return i + (static_cast<float>(i) < v);
+// The two roundings llvmpipe snaps window coordinates to 1/256 pixel with (lp_setup's FIXED_ORDER
+// 8), without a libm call. A triangle's vertices: the SSE conversion of calc_fixed_position
+// (lp_setup_tri.c), to nearest with ties to even; adding and taking away 1.5 * 2^23 leaves that
+// for |v| < 2^22.
+float SnapVertex(float v) {
+  constexpr float kMagic = 12582912.f;
+  v *= 256.f;
+  return (std::abs(v) < 4194304.f ? (v + kMagic) - kMagic : std::nearbyint(v)) * (1.f / 256.f);
+}
+// A GL point's centre and size (lp_setup_point.c's subpixel_snap): util_iround, which on x86-64
+// adds or takes away a half in float and truncates (u_math.h), in 1/256 pixel
+int SnapPoint(float v) {
+  v = std::clamp(v * 256.f, -2e9f, 2e9f);
+  return static_cast<int>(v >= 0.f ? v + 0.5f : v - 0.5f);
 }
 
 float Smoothstep(float edge0, float edge1, float x) {
@@ -108,7 +116,9 @@ void PointSplat::Clear(int width, int height, const std::vector<Eigen::Vector2f>
   for (std::size_t s = 0; s < samples.size(); ++s) sample_x_[s] = samples[s].x(), sample_y_[s] = samples[s].y();
   // no pass over the image: a tile is emptied when a square first reaches it in a frame
   planes_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_ * TileWords());
+  tile_starts_.assign(static_cast<std::size_t>(tiles_x_) * tiles_y_ + 1, 0);
   squares_.clear();
+  big_.clear();
   drawn_.clear();
 }
 
@@ -125,26 +135,55 @@ PointSplat::Texel PointSplat::At(int x, int y, int s) const {
   return {std::bit_cast<float>(depths[texel]), depths[kPlane + texel]};
 }
 
+PointSplat::Pixels PointSplat::Reach(float x0, float x1, float y0, float y1) const {
+  // x in [x0, x1) is pixel column px in [ceil(x0 - sx), ceil(x1 - sx)) for a sample at sx
+  const Lanes c = Ceil(Floats{x0 - sample_max_.x(), x1 - sample_min_.x(), y0 - sample_max_.y(), y1 - sample_min_.y()});
+  return {std::max(0, c[0]), std::min(width_, c[1]) - 1, std::max(0, c[2]), std::min(height_, c[3]) - 1};
+}
+
 void PointSplat::Keep(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape) {
-  // llvmpipe snaps vertices to 1/256 pixel (lp_setup's FIXED_ORDER 8) before it tests samples
-  const auto snap = [](float v) { return std::round(v * 256.f) / 256.f; };
-  if (!std::isfinite(x0) || !std::isfinite(x1) || !std::isfinite(y0) || !std::isfinite(y1) || !std::isfinite(depth)) {
+  // llvmpipe snaps each vertex (lp_setup_tri.c)
+  KeepSnapped(SnapVertex(x0), SnapVertex(x1), SnapVertex(y0), SnapVertex(y1), depth, rgba8, shape);
+}
+
+void PointSplat::KeepPoint(float x, float y, float size, float depth, std::uint32_t rgba8) {
+  // lp_setup_point.c: the size in fixed point, at least a pixel; x0 = snapped centre - size / 2 (an
+  // integer division), x1 = x0 + size
+  const int fixed = std::max(SnapPoint(std::min(size, 1e6f)), 256);
+  const int x0 = SnapPoint(x) - fixed / 2, y0 = SnapPoint(y) - fixed / 2;
+  const auto pixels = [](int fixed_point) { return static_cast<float>(fixed_point) * (1.f / 256.f); };
+  KeepSnapped(pixels(x0), pixels(x0 + fixed), pixels(y0), pixels(y0 + fixed), depth, rgba8, 0);
+}
+
+void PointSplat::KeepSnapped(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape) {
+  if (!(std::isfinite(x0) && std::isfinite(x1) && std::isfinite(y0) && std::isfinite(y1) && std::isfinite(depth))) {
     return;   // a point at infinity: GL would draw nothing either
   }
-  Square square{snap(x0), snap(x1), snap(y0), snap(y1), depth, rgba8, shape, 0, 0, 0, 0,
-                static_cast<std::uint32_t>(squares_.size())};
-  square.px0 = std::max(0, Ceil(square.x0 - sample_max_.x()));
-  square.px1 = std::min(width_ - 1, Ceil(square.x1 - sample_min_.x()) - 1);
-  square.py0 = std::max(0, Ceil(square.y0 - sample_max_.y()));
-  square.py1 = std::min(height_ - 1, Ceil(square.y1 - sample_min_.y()) - 1);
-  if (square.px0 <= square.px1 && square.py0 <= square.py1) squares_.push_back(square);
+  const Pixels pixels = Reach(x0, x1, y0, y1);
+  if (pixels.px0 > pixels.px1 || pixels.py0 > pixels.py1) return;
+  const int tx0 = pixels.px0 / kTileSize, tx1 = pixels.px1 / kTileSize;
+  const int ty0 = pixels.py0 / kTileSize, ty1 = pixels.py1 / kTileSize;
+  const int tile = ty0 * tiles_x_ + tx0;
+  Square square{x0, x1, y0, y1, depth, rgba8, static_cast<std::uint32_t>(squares_.size() + big_.size()),
+                static_cast<std::uint32_t>(tile) | static_cast<std::uint32_t>(shape) << Square::kShapeShift};
+  if (tx1 - tx0 > 1 || ty1 - ty0 > 1) {
+    big_.push_back(square);   // kept once (Bin)
+    return;
+  }
+  ++tile_starts_[tile + 1];
+  if (tx1 > tx0) square.reach |= Square::kWide, ++tile_starts_[tile + 2];
+  if (ty1 > ty0) {
+    square.reach |= Square::kHigh, ++tile_starts_[tile + tiles_x_ + 1];
+    if (tx1 > tx0) ++tile_starts_[tile + tiles_x_ + 2];
+  }
+  squares_.push_back(square);
 }
 
 void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32_t* planes) const {
   const std::size_t count = samples_.size();
   // sample s's depth and colour planes, each kTileSize x kTileSize
   const auto plane = [&](std::size_t s, int which) { return planes + (2 * s + which) * kPlane; };
-  if (square.shape == 0) {
+  if (square.shape() == 0) {
     // one colour: each sample's own rows and columns of pixels whose sample lies inside, where x
     // in [x0, x1) is px in [ceil(x0 - sx), ceil(x1 - sx)); four samples' bounds at a time
     for (std::size_t first = 0; first < count; first += 4) {
@@ -169,12 +208,13 @@ void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32
                              static_cast<float>(square.rgba8 >> 8 & 0xff) / 255.f,
                              static_cast<float>(square.rgba8 >> 16 & 0xff) / 255.f);
   const std::uint32_t alpha = square.rgba8 & 0xff000000u;
-  for (int py = std::max(square.py0, tile.y0); py <= std::min(square.py1, tile.y1 - 1); ++py) {
-    for (int px = std::max(square.px0, tile.x0); px <= std::min(square.px1, tile.x1 - 1); ++px) {
+  const Pixels pixels = Reach(square.x0, square.x1, square.y0, square.y1);
+  for (int py = std::max(pixels.py0, tile.y0); py <= std::min(pixels.py1, tile.y1 - 1); ++py) {
+    for (int px = std::max(pixels.px0, tile.x0); px <= std::min(pixels.px1, tile.x1 - 1); ++px) {
       Eigen::Vector3f c = flat;
       const float u = (static_cast<float>(px) + 0.5f - square.x0) / (square.x1 - square.x0);
       const float v = (static_cast<float>(py) + 0.5f - square.y0) / (square.y1 - square.y0);
-      if (!Shade(square.shape, u, v, c)) continue;
+      if (!Shade(square.shape(), u, v, c)) continue;
       const std::uint32_t packed = Byte(c[0]) | Byte(c[1]) << 8 | Byte(c[2]) << 16 | alpha;
       const std::size_t texel = static_cast<std::size_t>(py - tile.y0) * kTileSize + static_cast<std::size_t>(px - tile.x0);
       for (std::size_t s = 0; s < count; ++s) {
@@ -193,37 +233,31 @@ void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32
 
 void PointSplat::Bin() {
   // a stable counting sort of copies of the squares by tile (a tile's squares keep their order),
-  // so that covering a tile reads its squares in a row rather than from all over squares_; a
-  // square reaching more tiles than one of kTileSize pixels can (2 x 2) is kept once, in big_, so
-  // that the copies stay within four a square however big the squares are
+  // so that covering a tile reads its squares in a row rather than from all over squares_; Keep
+  // counted them, and kept those reaching more tiles than one of kTileSize pixels can (2 x 2)
+  // aside in big_, so that the copies stay within four a square however big the squares are
   const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * tiles_y_;
-  tile_starts_.assign(tiles + 1, 0);
   std::vector<char> reached(tiles, 0);
-  big_.clear();
-  const auto each_tile = [&](const Square& square, auto&& visit) {
-    for (int ty = square.py0 / kTileSize; ty <= square.py1 / kTileSize; ++ty) {
-      for (int tx = square.px0 / kTileSize; tx <= square.px1 / kTileSize; ++tx) visit(ty * tiles_x_ + tx);
-    }
-  };
-  const auto big = [](const Square& square) {
-    return square.px1 / kTileSize - square.px0 / kTileSize > 1 || square.py1 / kTileSize - square.py0 / kTileSize > 1;
-  };
-  for (const Square& square : squares_) {
-    if (big(square)) {
-      big_.push_back(square);
-      each_tile(square, [&](int tile) { reached[tile] = 1; });
-    } else {
-      each_tile(square, [&](int tile) { ++tile_starts_[tile + 1], reached[tile] = 1; });
+  for (const Square& square : big_) {
+    const Pixels pixels = Reach(square.x0, square.x1, square.y0, square.y1);
+    for (int ty = pixels.py0 / kTileSize; ty <= pixels.py1 / kTileSize; ++ty) {
+      for (int tx = pixels.px0 / kTileSize; tx <= pixels.px1 / kTileSize; ++tx) reached[ty * tiles_x_ + tx] = 1;
     }
   }
-  for (std::size_t t = 1; t <= tiles; ++t) tile_starts_[t] += tile_starts_[t - 1];
+  for (std::size_t t = 0; t < tiles; ++t) {
+    if (reached[t] || tile_starts_[t + 1] > 0) drawn_.push_back(static_cast<int>(t));
+    tile_starts_[t + 1] += tile_starts_[t];
+  }
   binned_.resize(tile_starts_[tiles]);
   std::vector<std::uint32_t> next(tile_starts_.begin(), tile_starts_.end() - 1);
   for (const Square& square : squares_) {
-    if (!big(square)) each_tile(square, [&](int tile) { binned_[next[tile]++] = square; });
-  }
-  for (std::size_t t = 0; t < tiles; ++t) {
-    if (reached[t]) drawn_.push_back(static_cast<int>(t));
+    const int tile = square.tile();
+    binned_[next[tile]++] = square;
+    if (square.reach & Square::kWide) binned_[next[tile + 1]++] = square;
+    if (square.reach & Square::kHigh) {
+      binned_[next[tile + tiles_x_]++] = square;
+      if (square.reach & Square::kWide) binned_[next[tile + tiles_x_ + 1]++] = square;
+    }
   }
 }
 
@@ -242,7 +276,8 @@ void PointSplat::CoverTile(int tile) {
   while (small < small_end || big < big_end) {
     if (big == big_end || (small < small_end && small->order < big->order)) {
       CoverSquare(*small++, rect, planes);
-    } else if (big->px1 < rect.x0 || big->px0 >= rect.x1 || big->py1 < rect.y0 || big->py0 >= rect.y1) {
+    } else if (const Pixels pixels = Reach(big->x0, big->x1, big->y0, big->y1);
+               pixels.px1 < rect.x0 || pixels.px0 >= rect.x1 || pixels.py1 < rect.y0 || pixels.py0 >= rect.y1) {
       ++big;
     } else {
       CoverSquare(*big++, rect, planes);
@@ -258,7 +293,7 @@ void PointSplat::Cover() {
     for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < drawn_.size();) CoverTile(drawn_[i]);
   };
   std::optional<std::thread> helper;
-  if (squares_.size() >= kSquaresPerThread && std::thread::hardware_concurrency() > 1) {
+  if (squares_.size() + big_.size() >= kSquaresPerThread && std::thread::hardware_concurrency() > 1) {
     try {
       helper.emplace(work);
     } catch (const std::system_error&) {
@@ -268,6 +303,7 @@ void PointSplat::Cover() {
   work();
   if (helper) helper->join();
   squares_.clear();
+  big_.clear();
 }
 
 void PointSplat::Add(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
@@ -294,8 +330,7 @@ void PointSplat::Add(const scene::PointSet& points, const Eigen::Matrix4d& V, co
       const Eigen::Vector4f clip = MVP * p;
       if (!(std::abs(clip.x()) <= clip.w() && std::abs(clip.y()) <= clip.w() && std::abs(clip.z()) <= clip.w())) continue;
       const Eigen::Vector3f w = window(clip);
-      const float h = std::max(half, 0.5f);
-      Keep(w.x() - h, w.x() + h, w.y() - h, w.y() + h, w.z(), rgba8, 0);
+      KeepPoint(w.x(), w.y(), points.size.x(), w.z(), rgba8);
     } else {
       // a camera-facing square: corners moved from the centre in the image plane, clipped near/far
       const Eigen::Vector4f centre = MV * p;

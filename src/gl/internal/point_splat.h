@@ -82,18 +82,32 @@ class PointSplat {
   Texel At(int x, int y, int s) const;
 
  private:
-  // A point's square in window coordinates, [x0, x1) x [y0, y1) at `depth`; its 8-bit rgba; shape
-  // 0 flat, 1 outlined, 2 shaded disc (shaders/point.frag); its columns and rows of pixels that
-  // may hold a covered sample; its place in the order squares were added.
+  // A point's square in window coordinates, [x0, x1) x [y0, y1) at `depth`; its 8-bit rgba; its
+  // place in the order squares were added; and, packed in `reach`, the first tile it reaches (its
+  // index), whether it reaches the next column and the next row of tiles too, and its shape (0
+  // flat, 1 outlined, 2 shaded disc: shaders/point.frag). 32 bytes, copied once per tile reached.
   struct Square {
     float x0, x1, y0, y1, depth;
     std::uint32_t rgba8;
-    int shape;
-    int px0, px1, py0, py1;
     std::uint32_t order;
+    std::uint32_t reach;
+    static constexpr int kShapeShift = 30, kWide = 1 << 28, kHigh = 1 << 29, kTileMask = kWide - 1;
+    int shape() const { return static_cast<int>(reach >> kShapeShift); }
+    int tile() const { return static_cast<int>(reach & kTileMask); }
   };
-  // Keeps the square, snapped as llvmpipe snaps, unless it covers no pixel.
+  // The pixels whose samples `square` may cover: columns [px0, px1], rows [py0, py1], within the image.
+  struct Pixels {
+    int px0, px1, py0, py1;
+  };
+  Pixels Reach(float x0, float x1, float y0, float y1) const;
+  // Keeps the square, its corners snapped as llvmpipe snaps them, unless it covers no pixel, and
+  // counts it in the tiles it reaches.
   void Keep(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape);
+  // Keeps a GL point of `size` pixels (at least one) centred at window (x, y), as lp_setup_point
+  // places it: its centre snapped, then moved out by half the snapped size.
+  void KeepPoint(float x, float y, float size, float depth, std::uint32_t rgba8);
+  // Keeps a square already snapped.
+  void KeepSnapped(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape);
   // Sorts copies of the squares by the tiles they reach, in the order they were added (big ones
   // aside), and lists the tiles reached.
   void Bin();
@@ -105,6 +119,7 @@ class PointSplat {
   // as added; by tile, tile t's in binned_[tile_starts_[t]..[t + 1]); those reaching more than 2 x 2
   // tiles, as added
   std::vector<Square> squares_, binned_, big_;
+  // until Bin, tile_starts_[t + 1] counts the squares (not big_) reaching tile t
   std::vector<std::uint32_t> tile_starts_;
   std::vector<Eigen::Vector2f> samples_;
   Eigen::Vector2f sample_min_, sample_max_;   // their extent within a pixel
