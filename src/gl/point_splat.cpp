@@ -77,27 +77,32 @@ Lanes Ceil(Floats v) {
   return i - (__builtin_convertvector(i, Floats) < v);   // a true lane is -1
 }
 
-// Covers columns [first, end) of one sample's row of depths and colours (kTileSize columns) at
-// `depth` with `colour` where that is nearer (GL_LEQUAL): four columns a vector from `first`, the
-// last four of the row at most; a lane out of [first, end) or farther keeps its value. No branch
-// on the depth test: which of two points is nearer is a coin toss in a cloud.
-void CoverRow(std::uint32_t* depths, std::uint32_t* colours, int first, int end, float depth, std::uint32_t colour) {
+// Covers columns [first, end) of rows [row0, row1) of one sample's depths and colours (planes of
+// kTileSize x kTileSize) at `depth` with `colour` where that is nearer (GL_LEQUAL): four columns a
+// vector from `first`, the last four of a row at most; a lane out of [first, end) or farther keeps
+// its value. No branch on the depth test: which of two points is nearer is a coin toss in a cloud.
+void CoverRows(std::uint32_t* depths, std::uint32_t* colours, int first, int end, int row0, int row1, float depth,
+               std::uint32_t colour) {
   const Lanes column{0, 1, 2, 3};
   const Floats near = Floats{} + depth;
   const Lanes bits = Lanes{} + std::bit_cast<std::int32_t>(depth);
   const Lanes packed = Lanes{} + static_cast<std::int32_t>(colour);
   for (int x = first; x < end; x += 4) {
     const int window = std::min(x, PointSplat::kTileSize - 4);
-    Floats old_depth;
-    Lanes old_colour;
-    std::memcpy(&old_depth, depths + window, sizeof old_depth);
-    std::memcpy(&old_colour, colours + window, sizeof old_colour);
     const Lanes at = column + window;
-    const Lanes in = (at >= x) & (at < end) & (near <= old_depth);
-    const Lanes new_depth = Select(in, bits, std::bit_cast<Lanes>(old_depth));
-    const Lanes new_colour = Select(in, packed, old_colour);
-    std::memcpy(depths + window, &new_depth, sizeof new_depth);
-    std::memcpy(colours + window, &new_colour, sizeof new_colour);
+    const Lanes columns = (at >= x) & (at < end);
+    for (int row = row0; row < row1; ++row) {
+      const std::size_t texel = static_cast<std::size_t>(row) * PointSplat::kTileSize + static_cast<std::size_t>(window);
+      Floats old_depth;
+      Lanes old_colour;
+      std::memcpy(&old_depth, depths + texel, sizeof old_depth);
+      std::memcpy(&old_colour, colours + texel, sizeof old_colour);
+      const Lanes in = columns & (near <= old_depth);
+      const Lanes new_depth = Select(in, bits, std::bit_cast<Lanes>(old_depth));
+      const Lanes new_colour = Select(in, packed, old_colour);
+      std::memcpy(depths + texel, &new_depth, sizeof new_depth);
+      std::memcpy(colours + texel, &new_colour, sizeof new_colour);
+    }
   }
 }
 
@@ -130,7 +135,7 @@ PointSplat::Tile PointSplat::TileAt(int tile) const {
 PointSplat::Texel PointSplat::At(int x, int y, int s) const {
   const int tile = y / kTileSize * tiles_x_ + x / kTileSize;
   if (!std::binary_search(drawn_.begin(), drawn_.end(), tile)) return {kEmpty, 0};
-  const std::uint32_t* depths = TileWords(tile) + 2 * static_cast<std::size_t>(s) * kPlane;
+  const std::uint32_t* depths = planes_.data() + static_cast<std::size_t>(tile) * TileWords() + 2 * static_cast<std::size_t>(s) * kPlane;
   const std::size_t texel = static_cast<std::size_t>(y % kTileSize) * kTileSize + x % kTileSize;
   return {std::bit_cast<float>(depths[texel]), depths[kPlane + texel]};
 }
@@ -195,10 +200,7 @@ void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32
       const Lanes py0 = Max(Ceil(square.y0 - sy), tile.y0) - tile.y0;
       const Lanes py1 = Min(Ceil(square.y1 - sy), tile.y1) - tile.y0;
       for (std::size_t k = 0; k < 4 && first + k < count; ++k) {
-        for (int py = py0[k]; py < py1[k]; ++py) {
-          const std::size_t row = static_cast<std::size_t>(py) * kTileSize;
-          CoverRow(plane(first + k, 0) + row, plane(first + k, 1) + row, px0[k], px1[k], square.depth, square.rgba8);
-        }
+        CoverRows(plane(first + k, 0), plane(first + k, 1), px0[k], px1[k], py0[k], py1[k], square.depth, square.rgba8);
       }
     }
     return;
@@ -261,7 +263,7 @@ void PointSplat::Bin() {
   }
 }
 
-void PointSplat::CoverTile(int tile) {
+void PointSplat::CoverTile(int tile, std::uint32_t* texels) {
   std::uint32_t* const planes = planes_.data() + static_cast<std::size_t>(tile) * TileWords();
   for (std::size_t s = 0; s < samples_.size(); ++s) {
     std::fill_n(planes + 2 * s * kPlane, kPlane, std::bit_cast<std::uint32_t>(kEmpty));
@@ -283,14 +285,23 @@ void PointSplat::CoverTile(int tile) {
       CoverSquare(*big++, rect, planes);
     }
   }
+  if (texels == nullptr) return;
+  // each sample's depth and colour planes, interleaved as (depth, colour) pairs
+  std::uint32_t* out = texels + static_cast<std::size_t>(tile) * TileWords();
+  for (std::size_t s = 0; s < samples_.size(); ++s) {
+    const std::uint32_t* depths = planes + 2 * s * kPlane;
+    const std::uint32_t* colours = depths + kPlane;
+    for (std::size_t i = 0; i < kPlane; ++i) out[2 * i] = depths[i], out[2 * i + 1] = colours[i];
+    out += 2 * kPlane;
+  }
 }
 
-void PointSplat::Cover() {
+void PointSplat::Cover(std::uint32_t* texels) {
   Bin();
   // the tiles taken in turn by this thread and, with many squares, a second one
   std::atomic<std::size_t> next{0};
   const auto work = [&] {
-    for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < drawn_.size();) CoverTile(drawn_[i]);
+    for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < drawn_.size();) CoverTile(drawn_[i], texels);
   };
   std::optional<std::thread> helper;
   if (squares_.size() + big_.size() >= kSquaresPerThread && std::thread::hardware_concurrency() > 1) {

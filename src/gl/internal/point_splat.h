@@ -48,8 +48,13 @@ class PointSplat {
   // (GL_LEQUAL). The image is cut into tiles of kTileSize x kTileSize pixels whose samples fit in
   // a core's L1 cache; each tile reached by a square is emptied and covered with its squares in
   // the order they were added, and with many squares the two threads take tiles in turn (a tile
-  // is written by one thread only, so the image is the same as from one thread).
-  void Cover();
+  // is written by one thread only, so the image is the same as from one thread). Given `texels`
+  // (TexelWords() words), each drawn tile is also written there as the composite reads it: the
+  // tile's samples at texels + 2 * kPlane * samples() * tile, for each sample in turn kTileSize
+  // rows (bottom first) of kTileSize (depth's float bits, colour) pairs.
+  void Cover(std::uint32_t* texels = nullptr);
+  std::size_t TexelWords() const { return static_cast<std::size_t>(tiles_x_) * tiles_y_ * TileWords(); }
+  int tiles_x() const { return tiles_x_; }
   static constexpr int kTileSize = 32;   // a power of two (the composite shader shifts by it)
   static constexpr std::size_t kSquaresPerThread = 4096;   // fewer squares: one thread
 
@@ -72,10 +77,7 @@ class PointSplat {
   const std::vector<int>& drawn() const { return drawn_; }
   bool empty() const { return drawn_.empty(); }
   Tile TileAt(int tile) const;
-  // A drawn tile's samples as planes of kTileSize rows (bottom first) of kTileSize pixels (those
-  // past the image's edge unused): for each sample in turn its depths' float bits, then its
-  // colours. A row of one sample's depths or colours is contiguous, four columns one vector.
-  const std::uint32_t* TileWords(int tile) const { return planes_.data() + static_cast<std::size_t>(tile) * TileWords(); }
+  // The words of a tile's samples: a depth and a colour for each sample of each pixel.
   std::size_t TileWords() const { return 2 * kPlane * samples_.size(); }
   static constexpr std::size_t kPlane = static_cast<std::size_t>(kTileSize) * kTileSize;
   // Sample s of pixel (x, y) (kEmpty outside the tiles drawn).
@@ -111,8 +113,8 @@ class PointSplat {
   // Sorts copies of the squares by the tiles they reach, in the order they were added (big ones
   // aside), and lists the tiles reached.
   void Bin();
-  // Empties tile `tile` and covers it with its squares.
-  void CoverTile(int tile);
+  // Empties tile `tile`, covers it with its squares and, given `texels`, writes it there (Cover).
+  void CoverTile(int tile, std::uint32_t* texels);
   // Covers the samples of `square` within `tile`, whose planes start at `planes`.
   void CoverSquare(const Square& square, const Tile& tile, std::uint32_t* planes) const;
   int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0;
@@ -124,7 +126,10 @@ class PointSplat {
   std::vector<Eigen::Vector2f> samples_;
   Eigen::Vector2f sample_min_, sample_max_;   // their extent within a pixel
   std::vector<float> sample_x_, sample_y_;    // their x and y, as many as a multiple of four
-  std::vector<std::uint32_t> planes_;         // tile by tile (TileWords)
+  // tile by tile (TileWords): for each sample in turn its plane of depths' float bits, then its
+  // plane of colours, kTileSize rows (bottom first) of kTileSize (those past the image's edge
+  // unused); a row of one sample's depths or colours is contiguous, four columns one vector
+  std::vector<std::uint32_t> planes_;
   std::vector<int> drawn_;
 };
 
