@@ -121,9 +121,8 @@ void PointSplat::Clear(int width, int height, const std::vector<Eigen::Vector2f>
   for (std::size_t s = 0; s < samples.size(); ++s) sample_x_[s] = samples[s].x(), sample_y_[s] = samples[s].y();
   // no pass over the image: a tile is emptied when a square first reaches it in a frame
   planes_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_ * TileWords());
-  tile_starts_.assign(static_cast<std::size_t>(tiles_x_) * tiles_y_ + 1, 0);
-  squares_.clear();
-  big_.clear();
+  kept_used_ = 0;
+  next_order_ = 0;
   drawn_.clear();
 }
 
@@ -146,42 +145,47 @@ PointSplat::Pixels PointSplat::Reach(float x0, float x1, float y0, float y1) con
   return {std::max(0, c[0]), std::min(width_, c[1]) - 1, std::max(0, c[2]), std::min(height_, c[3]) - 1};
 }
 
-void PointSplat::Keep(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape) {
+void PointSplat::Keep(Kept& kept, const Square& square) const {
   // llvmpipe snaps each vertex (lp_setup_tri.c)
-  KeepSnapped(SnapVertex(x0), SnapVertex(x1), SnapVertex(y0), SnapVertex(y1), depth, rgba8, shape);
+  Square snapped = square;
+  snapped.x0 = SnapVertex(square.x0), snapped.x1 = SnapVertex(square.x1);
+  snapped.y0 = SnapVertex(square.y0), snapped.y1 = SnapVertex(square.y1);
+  KeepSnapped(kept, snapped);
 }
 
-void PointSplat::KeepPoint(float x, float y, float size, float depth, std::uint32_t rgba8) {
+void PointSplat::KeepPoint(Kept& kept, float x, float y, float size, float depth, std::uint32_t rgba8,
+                           std::uint32_t order) const {
   // lp_setup_point.c: the size in fixed point, at least a pixel; x0 = snapped centre - size / 2 (an
   // integer division), x1 = x0 + size
   const int fixed = std::max(SnapPoint(std::min(size, 1e6f)), 256);
   const int x0 = SnapPoint(x) - fixed / 2, y0 = SnapPoint(y) - fixed / 2;
   const auto pixels = [](int fixed_point) { return static_cast<float>(fixed_point) * (1.f / 256.f); };
-  KeepSnapped(pixels(x0), pixels(x0 + fixed), pixels(y0), pixels(y0 + fixed), depth, rgba8, 0);
+  KeepSnapped(kept, {pixels(x0), pixels(x0 + fixed), pixels(y0), pixels(y0 + fixed), depth, rgba8, order, 0});
 }
 
-void PointSplat::KeepSnapped(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape) {
-  if (!(std::isfinite(x0) && std::isfinite(x1) && std::isfinite(y0) && std::isfinite(y1) && std::isfinite(depth))) {
+void PointSplat::KeepSnapped(Kept& kept, Square square) const {
+  if (!(std::isfinite(square.x0) && std::isfinite(square.x1) && std::isfinite(square.y0) && std::isfinite(square.y1) &&
+        std::isfinite(square.depth))) {
     return;   // a point at infinity: GL would draw nothing either
   }
-  const Pixels pixels = Reach(x0, x1, y0, y1);
+  const Pixels pixels = Reach(square.x0, square.x1, square.y0, square.y1);
   if (pixels.px0 > pixels.px1 || pixels.py0 > pixels.py1) return;
   const int tx0 = pixels.px0 / kTileSize, tx1 = pixels.px1 / kTileSize;
   const int ty0 = pixels.py0 / kTileSize, ty1 = pixels.py1 / kTileSize;
   const int tile = ty0 * tiles_x_ + tx0;
-  Square square{x0, x1, y0, y1, depth, rgba8, static_cast<std::uint32_t>(squares_.size() + big_.size()),
-                static_cast<std::uint32_t>(tile) | static_cast<std::uint32_t>(shape) << Square::kShapeShift};
+  square.reach |= static_cast<std::uint32_t>(tile);
   if (tx1 - tx0 > 1 || ty1 - ty0 > 1) {
-    big_.push_back(square);   // kept once (Bin)
+    kept.big.push_back(square);   // kept once (Bin)
     return;
   }
-  ++tile_starts_[tile + 1];
-  if (tx1 > tx0) square.reach |= Square::kWide, ++tile_starts_[tile + 2];
+  std::uint32_t* const counts = kept.counts.data();
+  ++counts[tile];
+  if (tx1 > tx0) square.reach |= Square::kWide, ++counts[tile + 1];
   if (ty1 > ty0) {
-    square.reach |= Square::kHigh, ++tile_starts_[tile + tiles_x_ + 1];
-    if (tx1 > tx0) ++tile_starts_[tile + tiles_x_ + 2];
+    square.reach |= Square::kHigh, ++counts[tile + tiles_x_];
+    if (tx1 > tx0) ++counts[tile + tiles_x_ + 1];
   }
-  squares_.push_back(square);
+  kept.squares.push_back(square);
 }
 
 void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32_t* planes) const {
@@ -233,34 +237,78 @@ void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32
   }
 }
 
+void PointSplat::NextKept() {
+  if (kept_used_ == kept_.size()) kept_.emplace_back();
+  Kept& kept = kept_[kept_used_++];
+  kept.squares.clear();
+  kept.big.clear();
+  kept.counts.assign(static_cast<std::size_t>(tiles_x_) * tiles_y_, 0);
+}
+
+std::size_t PointSplat::KeptSquares() const {
+  std::size_t squares = 0;
+  for (std::size_t k = 0; k < kept_used_; ++k) squares += kept_[k].squares.size() + kept_[k].big.size();
+  return squares;
+}
+
+template <typename Work>
+void PointSplat::OnTwoThreads(bool two, const Work& work) {
+  std::optional<std::thread> helper;
+  if (two && std::thread::hardware_concurrency() > 1) {
+    try {
+      helper.emplace([&work] { work(1); });
+    } catch (const std::system_error&) {
+      // no thread to be had: this one does both
+    }
+  }
+  work(0);
+  if (helper) {
+    helper->join();
+  } else if (two) {
+    work(1);
+  }
+}
+
 void PointSplat::Bin() {
   // a stable counting sort of copies of the squares by tile (a tile's squares keep their order),
-  // so that covering a tile reads its squares in a row rather than from all over squares_; Keep
-  // counted them, and kept those reaching more tiles than one of kTileSize pixels can (2 x 2)
-  // aside in big_, so that the copies stay within four a square however big the squares are
+  // so that covering a tile reads its squares in a row rather than from all over the kept ones;
+  // Keep counted them, and kept those reaching more tiles than one of kTileSize pixels can (2 x 2)
+  // aside, so that the copies stay within four a square however big the squares are
   const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * tiles_y_;
   std::vector<char> reached(tiles, 0);
-  for (const Square& square : big_) {
-    const Pixels pixels = Reach(square.x0, square.x1, square.y0, square.y1);
-    for (int ty = pixels.py0 / kTileSize; ty <= pixels.py1 / kTileSize; ++ty) {
-      for (int tx = pixels.px0 / kTileSize; tx <= pixels.px1 / kTileSize; ++tx) reached[ty * tiles_x_ + tx] = 1;
+  big_.clear();
+  for (std::size_t k = 0; k < kept_used_; ++k) {
+    for (const Square& square : kept_[k].big) {
+      big_.push_back(square);
+      const Pixels pixels = Reach(square.x0, square.x1, square.y0, square.y1);
+      for (int ty = pixels.py0 / kTileSize; ty <= pixels.py1 / kTileSize; ++ty) {
+        for (int tx = pixels.px0 / kTileSize; tx <= pixels.px1 / kTileSize; ++tx) reached[ty * tiles_x_ + tx] = 1;
+      }
     }
   }
+  // tile t's squares from kept_[0], then kept_[1]'s, ...
+  tile_starts_.assign(tiles + 1, 0);
   for (std::size_t t = 0; t < tiles; ++t) {
-    if (reached[t] || tile_starts_[t + 1] > 0) drawn_.push_back(static_cast<int>(t));
-    tile_starts_[t + 1] += tile_starts_[t];
+    std::uint32_t start = tile_starts_[t];
+    for (std::size_t k = 0; k < kept_used_; ++k) kept_[k].next.resize(tiles), kept_[k].next[t] = start, start += kept_[k].counts[t];
+    tile_starts_[t + 1] = start;
+    if (reached[t] || start > tile_starts_[t]) drawn_.push_back(static_cast<int>(t));
   }
   binned_.resize(tile_starts_[tiles]);
-  std::vector<std::uint32_t> next(tile_starts_.begin(), tile_starts_.end() - 1);
-  for (const Square& square : squares_) {
-    const int tile = square.tile();
-    binned_[next[tile]++] = square;
-    if (square.reach & Square::kWide) binned_[next[tile + 1]++] = square;
-    if (square.reach & Square::kHigh) {
-      binned_[next[tile + tiles_x_]++] = square;
-      if (square.reach & Square::kWide) binned_[next[tile + tiles_x_ + 1]++] = square;
+  OnTwoThreads(KeptSquares() >= kSquaresPerThread, [&](std::size_t thread) {
+    for (std::size_t k = thread; k < kept_used_; k += 2) {
+      std::vector<std::uint32_t>& next = kept_[k].next;
+      for (const Square& square : kept_[k].squares) {
+        const int tile = square.tile();
+        binned_[next[tile]++] = square;
+        if (square.reach & Square::kWide) binned_[next[tile + 1]++] = square;
+        if (square.reach & Square::kHigh) {
+          binned_[next[tile + tiles_x_]++] = square;
+          if (square.reach & Square::kWide) binned_[next[tile + tiles_x_ + 1]++] = square;
+        }
+      }
     }
-  }
+  });
 }
 
 void PointSplat::CoverTile(int tile, std::uint32_t* texels) {
@@ -300,28 +348,30 @@ void PointSplat::Cover(std::uint32_t* texels) {
   Bin();
   // the tiles taken in turn by this thread and, with many squares, a second one
   std::atomic<std::size_t> next{0};
-  const auto work = [&] {
+  OnTwoThreads(KeptSquares() >= kSquaresPerThread, [&](std::size_t) {
     for (std::size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < drawn_.size();) CoverTile(drawn_[i], texels);
-  };
-  std::optional<std::thread> helper;
-  if (squares_.size() + big_.size() >= kSquaresPerThread && std::thread::hardware_concurrency() > 1) {
-    try {
-      helper.emplace(work);
-    } catch (const std::system_error&) {
-      // no thread to be had: this one covers every tile
-    }
-  }
-  work();
-  if (helper) helper->join();
-  squares_.clear();
-  big_.clear();
+  });
 }
 
 void PointSplat::Add(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
-  using Style = scene::PointSet::Style;
   const std::size_t n = std::min(points.positions.size(), points.colours.size());
   const Eigen::Matrix4f MV = V.cast<float>(), Pf = P.cast<float>();
-  const Eigen::Matrix4f MVP = Pf * MV;
+  const std::uint32_t first_order = next_order_;
+  next_order_ += static_cast<std::uint32_t>(n);
+  // a big set's second half projected on a second thread, into a Kept of its own after the first's
+  const bool two = n >= 2 * kSquaresPerThread;
+  const std::size_t first_kept = kept_used_, mid = two ? n / 2 : n;
+  NextKept();
+  if (two) NextKept();   // (kept_ may grow: its elements are taken after)
+  OnTwoThreads(two, [&](std::size_t half) {
+    Project(points, MV, Pf, half == 0 ? 0 : mid, half == 0 ? mid : n, first_order, kept_[first_kept + half]);
+  });
+}
+
+void PointSplat::Project(const scene::PointSet& points, const Eigen::Matrix4f& MV, const Eigen::Matrix4f& P,
+                         std::size_t first, std::size_t last, std::uint32_t first_order, Kept& kept) const {
+  using Style = scene::PointSet::Style;
+  const Eigen::Matrix4f MVP = P * MV;
   const float half_width = 0.5f * static_cast<float>(width_), half_height = 0.5f * static_cast<float>(height_);
   // window x, y and depth of a clip-space position as Mesa's draw module maps it (draw_llvm.c's
   // generate_viewport: times 1 / w, then the viewport's scale and translation), so that two points
@@ -331,25 +381,26 @@ void PointSplat::Add(const scene::PointSet& points, const Eigen::Matrix4d& V, co
     return Eigen::Vector3f(clip.x() * iw * half_width + half_width, clip.y() * iw * half_height + half_height,
                            clip.z() * iw * 0.5f + 0.5f);
   };
-  const int shape = points.style == Style::kSquares ? 1 : points.style == Style::kSpheres ? 2 : 0;
+  const std::uint32_t shape = points.style == Style::kSquares ? 1 : points.style == Style::kSpheres ? 2 : 0;
   const float half = 0.5f * points.size.x();   // pixels for Points, metres for the squares
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = first; i < last; ++i) {
     const std::uint32_t rgba8 = Pack(points.colours[i]);   // the 8-bit vertex colour
+    const auto order = static_cast<std::uint32_t>(first_order + i);
     const Eigen::Vector4f p(points.positions[i].x(), points.positions[i].y(), points.positions[i].z(), 1.f);
     if (points.style == Style::kPoints) {
       // a GL point: clipped by its centre, a square of point_size pixels (at least one)
       const Eigen::Vector4f clip = MVP * p;
       if (!(std::abs(clip.x()) <= clip.w() && std::abs(clip.y()) <= clip.w() && std::abs(clip.z()) <= clip.w())) continue;
       const Eigen::Vector3f w = window(clip);
-      KeepPoint(w.x(), w.y(), points.size.x(), w.z(), rgba8);
+      KeepPoint(kept, w.x(), w.y(), points.size.x(), w.z(), rgba8, order);
     } else {
       // a camera-facing square: corners moved from the centre in the image plane, clipped near/far
       const Eigen::Vector4f centre = MV * p;
-      const Eigen::Vector4f clip = Pf * centre;
+      const Eigen::Vector4f clip = P * centre;
       if (!(std::abs(clip.z()) <= clip.w())) continue;
-      const Eigen::Vector3f low = window(Pf * (centre + Eigen::Vector4f(-half, -half, 0, 0)));
-      const Eigen::Vector3f high = window(Pf * (centre + Eigen::Vector4f(half, half, 0, 0)));
-      Keep(low.x(), high.x(), low.y(), high.y(), window(clip).z(), rgba8, shape);
+      const Eigen::Vector3f low = window(P * (centre + Eigen::Vector4f(-half, -half, 0, 0)));
+      const Eigen::Vector3f high = window(P * (centre + Eigen::Vector4f(half, half, 0, 0)));
+      Keep(kept, {low.x(), high.x(), low.y(), high.y(), window(clip).z(), rgba8, order, shape << Square::kShapeShift});
     }
   }
 }

@@ -102,27 +102,50 @@ class PointSplat {
     int px0, px1, py0, py1;
   };
   Pixels Reach(float x0, float x1, float y0, float y1) const;
+  // Squares kept by one thread from a run of one set's points, as added: those reaching at most 2 x
+  // 2 tiles, those reaching more (kept once: Bin), and how many reach each tile t (counts[t]; not
+  // the big ones); then (Bin) where in binned_ its next square for tile t goes (next[t]).
+  struct Kept {
+    std::vector<Square> squares, big;
+    std::vector<std::uint32_t> counts, next;
+  };
+  // Takes an emptied Kept after those taken since Clear.
+  void NextKept();
+  // Keeps into `kept` the squares of points [first, last) of `points`, the i-th the order-th added
+  // (order = first_order + i).
+  void Project(const scene::PointSet& points, const Eigen::Matrix4f& MV, const Eigen::Matrix4f& P, std::size_t first,
+               std::size_t last, std::uint32_t first_order, Kept& kept) const;
   // Keeps the square, its corners snapped as llvmpipe snaps them, unless it covers no pixel, and
   // counts it in the tiles it reaches.
-  void Keep(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape);
+  void Keep(Kept& kept, const Square& square) const;
   // Keeps a GL point of `size` pixels (at least one) centred at window (x, y), as lp_setup_point
   // places it: its centre snapped, then moved out by half the snapped size.
-  void KeepPoint(float x, float y, float size, float depth, std::uint32_t rgba8);
+  void KeepPoint(Kept& kept, float x, float y, float size, float depth, std::uint32_t rgba8, std::uint32_t order) const;
   // Keeps a square already snapped.
-  void KeepSnapped(float x0, float x1, float y0, float y1, float depth, std::uint32_t rgba8, int shape);
+  void KeepSnapped(Kept& kept, Square square) const;
   // Sorts copies of the squares by the tiles they reach, in the order they were added (big ones
-  // aside), and lists the tiles reached.
+  // aside), and lists the tiles reached; with many squares, each thread copies some Kepts.
   void Bin();
+  // Runs work(0) on this thread and work(1) on a second one if `two` (and a thread can be had;
+  // else after work(0)).
+  template <typename Work>
+  static void OnTwoThreads(bool two, const Work& work);
   // Empties tile `tile`, covers it with its squares and, given `texels`, writes it there (Cover).
   void CoverTile(int tile, std::uint32_t* texels);
   // Covers the samples of `square` within `tile`, whose planes start at `planes`.
   void CoverSquare(const Square& square, const Tile& tile, std::uint32_t* planes) const;
   int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0;
-  // as added; by tile, tile t's in binned_[tile_starts_[t]..[t + 1]); those reaching more than 2 x 2
-  // tiles, as added
-  std::vector<Square> squares_, binned_, big_;
-  // until Bin, tile_starts_[t + 1] counts the squares (not big_) reaching tile t
+  // the squares kept since Clear, in the order added (kept_[0, kept_used_); a set's points in
+  // one Kept or, for a big set, two, one from each thread); the order the next added takes
+  std::vector<Kept> kept_;
+  std::size_t kept_used_ = 0;
+  std::uint32_t next_order_ = 0;
+  // by tile (Bin): tile t's in binned_[tile_starts_[t]..[t + 1]); those reaching more than 2 x 2
+  // tiles, in the order added
+  std::vector<Square> binned_, big_;
   std::vector<std::uint32_t> tile_starts_;
+  // Keeps from every thread so far, squares and big ones
+  std::size_t KeptSquares() const;
   std::vector<Eigen::Vector2f> samples_;
   Eigen::Vector2f sample_min_, sample_max_;   // their extent within a pixel
   std::vector<float> sample_x_, sample_y_;    // their x and y, as many as a multiple of four
