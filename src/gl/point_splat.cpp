@@ -68,13 +68,18 @@ Lanes Select(Lanes mask, Lanes a, Lanes b) { return (a & mask) | (b & ~mask); }
 Lanes Max(Lanes a, int b) { return Select(a > b, a, Lanes{} + b); }
 Lanes Min(Lanes a, int b) { return Select(a < b, a, Lanes{} + b); }
 
-// Ceil for four values at once
+// Ceil for four values well within int
+Lanes CeilWithin(Floats v) {
+  const Lanes i = __builtin_convertvector(v, Lanes);
+  return i - (__builtin_convertvector(i, Floats) < v);   // a true lane is -1
+}
+
+// Ceil for four values at once, any held at a million pixels (a square reaching far off the screen)
 Lanes Ceil(Floats v) {
   const Floats low = Floats{} - 1e6f, high = Floats{} + 1e6f;
   v = std::bit_cast<Floats>(Select(v < low, std::bit_cast<Lanes>(low), std::bit_cast<Lanes>(v)));
   v = std::bit_cast<Floats>(Select(v > high, std::bit_cast<Lanes>(high), std::bit_cast<Lanes>(v)));
-  const Lanes i = __builtin_convertvector(v, Lanes);
-  return i - (__builtin_convertvector(i, Floats) < v);   // a true lane is -1
+  return CeilWithin(v);
 }
 
 // Covers columns [first, end) of rows [row0, row1) of one sample's depths and colours (planes of
@@ -194,15 +199,21 @@ void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32
   const auto plane = [&](std::size_t s, int which) { return planes + (2 * s + which) * kPlane; };
   if (square.shape() == 0) {
     // one colour: each sample's own rows and columns of pixels whose sample lies inside, where x
-    // in [x0, x1) is px in [ceil(x0 - sx), ceil(x1 - sx)); four samples' bounds at a time
+    // in [x0, x1) is px in [ceil(x0 - sx), ceil(x1 - sx)); four samples' bounds at a time, the
+    // square first held to the tile and a pixel either side (the same pixels within the tile)
+    const auto held = [](float v, int low, int high) {
+      return std::clamp(v, static_cast<float>(low - 2), static_cast<float>(high + 2));
+    };
+    const float x0 = held(square.x0, tile.x0, tile.x1), x1 = held(square.x1, tile.x0, tile.x1);
+    const float y0 = held(square.y0, tile.y0, tile.y1), y1 = held(square.y1, tile.y0, tile.y1);
     for (std::size_t first = 0; first < count; first += 4) {
       Floats sx, sy;
       std::memcpy(&sx, sample_x_.data() + first, sizeof sx);
       std::memcpy(&sy, sample_y_.data() + first, sizeof sy);
-      const Lanes px0 = Max(Ceil(square.x0 - sx), tile.x0) - tile.x0;
-      const Lanes px1 = Min(Ceil(square.x1 - sx), tile.x1) - tile.x0;
-      const Lanes py0 = Max(Ceil(square.y0 - sy), tile.y0) - tile.y0;
-      const Lanes py1 = Min(Ceil(square.y1 - sy), tile.y1) - tile.y0;
+      const Lanes px0 = Max(CeilWithin(x0 - sx), tile.x0) - tile.x0;
+      const Lanes px1 = Min(CeilWithin(x1 - sx), tile.x1) - tile.x0;
+      const Lanes py0 = Max(CeilWithin(y0 - sy), tile.y0) - tile.y0;
+      const Lanes py1 = Min(CeilWithin(y1 - sy), tile.y1) - tile.y0;
       for (std::size_t k = 0; k < 4 && first + k < count; ++k) {
         CoverRows(plane(first + k, 0), plane(first + k, 1), px0[k], px1[k], py0[k], py1[k], square.depth, square.rgba8);
       }
