@@ -2,7 +2,7 @@
 // into a per-sample colour and depth image, which PointSetDrawing composites into the frame with
 // one draw per sample writing gl_FragDepth (so the robot still hides points behind it and points
 // hide the robot). llvmpipe spends ~0.6 us of rasteriser time per point primitive: 100k points
-// cost 75-95 ms of CPU a frame through GL and ~21 this way (docs/point-clouds.md). Each sample is
+// cost 75-95 ms of CPU a frame through GL and ~14 this way (docs/point-clouds.md). Each sample is
 // covered exactly as llvmpipe covers it (sample inside the square; the square's colour and shape
 // evaluated at the pixel centre, as a multisampled fragment shader runs once per pixel), so the
 // picture is the GL one but where two points' depths tie or nearly tie. The image is covered
@@ -26,10 +26,10 @@ class PointSplat {
   // Whether an opaque set of `points` can be splatted: a camera-facing style (not Boxes).
   static bool Splattable(const scene::PointSet& points) { return points.style != scene::PointSet::Style::kBoxes; }
   // A frame's opaque camera-facing points whose GlCost is below this are drawn by GL: the splat's
-  // cost whatever it holds (emptying, uploading and compositing per sample the tiles the points
-  // reach: ~8 ms of CPU for a cloud around mrm at 640x480 with 4x multisampling) is more than
-  // GL's ~1.2 us a square below some 5,000 squares. A marker's points and sphere lists are usually
-  // few.
+  // cost whatever it holds (emptying, writing out and compositing per sample the tiles the points
+  // reach: ~8 ms of CPU for a cloud around mrm at 640x480 with 4x multisampling, when this was
+  // measured) is more than GL's ~1.2 us a square below some 5,000 squares. A marker's points and
+  // sphere lists are usually few.
   static constexpr std::size_t kFewestPoints = 4096;
   // What GL would spend on drawing `points`, in camera-facing squares: a GL point (Points) costs
   // llvmpipe about a third of a square's two triangles (points bench, CPU ms per frame with mrm,
