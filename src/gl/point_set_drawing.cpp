@@ -157,15 +157,18 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
   glGetIntegerv(GL_SAMPLES, &samples);
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
   // the splat's texels are a buffer texture of a pair for each sample of each pixel of the tiles
-  // (Composite): more than GL allows, the sets are drawn by GL; and points that GL draws for less
-  // than kFewestPoints squares are drawn by GL too (cheaper; the same pixels)
+  // (Composite): more than GL allows (or no buffer to be mapped), the sets are drawn by GL; and
+  // points that GL draws for less than kFewestPoints squares are drawn by GL too (cheaper; the
+  // same pixels)
   std::size_t splattable = 0;
   for (const scene::PointSet* points : sets) {
     if (PointSplat::Splattable(*points)) splattable += PointSplat::GlCost(*points);
   }
-  const auto tiles = [](int pixels) { return static_cast<long>(pixels + PointSplat::kTileSize - 1) / PointSplat::kTileSize; };
-  const long texels = tiles(viewport[2]) * tiles(viewport[3]) * PointSplat::kPlane * std::max(samples, 1);
-  const bool can_splat = texels <= max_texels && splattable >= PointSplat::kFewestPoints;
+  const std::size_t words = PointSplat::TexelWords(viewport[2], viewport[3], std::max(samples, 1));
+  std::uint32_t* const texels = splattable >= PointSplat::kFewestPoints && words / 2 <= static_cast<std::size_t>(max_texels)
+                                    ? SplatTexels(words)
+                                    : nullptr;
+  const bool can_splat = texels != nullptr;
   bool splatting = false;
   for (const scene::PointSet* points : sets) {
     if (!can_splat || !PointSplat::Splattable(*points)) {
@@ -181,7 +184,7 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
     splat_.Add(*points, V, P);
   }
   if (!splatting) return;
-  splat_.Cover(SplatTexels(splat_.TexelWords()));
+  splat_.Cover(texels);
   if (!splat_.empty()) Composite();
 }
 
@@ -200,9 +203,9 @@ std::uint32_t* PointSetDrawing::SplatTexels(std::size_t words) {
     const auto bytes = static_cast<GLsizeiptr>(words * sizeof(std::uint32_t));
     glBufferStorage(GL_TEXTURE_BUFFER, bytes, nullptr, access);
     splat_texels_ = static_cast<std::uint32_t*>(glMapBufferRange(GL_TEXTURE_BUFFER, 0, bytes, access));
+    splat_words_ = splat_texels_ != nullptr ? words : 0;   // none mapped: the next frame tries again
     glBindTexture(GL_TEXTURE_BUFFER, splat_texture_);
     glTexBuffer(GL_TEXTURE_BUFFER, GL_RG32UI, splat_buffer_);
-    splat_words_ = words;
   }
   return splat_texels_;
 }

@@ -53,7 +53,12 @@ class PointSplat {
   // tile's samples at texels + 2 * kPlane * samples() * tile, for each sample in turn kTileSize
   // rows (bottom first) of kTileSize (depth's float bits, colour) pairs.
   void Cover(std::uint32_t* texels = nullptr);
-  std::size_t TexelWords() const { return static_cast<std::size_t>(tiles_x_) * tiles_y_ * TileWords(); }
+  std::size_t TexelWords() const { return TexelWords(width_, height_, samples()); }
+  // The same for a frame of `width` x `height` pixels of `samples` samples.
+  static std::size_t TexelWords(int width, int height, int samples) {
+    const auto tiles = [](int pixels) { return static_cast<std::size_t>((pixels + kTileSize - 1) / kTileSize); };
+    return tiles(width) * tiles(height) * 2 * kPlane * static_cast<std::size_t>(samples);
+  }
   int tiles_x() const { return tiles_x_; }
   static constexpr int kTileSize = 32;   // a power of two (the composite shader shifts by it)
   static constexpr std::size_t kSquaresPerThread = 4096;   // fewer squares: one thread
