@@ -33,8 +33,9 @@ float SnapVertex(float v) {
 }
 // A GL point's centre and size (lp_setup_point.c's subpixel_snap): util_iround, which on x86-64
 // adds or takes away a half in float and truncates (u_math.h), in 1/256 pixel
+// (v finite; held to a billion, 3.9 million pixels, so that adding a size stays within int)
 int SnapPoint(float v) {
-  v = std::clamp(v * 256.f, -2e9f, 2e9f);
+  v = std::clamp(v * 256.f, -1e9f, 1e9f);
   return static_cast<int>(v >= 0.f ? v + 0.5f : v - 0.5f);
 }
 
@@ -162,7 +163,8 @@ void PointSplat::KeepPoint(Kept& kept, float x, float y, float size, float depth
                            std::uint32_t order) const {
   // lp_setup_point.c: the size in fixed point, at least a pixel; x0 = snapped centre - size / 2 (an
   // integer division), x1 = x0 + size
-  const int fixed = std::max(SnapPoint(std::min(size, 1e6f)), 256);
+  if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(depth))) return;   // GL would draw nothing either
+  const int fixed = std::max(SnapPoint(size >= 0.f ? std::min(size, 1e6f) : 0.f), 256);   // (not a number: a pixel)
   const int x0 = SnapPoint(x) - fixed / 2, y0 = SnapPoint(y) - fixed / 2;
   const auto pixels = [](int fixed_point) { return static_cast<float>(fixed_point) * (1.f / 256.f); };
   KeepSnapped(kept, {pixels(x0), pixels(x0 + fixed), pixels(y0), pixels(y0 + fixed), depth, rgba8, order, 0});
