@@ -122,6 +122,10 @@ void PointSplat::Clear(int width, int height, const std::vector<Eigen::Vector2f>
   samples_ = samples;
   sample_min_ = sample_max_ = samples.front();
   for (const Eigen::Vector2f& s : samples) sample_min_ = sample_min_.cwiseMin(s), sample_max_ = sample_max_.cwiseMax(s);
+  // their extent in 1/256 pixel, when the samples lie on that grid (GL's standard positions do)
+  const auto on_grid = [](const Eigen::Vector2f& s) { return (s * 256.f).array().round().matrix() == s * 256.f; };
+  fixed_samples_ = std::all_of(samples.begin(), samples.end(), on_grid);
+  fixed_sample_min_ = (sample_min_ * 256.f).cast<int>(), fixed_sample_max_ = (sample_max_ * 256.f).cast<int>();
   sample_x_.assign((samples.size() + 3) / 4 * 4, samples.front().x());
   sample_y_.assign(sample_x_.size(), samples.front().y());
   for (std::size_t s = 0; s < samples.size(); ++s) sample_x_[s] = samples[s].x(), sample_y_[s] = samples[s].y();
@@ -161,13 +165,22 @@ void PointSplat::Keep(Kept& kept, const Square& square) const {
 
 void PointSplat::KeepPoint(Kept& kept, float x, float y, float size, float depth, std::uint32_t rgba8,
                            std::uint32_t order) const {
+  if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(depth))) return;   // GL would draw nothing either
   // lp_setup_point.c: the size in fixed point, at least a pixel; x0 = snapped centre - size / 2 (an
   // integer division), x1 = x0 + size
-  if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(depth))) return;   // GL would draw nothing either
   const int fixed = std::max(SnapPoint(size >= 0.f ? std::min(size, 1e6f) : 0.f), 256);   // (not a number: a pixel)
   const int x0 = SnapPoint(x) - fixed / 2, y0 = SnapPoint(y) - fixed / 2;
   const auto pixels = [](int fixed_point) { return static_cast<float>(fixed_point) * (1.f / 256.f); };
-  KeepSnapped(kept, {pixels(x0), pixels(x0 + fixed), pixels(y0), pixels(y0 + fixed), depth, rgba8, order, 0});
+  const Square square{pixels(x0), pixels(x0 + fixed), pixels(y0), pixels(y0 + fixed), depth, rgba8, order, 0};
+  if (!fixed_samples_) {
+    KeepSnapped(kept, square);
+    return;
+  }
+  // Reach in whole numbers: ceil(v / 256) is (v + 255) >> 8, the shift rounding down
+  const auto ceil = [](int v) { return (v + 255) >> 8; };
+  KeepReaching(kept, square,
+               {std::max(0, ceil(x0 - fixed_sample_max_.x())), std::min(width_, ceil(x0 + fixed - fixed_sample_min_.x())) - 1,
+                std::max(0, ceil(y0 - fixed_sample_max_.y())), std::min(height_, ceil(y0 + fixed - fixed_sample_min_.y())) - 1});
 }
 
 void PointSplat::KeepSnapped(Kept& kept, Square square) const {
@@ -175,7 +188,10 @@ void PointSplat::KeepSnapped(Kept& kept, Square square) const {
         std::isfinite(square.depth))) {
     return;   // a point at infinity: GL would draw nothing either
   }
-  const Pixels pixels = Reach(square.x0, square.x1, square.y0, square.y1);
+  KeepReaching(kept, square, Reach(square.x0, square.x1, square.y0, square.y1));
+}
+
+void PointSplat::KeepReaching(Kept& kept, Square square, const Pixels& pixels) const {
   if (pixels.px0 > pixels.px1 || pixels.py0 > pixels.py1) return;
   const int tx0 = pixels.px0 / kTileSize, tx1 = pixels.px1 / kTileSize;
   const int ty0 = pixels.py0 / kTileSize, ty1 = pixels.py1 / kTileSize;

@@ -128,6 +128,8 @@ class PointSplat {
   void KeepPoint(Kept& kept, float x, float y, float size, float depth, std::uint32_t rgba8, std::uint32_t order) const;
   // Keeps a square already snapped.
   void KeepSnapped(Kept& kept, Square square) const;
+  // Keeps a square already snapped whose samples may cover `pixels` (Reach).
+  void KeepReaching(Kept& kept, Square square, const Pixels& pixels) const;
   // Sorts copies of the squares by the tiles they reach, in the order they were added (big ones
   // aside), and lists the tiles reached; with many squares, each thread copies some Kepts.
   void Bin();
@@ -153,6 +155,8 @@ class PointSplat {
   std::size_t KeptSquares() const;
   std::vector<Eigen::Vector2f> samples_;
   Eigen::Vector2f sample_min_, sample_max_;   // their extent within a pixel
+  bool fixed_samples_ = false;                 // whether they lie on the 1/256-pixel grid, and then
+  Eigen::Vector2i fixed_sample_min_, fixed_sample_max_;   // their extent in 1/256 pixel
   std::vector<float> sample_x_, sample_y_;    // their x and y, as many as a multiple of four
   // tile by tile (TileWords): for each sample in turn its plane of depths' float bits, then its
   // plane of colours, kTileSize rows (bottom first) of kTileSize (those past the image's edge
