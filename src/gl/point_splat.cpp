@@ -317,9 +317,10 @@ void PointSplat::Bin() {
   }
   // tile t's squares from kept_[0], then kept_[1]'s, ...
   tile_starts_.assign(tiles + 1, 0);
+  for (std::size_t k = 0; k < kept_used_; ++k) kept_[k].next.resize(tiles);
   for (std::size_t t = 0; t < tiles; ++t) {
     std::uint32_t start = tile_starts_[t];
-    for (std::size_t k = 0; k < kept_used_; ++k) kept_[k].next.resize(tiles), kept_[k].next[t] = start, start += kept_[k].counts[t];
+    for (std::size_t k = 0; k < kept_used_; ++k) kept_[k].next[t] = start, start += kept_[k].counts[t];
     tile_starts_[t + 1] = start;
     if (reached[t] || start > tile_starts_[t]) drawn_.push_back(static_cast<int>(t));
   }
