@@ -33,6 +33,14 @@ std::uint8_t Channel(float value) {
   return static_cast<std::uint8_t>(std::clamp(value, 0.f, 1.f) * 255.f + 0.5f);
 }
 
+// The points of `points` drawn: those with both a position and a colour.
+size_t Count(const scene::PointSet& points) { return std::min(points.positions.size(), points.colours.size()); }
+
+// Whether `a` and `b` draw with the same program and uniforms, and so as one draw.
+bool SameLook(const scene::PointSet& a, const scene::PointSet& b) {
+  return a.style == b.style && a.size == b.size && a.box_axes == b.box_axes;
+}
+
 }  // namespace
 
 PointSetDrawing::PointSetDrawing()
@@ -74,23 +82,37 @@ PointSetDrawing::~PointSetDrawing() {
   glDeleteVertexArrays(1, &vertex_array_);
 }
 
-// Streams points [first, first + count).
-void PointSetDrawing::Upload(const scene::PointSet& points, size_t first, size_t count) {
+// Streams the next `count` points of `sets` from `cursor` on, moving it past them.
+void PointSetDrawing::Upload(std::span<const scene::PointSet* const> sets, Cursor& cursor, size_t count) {
   staging_.resize(count * sizeof(PointVertex));
   auto* out = reinterpret_cast<PointVertex*>(staging_.data());
-  for (size_t i = first; i < first + count; ++i) {
-    const Eigen::Vector3f& p = points.positions[i];
-    const Eigen::Vector4f& c = points.colours[i];
-    *out++ = {{p.x(), p.y(), p.z()}, {Channel(c[0]), Channel(c[1]), Channel(c[2]), Channel(c[3])}};
+  for (size_t left = count; left > 0;) {
+    const scene::PointSet& points = *sets[cursor.set];
+    const size_t n = std::min(Count(points) - cursor.point, left);
+    for (size_t i = cursor.point; i < cursor.point + n; ++i) {
+      const Eigen::Vector3f& p = points.positions[i];
+      const Eigen::Vector4f& c = points.colours[i];
+      *out++ = {{p.x(), p.y(), p.z()}, {Channel(c[0]), Channel(c[1]), Channel(c[2]), Channel(c[3])}};
+    }
+    left -= n, cursor.point += n;
+    if (cursor.point == Count(points)) cursor = {cursor.set + 1, 0};
   }
   glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(staging_.size()), staging_.data(), GL_STREAM_DRAW);
 }
 
 void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
+  const scene::PointSet* const one[] = {&points};
+  Draw(one, V, P);
+}
+
+void PointSetDrawing::Draw(std::span<const scene::PointSet* const> sets, const Eigen::Matrix4d& V,
+                           const Eigen::Matrix4d& P) {
   using Style = scene::PointSet::Style;
-  const size_t n = std::min(points.positions.size(), points.colours.size());
+  size_t n = 0;
+  for (const scene::PointSet* points : sets) n += Count(*points);
   if (n == 0) return;
+  const scene::PointSet& points = *sets.front();   // the style and sizes of them all
   const Eigen::Matrix4f MVP = (P * V).cast<float>();
   const ShaderProgram* program = &quad_;
   GLsizei corners = kSquareIndices;   // indices per instance; 0 for GL points, one vertex each
@@ -134,9 +156,10 @@ void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d&
   glBindVertexArray(vertex_array_);
   // a point's position and colour are per vertex for GL points, per instance for squares and boxes
   for (GLuint attribute : {0u, 1u}) glVertexAttribDivisor(attribute, corners > 0 ? 1 : 0);
+  Cursor cursor;
   for (size_t first = 0; first < n; first += kBatchPoints) {
     const size_t count = std::min(kBatchPoints, n - first);
-    Upload(points, first, count);
+    Upload(sets, cursor, count);
     if (corners == 0) {
       glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
     } else {
@@ -164,9 +187,17 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
   const bool can_splat = static_cast<long>(viewport[3] + PointSplat::kTileSize) * 2 * std::max(samples, 1) <= max_texture &&
                          splattable >= PointSplat::kFewestPoints;
   bool splatting = false;
+  // the sets GL draws, those of one look as one draw (opaque sets' order decides only between
+  // fragments at equal depths, which Ogre's opaque queue, sorted by material, leaves open too)
+  std::vector<std::vector<const scene::PointSet*>> looks;
   for (const scene::PointSet* points : sets) {
     if (!can_splat || !PointSplat::Splattable(*points)) {
-      Draw(*points, V, P);
+      const auto same = std::find_if(looks.begin(), looks.end(), [&](const auto& look) { return SameLook(*look.front(), *points); });
+      if (same == looks.end()) {
+        looks.push_back({points});
+      } else {
+        same->push_back(points);
+      }
       continue;
     }
     if (!splatting) {
@@ -177,6 +208,7 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
     }
     splat_.Add(*points, V, P);
   }
+  for (const auto& look : looks) Draw(look, V, P);
   if (!splatting) return;
   splat_.Cover();
   if (!splat_.empty()) Composite();

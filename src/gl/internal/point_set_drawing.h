@@ -8,6 +8,7 @@
 // library; needs a current GL context.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -28,15 +29,22 @@ class PointSetDrawing {
   // Draws `points` (in the fixed frame) seen through view matrix `V` and projection `P` with the
   // blending and depth writes the caller has set. Leaves back-face culling on.
   void Draw(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P);
+  // The same for `sets` of one style, size and box axes, as one draw (their points in order).
+  void Draw(std::span<const scene::PointSet* const> sets, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P);
   // Draws the opaque `sets` into the bound framebuffer (depth-tested, writing depth, not blending):
   // the camera-facing ones splatted together and composited once (when they have at least
-  // PointSplat::kFewestPoints squares' worth, PointSplat::GlCost), Boxes and fewer points through Draw.
+  // PointSplat::kFewestPoints squares' worth, PointSplat::GlCost), Boxes and fewer points through Draw,
+  // a draw per look (style, size, box axes).
   void DrawOpaque(const std::vector<const scene::PointSet*>& sets, const Eigen::Matrix4d& V,
                   const Eigen::Matrix4d& P);
 
  private:
   void Composite();
-  void Upload(const scene::PointSet& points, size_t first, size_t count);
+  // a place in a list of point sets: set index, point index within it
+  struct Cursor {
+    size_t set = 0, point = 0;
+  };
+  void Upload(std::span<const scene::PointSet* const> sets, Cursor& cursor, size_t count);
   ShaderProgram point_;
   ShaderProgram quad_;
   ShaderProgram box_;
