@@ -1,8 +1,9 @@
 // The GL drawing of scene::PointSet in RViz's point-cloud styles (rviz/ogre_helpers/point_cloud.cpp
 // and its materials in ogre_media/materials): Points as GL points of N pixels, Squares, Flat
 // Squares and Spheres as camera-facing squares, Boxes as shaded boxes along the set's axes. The points
-// are streamed in batches, one vertex per point: an instance of a square's 4 or a box's 24 corners
-// (gl_VertexID in the shaders), so the GPU memory stays bounded however many points a set holds. Opaque camera-facing sets are
+// are streamed in batches, a vertex per GL point and per corner of a square (4) or box (24, which
+// corner from gl_VertexID in the shaders), so the GPU memory stays bounded however many points a set
+// holds; opaque sets of one look are one draw. Opaque camera-facing sets are
 // splatted on the CPU instead (point_splat.h) and composited by one draw over the tiles it reached, when a frame has enough
 // of their points to make that cheaper (PointSplat::kFewestPoints). Internal to the render
 // library; needs a current GL context.
@@ -44,12 +45,14 @@ class PointSetDrawing {
   struct Cursor {
     size_t set = 0, point = 0;
   };
-  void Upload(std::span<const scene::PointSet* const> sets, Cursor& cursor, size_t count);
+  void Upload(std::span<const scene::PointSet* const> sets, Cursor& cursor, size_t count, size_t copies);
+  void HoldQuads(size_t quads);
   ShaderProgram point_;
   ShaderProgram quad_;
   ShaderProgram box_;
   unsigned vertex_array_ = 0;
-  unsigned buffers_[2] = {0, 0};   // vertices (streamed), quad indices (fixed)
+  unsigned buffers_[2] = {0, 0};   // vertices (streamed), quad indices (HoldQuads)
+  size_t quads_held_ = 0;          // squares the index buffer holds
   std::vector<unsigned char> staging_;
   ShaderProgram splat_program_;
   PointSplat splat_;
