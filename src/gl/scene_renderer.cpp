@@ -267,17 +267,13 @@ struct SceneRenderer::Impl {
       DrawBatches(batches);
       if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
         streamed.AddLines(**lines, PV, eye);
-        continue;
-      }
-      if (const auto* triangles = std::get_if<const scene::FlatTriangles*>(&t.what)) {
+      } else if (const auto* triangles = std::get_if<const scene::FlatTriangles*>(&t.what)) {
         streamed.AddTriangles(**triangles, PV);
-        continue;
-      }
-      streamed.Flush();
-      if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
+      } else if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
+        streamed.Flush();
         point_sets().Draw(**points, V, P);
       } else if (const scene::TextLabel& label = *std::get<const scene::TextLabel*>(t.what); !label.quads.empty()) {
-        streamed.DrawLabel(label, textures.Get(label.texture), V, P);
+        streamed.AddLabel(label, textures.Get(label.texture), V, P);
       }
     }
     DrawBatches(batches);

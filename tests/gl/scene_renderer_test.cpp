@@ -302,6 +302,28 @@ std::array<int, 4> InkBox(const image::Image& image) {
   return box;
 }
 
+// Neighbouring labels cut from one glyph texture are one draw, each still at its own anchor and in
+// its own colour: a red H left of the centre and a green one right of it.
+TEST_F(RendererTest, LabelsOfOneTextureDrawnTogetherKeepTheirAnchorsAndColours) {
+  Scene scene;
+  TextLabel left = LetterH(), right = left;
+  left.anchor = {0, -0.5, 0}, left.rgba = {1, 0, 0, 1};
+  right.anchor = {0, 0.5, 0}, right.rgba = {0, 1, 0, 1};
+  scene.labels = {left, right};
+  const image::Image image = renderer_->Render(scene, FrontView(), 128, 96).colour;
+  int red[2] = {0, 0}, green[2] = {0, 0};   // pixels of each colour in the left and right halves
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      red[x >= 64] += Pixel(image, x, y) == Rgb{255, 0, 0};
+      green[x >= 64] += Pixel(image, x, y) == Rgb{0, 255, 0};
+    }
+  }
+  EXPECT_GT(red[0], 10);
+  EXPECT_EQ(red[1], 0);
+  EXPECT_EQ(green[0], 0);
+  EXPECT_GT(green[1], 10);
+}
+
 // Items of one mesh are one instanced draw (gl/internal/mesh_batches.h), each instance with its own
 // pose, colour and winding; translucent ones still blend farthest first whatever the scene's order.
 TEST_F(RendererTest, ItemsOfOneMeshEachHaveTheirPoseColourAndWindingAndBlendFarthestFirst) {

@@ -1,5 +1,5 @@
 // The GL drawing of the scene parts whose vertices are made anew each frame and streamed through
-// one buffer (consecutive line sets and triangles as one draw): line sets (1-pixel lines, or camera-facing ribbons as rviz's billboard_line.cpp),
+// one buffer (consecutive line sets and triangles, and labels of one glyph texture, as one draw): line sets (1-pixel lines, or camera-facing ribbons as rviz's billboard_line.cpp),
 // flat triangle lists (triangle_list_marker.cpp) and text labels (movable_text.cpp). The caller
 // sets blending and depth writes; SceneRenderer orders these draws among its passes. Internal to
 // the render library; needs a current GL context.
@@ -33,23 +33,28 @@ class StreamedDrawing {
   // Draws what is queued with the blending and depth writes set now; the caller flushes before
   // drawing anything else or changing them.
   void Flush();
-  // Draws `label` seen through view matrix `V` and projection `P`, its characters cut from
-  // `glyphs` (the GPU copy of label.texture); `label` has at least one character. Flushes first.
-  // Leaves front faces counter-clockwise.
-  void DrawLabel(const scene::TextLabel& label, const GpuTexture& glyphs, const Eigen::Matrix4d& V,
-                 const Eigen::Matrix4d& P);
+  // Queues `label` seen through view matrix `V` and projection `P`, its characters cut from
+  // `glyphs` (the GPU copy of label.texture, which must live until Flush): drawn by Flush with the
+  // labels queued before it while they share `glyphs` and `P` (a draw per label and texture bind
+  // otherwise). Leaves front faces counter-clockwise.
+  void AddLabel(const scene::TextLabel& label, const GpuTexture& glyphs, const Eigen::Matrix4d& V,
+                const Eigen::Matrix4d& P);
 
  private:
   // Fills the stream buffer with `floats` and sets up attribute i from `sizes[i]` of each vertex.
   void Stream(const std::vector<float>& floats, std::initializer_list<int> sizes);
+  void DrawQueuedLabels();
   ShaderProgram line_;   // position and rgba per vertex: lines and triangles
   LazyShaderProgram text_{"text.vert", "text.frag"};
   unsigned stream_array_ = 0, stream_buffer_ = 0;
-  // the queued lines' or triangles' vertices (position, rgba), their GL primitive and matrix
+  // what is queued: lines' or triangles' vertices (position, rgba) with their GL primitive and
+  // projection-view matrix, or labels' (offset, uv, anchor in view space, rgba) with their glyph
+  // texture and projection
   static constexpr unsigned kNothingQueued = ~0u;
   std::vector<float> queued_;
   unsigned queued_mode_ = kNothingQueued;
-  Eigen::Matrix4d queued_PV_ = Eigen::Matrix4d::Zero();
+  const GpuTexture* queued_glyphs_ = nullptr;
+  Eigen::Matrix4d queued_matrix_ = Eigen::Matrix4d::Zero();
 };
 
 }  // namespace urdfsnap::gl
