@@ -84,7 +84,7 @@ void GpuMesh::Draw() const {
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
 }
 
-void GpuMesh::DrawInstances(unsigned instances, int count) const {
+void GpuMesh::BindInstances(unsigned instances) const {
   glBindVertexArray(vertex_array_);
   glBindBuffer(GL_ARRAY_BUFFER, instances);
   // a mat4 takes four attribute locations (one per column), a mat3 three
@@ -109,7 +109,20 @@ void GpuMesh::DrawInstances(unsigned instances, int count) const {
   glVertexAttribIPointer(location, 1, GL_UNSIGNED_INT, sizeof(MeshInstance),
                          reinterpret_cast<const void*>(offsetof(MeshInstance, label)));
   glVertexAttribDivisor(location, 1);
+}
+
+void GpuMesh::DrawInstances(unsigned instances, int count) const {
+  BindInstances(instances);
   glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, count);
+}
+
+void GpuMesh::DrawInstanceRanges(unsigned instances, unsigned indices, unsigned commands, int count) const {
+  BindInstances(instances);
+  // the element buffer is the vertex array's: lent to `indices` for this draw, then given back
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands);
+  glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, count, 0);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[1]);
 }
 
 }  // namespace urdfsnap::gl

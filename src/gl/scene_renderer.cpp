@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "gl/internal/coverage_cull.h"
 #include "gl/internal/framebuffer.h"
 #include "gl/internal/gl_api.h"
 #include "gl/gl_context.h"
@@ -105,6 +106,12 @@ struct SceneRenderer::Impl {
         context(CreateGlContext(backend.backend, backend.asked_by)),
         lit("lit.vert", "lit.frag") {
     glGenBuffers(1, &instance_buffer);
+    glGenBuffers(2, cull_buffers);
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    can_cull = major > 4 || (major == 4 && minor >= 3);   // glMultiDrawElementsIndirect's version
+    cull_small_triangles = can_cull;
   }
   ~Impl() {
     // this context's objects are deleted in it (the members below too), not in whichever
@@ -115,6 +122,7 @@ struct SceneRenderer::Impl {
       // nothing to delete them in: they go with the context
     }
     glDeleteBuffers(1, &instance_buffer);
+    glDeleteBuffers(2, cull_buffers);
   }
 
   // Draws the instances of `batch` with the lit program, textured when its items are, and with
@@ -135,6 +143,19 @@ struct SceneRenderer::Impl {
     glBindBuffer(GL_ARRAY_BUFFER, instance_buffer);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(batch.instances.size() * sizeof(MeshInstance)),
                  batch.instances.data(), GL_STREAM_DRAW);
+    if (cull_small_triangles && cull->Cull(*batch.key.mesh, batch.mesh->centre(), batch.mesh->radius(),
+                                           batch.key.mirrored, batch.instances, cull_indices, cull_commands)) {
+      if (cull_commands.empty()) return;
+      glBindBuffer(GL_ARRAY_BUFFER, cull_buffers[0]);
+      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cull_indices.size() * sizeof(std::uint32_t)),
+                   cull_indices.data(), GL_STREAM_DRAW);
+      glBindBuffer(GL_ARRAY_BUFFER, cull_buffers[1]);
+      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cull_commands.size() * sizeof(InstanceTriangles)),
+                   cull_commands.data(), GL_STREAM_DRAW);
+      batch.mesh->DrawInstanceRanges(instance_buffer, cull_buffers[0], cull_buffers[1],
+                                     static_cast<int>(cull_commands.size()));
+      return;
+    }
     batch.mesh->DrawInstances(instance_buffer, static_cast<int>(batch.instances.size()));
   }
 
@@ -186,8 +207,16 @@ struct SceneRenderer::Impl {
         (labels && !framebuffer->labels())) {
       framebuffer.reset();
       framebuffer = std::make_unique<Framebuffer>(width, height, samples, labels);
+      cull.reset();
     }
     framebuffer->Bind();
+    if (!cull) {
+      GLint sample_count = 0;
+      glGetIntegerv(GL_SAMPLES, &sample_count);
+      std::vector<Eigen::Vector2f> positions(std::max(sample_count, 1), Eigen::Vector2f(0.5f, 0.5f));
+      for (GLint s = 0; s < sample_count; ++s) glGetMultisamplefv(GL_SAMPLE_POSITION, s, positions[s].data());
+      cull.emplace(width, height, std::move(positions));
+    }
     glClearColor(background.x(), background.y(), background.z(), 1.0f);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
@@ -331,6 +360,13 @@ struct SceneRenderer::Impl {
     return *point_sets_made;
   }
   unsigned instance_buffer = 0;                    // per-draw MeshInstances
+  // the small triangles' culling: whether on, for the colour framebuffer's size and samples, and
+  // what a batch draws (indices, one range per instance) with its buffers
+  bool can_cull = false, cull_small_triangles = false;
+  std::optional<CoverageCull> cull;
+  std::vector<std::uint32_t> cull_indices;
+  std::vector<InstanceTriangles> cull_commands;
+  unsigned cull_buffers[2] = {0, 0};
   MeshBatches batches;                             // the lit meshes of the draw being gathered
   std::unique_ptr<Framebuffer> framebuffer;
   std::unique_ptr<LabelFramebuffer> label_framebuffer;
@@ -352,6 +388,10 @@ const std::string& SceneRenderer::description() const { return impl_->context->d
 std::string SceneRenderer::Summary() const { return impl_->context->Summary(); }
 
 void SceneRenderer::ReleaseContext() { impl_->context->Release(); }
+
+void SceneRenderer::CullSmallTriangles(bool on) {
+  impl_->cull_small_triangles = on && impl_->can_cull;
+}
 
 image::Frame SceneRenderer::Render(const scene::Scene& scene, const scene::OrbitView& view, int width,
                               int height, const image::FrameOutputs& outputs) {

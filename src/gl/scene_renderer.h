@@ -44,6 +44,11 @@ class SceneRenderer {
   // callers that hand a SceneRenderer from thread to thread (the Python module); one thread at a time.
   void ReleaseContext();
 
+  // Whether the lit shapes' triangles that cannot cover a sample are dropped before GL sees them
+  // (gl/internal/coverage_cull.h; on unless GL lacks glMultiDrawElementsIndirect): the same
+  // pixels either way, so off is for tests and measurements.
+  void CullSmallTriangles(bool on);
+
   // The backend of the context (kOsMesa or kEgl), its one-line description and the line saying
   // which backend was taken and why (GlContext's).
   Backend backend() const;

@@ -74,6 +74,7 @@
   X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                \
   X(PFNGLLINEWIDTHPROC, glLineWidth)                                  \
   X(PFNGLLINKPROGRAMPROC, glLinkProgram)                              \
+  X(PFNGLMULTIDRAWELEMENTSINDIRECTPROC, glMultiDrawElementsIndirect)  \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                              \
   X(PFNGLPOLYGONOFFSETPROC, glPolygonOffset)                          \
   X(PFNGLREADBUFFERPROC, glReadBuffer)                                \

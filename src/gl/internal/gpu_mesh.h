@@ -42,13 +42,24 @@ class GpuMesh {
   // (so blended instances keep it), with the program in use (attributes 0 to 2 as Draw's, 3 to 12
   // the instance's).
   void DrawInstances(unsigned instances, int count) const;
+  // Draws, with the MeshInstances at the start of buffer `instances` and the program in use, the
+  // `count` index ranges of buffer `commands` (InstanceTriangles, coverage_cull.h: glMultiDraw-
+  // ElementsIndirect's commands, each naming its instance) in buffer `indices` (of this mesh's
+  // vertices), in their order.
+  void DrawInstanceRanges(unsigned instances, unsigned indices, unsigned commands, int count) const;
 
   // Whether the mesh lies wholly outside the clip volume of `model_view_projection` (the mesh's
   // coordinates to clip space): its bounding sphere is beyond one of the volume's six planes, so
   // drawing it could not touch a pixel. False when unsure (a mesh with a coordinate not finite).
   bool OutsideClipVolume(const Eigen::Matrix4d& model_view_projection) const;
+  // The sphere around the vertices (an infinite radius when a coordinate is not finite).
+  const Eigen::Vector3d& centre() const { return centre_; }
+  double radius() const { return radius_; }
 
  private:
+  // Binds the vertex array with the instance attributes read from buffer `instances`.
+  void BindInstances(unsigned instances) const;
+
   Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();   // of the bounding sphere
   double radius_ = 0;
   unsigned vertex_array_ = 0;
