@@ -1,22 +1,24 @@
 // Composites the splatted points (gl/internal/point_splat.h): run per sample (gl_SampleID), each
 // sample takes its depth (gl_FragDepth, depth-tested against what is drawn) and colour, or nothing
-// where no point covers it. The texture holds the splat's tiles of 2^`tile_bits` pixels square
-// where they lie in the image, each tile's planes one above the other: per sample the depths'
-// float bits, then the rgba8 colours (PointSetDrawing::Composite). Shifts, not divisions: llvmpipe
-// divides vectors of integers lane by lane.
+// where no point covers it. The buffer texture holds, tile by tile (rows of `tiles_x` tiles of
+// 2^`tile_bits` pixels square, bottom first), each tile's samples in turn as rows of (depth's
+// float bits, rgba8 colour) pairs (PointSplat::Cover), one fetch a sample. Shifts, not divisions:
+// llvmpipe divides vectors of integers lane by lane.
 #version 400 core
 
-uniform usampler2D texels;
+uniform usamplerBuffer texels;
 uniform int samples;
 uniform int tile_bits;
+uniform int tiles_x;
 out vec4 fragment_colour;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  int tile = 1 << tile_bits;
-  int row = (((pixel.y >> tile_bits) * samples + gl_SampleID) * 2 << tile_bits) + (pixel.y & (tile - 1));
-  float depth = uintBitsToFloat(texelFetch(texels, ivec2(pixel.x, row), 0).x);
+  ivec2 within = pixel & ((1 << tile_bits) - 1);
+  int tile = (pixel.y >> tile_bits) * tiles_x + (pixel.x >> tile_bits);
+  uvec2 texel = texelFetch(texels, ((((tile * samples + gl_SampleID) << tile_bits) + within.y) << tile_bits) + within.x).xy;
+  float depth = uintBitsToFloat(texel.x);
   if (depth > 1.0) discard;
-  fragment_colour = unpackUnorm4x8(texelFetch(texels, ivec2(pixel.x, row + tile), 0).x);
+  fragment_colour = unpackUnorm4x8(texel.y);
   gl_FragDepth = depth;
 }

@@ -82,6 +82,8 @@ void PointSetDrawing::HoldQuads(size_t quads) {
 }
 
 PointSetDrawing::~PointSetDrawing() {
+  if (splat_read_ != nullptr) glDeleteSync(splat_read_);
+  glDeleteBuffers(1, &splat_buffer_);   // unmapped as it goes
   glDeleteTextures(1, &splat_texture_);
   glDeleteBuffers(1, &splat_corners_);
   glDeleteVertexArrays(1, &splat_array_);
@@ -186,26 +188,31 @@ void PointSetDrawing::Draw(std::span<const scene::PointSet* const> sets, const E
 void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets, const Eigen::Matrix4d& V,
                                  const Eigen::Matrix4d& P) {
   // the bound framebuffer's size and sample positions
-  GLint viewport[4] = {0, 0, 0, 0}, samples = 0, max_texture = 0;
+  GLint viewport[4] = {0, 0, 0, 0}, samples = 0, max_texels = 0;
   glGetIntegerv(GL_VIEWPORT, viewport);
   glGetIntegerv(GL_SAMPLES, &samples);
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
-  // the splat's texture is two rows a sample per pixel high (Composite): higher than GL allows, the sets are drawn by GL
-  // and points that GL draws for less than kFewestPoints squares are drawn by GL too (cheaper; the
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  // the splat's texels are a buffer texture of a pair for each sample of each pixel of the tiles
+  // (Composite): more than GL allows (or no buffer to be mapped), the sets are drawn by GL; and
+  // points that GL draws for less than kFewestPoints squares are drawn by GL too (cheaper; the
   // same pixels)
   std::size_t splattable = 0;
   for (const scene::PointSet* points : sets) {
     if (PointSplat::Splattable(*points)) splattable += PointSplat::GlCost(*points);
   }
-  const bool can_splat = static_cast<long>(viewport[3] + PointSplat::kTileSize) * 2 * std::max(samples, 1) <= max_texture &&
-                         splattable >= PointSplat::kFewestPoints;
+  const std::size_t words = PointSplat::TexelWords(viewport[2], viewport[3], std::max(samples, 1));
+  std::uint32_t* const texels = splattable >= PointSplat::kFewestPoints && words / 2 <= static_cast<std::size_t>(max_texels)
+                                    ? SplatTexels(words)
+                                    : nullptr;
+  const bool can_splat = texels != nullptr;
   bool splatting = false;
   // the sets GL draws, those of one look as one draw (opaque sets' order decides only between
   // fragments at equal depths, which Ogre's opaque queue, sorted by material, leaves open too)
   std::vector<std::vector<const scene::PointSet*>> looks;
   for (const scene::PointSet* points : sets) {
     if (!can_splat || !PointSplat::Splattable(*points)) {
-      const auto same = std::find_if(looks.begin(), looks.end(), [&](const auto& look) { return SameLook(*look.front(), *points); });
+      const auto same =
+          std::find_if(looks.begin(), looks.end(), [&](const auto& look) { return SameLook(*look.front(), *points); });
       if (same == looks.end()) {
         looks.push_back({points});
       } else {
@@ -223,37 +230,39 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
   }
   for (const auto& look : looks) Draw(look, V, P);
   if (!splatting) return;
-  splat_.Cover();
+  splat_.Cover(texels);
   if (!splat_.empty()) Composite();
 }
 
-// Uploads the drawn tiles into the texture and draws them, per sample: a rectangle over each run of
-// drawn tiles side by side. The texture holds the tiles where they lie in the image, each tile's
-// planes (PointSplat::TileWords) one above the other: for tiles of T x T pixels and S samples, the
-// depth of sample s of pixel (x, y) at texel (x, (y / T * 2 S + 2 s) * T + y % T), its colour T
-// rows higher.
+std::uint32_t* PointSetDrawing::SplatTexels(std::size_t words) {
+  if (splat_read_ != nullptr) {
+    // the last frame's composite has read its texels (its read-back waited for it; this makes sure)
+    glClientWaitSync(splat_read_, GL_SYNC_FLUSH_COMMANDS_BIT, GL_TIMEOUT_IGNORED);
+    glDeleteSync(splat_read_);
+    splat_read_ = nullptr;
+  }
+  if (words > splat_words_) {
+    glDeleteBuffers(1, &splat_buffer_);
+    glGenBuffers(1, &splat_buffer_);
+    glBindBuffer(GL_TEXTURE_BUFFER, splat_buffer_);
+    const GLbitfield access = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    const auto bytes = static_cast<GLsizeiptr>(words * sizeof(std::uint32_t));
+    glBufferStorage(GL_TEXTURE_BUFFER, bytes, nullptr, access);
+    splat_texels_ = static_cast<std::uint32_t*>(glMapBufferRange(GL_TEXTURE_BUFFER, 0, bytes, access));
+    splat_words_ = splat_texels_ != nullptr ? words : 0;   // none mapped: the next frame tries again
+    glBindTexture(GL_TEXTURE_BUFFER, splat_texture_);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RG32UI, splat_buffer_);
+  }
+  return splat_texels_;
+}
+
+// Draws the drawn tiles' texels, which the splat wrote into the buffer texture, per sample: a
+// rectangle over each run of drawn tiles side by side.
 void PointSetDrawing::Composite() {
-  constexpr int kTile = PointSplat::kTileSize;
   const int samples = splat_.samples(), width = splat_.width(), height = splat_.height();
-  const int rows = (height + kTile - 1) / kTile * kTile * 2 * samples;
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, splat_texture_);
-  if (width != texture_size_[0] || rows != texture_size_[1]) {
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, width, rows, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    texture_size_[0] = width, texture_size_[1] = rows;
-  }
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glPixelStorei(GL_UNPACK_ROW_LENGTH, kTile);
   const std::vector<int>& drawn = splat_.drawn();
-  for (const int t : drawn) {
-    // all of a tile's planes in one go (a tile cut by the image's top edge carries its unused rows)
-    const PointSplat::Tile tile = splat_.TileAt(t);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, tile.x0, tile.y0 * 2 * samples, tile.x1 - tile.x0, 2 * samples * kTile,
-                    GL_RED_INTEGER, GL_UNSIGNED_INT, splat_.TileWords(t));
-  }
-  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, splat_texture_);
   // window pixels to clip space; two triangles per run of drawn tiles in a row of tiles
   const auto clip = [](int pixel, int size) { return 2.f * static_cast<float>(pixel) / static_cast<float>(size) - 1.f; };
   std::vector<float> corners;
@@ -269,12 +278,14 @@ void PointSetDrawing::Composite() {
   splat_program_.Use();
   splat_program_.Set("texels", 0);
   splat_program_.Set("samples", samples);
-  splat_program_.Set("tile_bits", std::countr_zero(static_cast<unsigned>(kTile)));
+  splat_program_.Set("tile_bits", std::countr_zero(static_cast<unsigned>(PointSplat::kTileSize)));
+  splat_program_.Set("tiles_x", splat_.tiles_x());
   glDisable(GL_CULL_FACE);
   glBindVertexArray(splat_array_);
   glBindBuffer(GL_ARRAY_BUFFER, splat_corners_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(corners.size() * sizeof(float)), corners.data(), GL_STREAM_DRAW);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(corners.size() / 2));
+  splat_read_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
   glBindVertexArray(0);
   glEnable(GL_CULL_FACE);
 }

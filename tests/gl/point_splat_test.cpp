@@ -1,9 +1,11 @@
 // The CPU splat of opaque camera-facing points (gl/internal/point_splat.h), without GL: which
 // samples a point's square covers, the nearest point winning, the tiles it reports, the shapes of
 // shaders/point.frag, tiles on two threads, a square across tiles, a frame's tiles emptied for the
-// next, and points behind the camera, off screen or not finite left out.
+// next, a GL point placed as llvmpipe places it, the tiles written for the composite, and points
+// behind the camera, off screen or not finite left out.
 #include "gl/internal/point_splat.h"
 
+#include <bit>
 #include <limits>
 
 #include <gtest/gtest.h>
@@ -180,6 +182,52 @@ TEST_F(PointSplatTest, ManyPointsOnOnePixelAtOneDepthLeaveTheLastOne) {
   points.colours.back() = {0, 0, 1, 1};
   Splat(points);
   EXPECT_EQ(Colour(9, 4), Rgba(0, 0, 255));
+}
+
+TEST_F(PointSplatTest, APointIsPlacedAsLlvmpipePlacesIt) {
+  // lp_setup_point.c: the size and the centre snapped to 1/256 pixel, then x0 = centre - size / 2
+  // (an integer division), x1 = x0 + size. 3.3 px is 845/256: a point at window (10, 5) spans
+  // x [2138, 2983) / 256 = [8.3516, 11.6523), so a sample 0.65 into pixel 11 is in (snapping
+  // each edge on its own would end it at 11.6484, leaving that column out)
+  Splat(Points(Style::kPoints, 3.3f, {{0, 0, 0}}), {{0.65f, 0.5f}});
+  int covered = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) covered += Depth(x, y) != PointSplat::kEmpty;
+  }
+  EXPECT_EQ(covered, 16);   // columns 8..11, rows 3..6 (y [3.3516, 6.6523) holds 3.5 .. 6.5)
+  EXPECT_EQ(Colour(11, 5), Rgba(255, 0, 0));
+  EXPECT_EQ(Depth(12, 5), PointSplat::kEmpty);
+}
+
+TEST_F(PointSplatTest, CoverWritesEachDrawnTileAsTheCompositeReadsIt) {
+  // two samples on a 40 x 40 image (2 x 2 tiles, the right and top ones cut by its edges); points
+  // in three tiles
+  constexpr int kSide = 40;
+  Eigen::Matrix4d P = Orthographic();
+  P(0, 0) = P(1, 1) = 2.0 / kSide;
+  splat.Clear(kSide, kSide, {{0.25f, 0.25f}, {0.75f, 0.75f}});
+  splat.Add(Points(Style::kPoints, 3, {{-15, -15, 0}, {15, -15, 0.5f}, {-15, 15, -0.5f}}, {0, 1, 0, 1}),
+            Eigen::Matrix4d::Identity(), P);
+  std::vector<std::uint32_t> texels(splat.TexelWords(), 7);
+  splat.Cover(texels.data());
+  ASSERT_EQ(splat.drawn(), (std::vector<int>{0, 1, 2}));
+  constexpr int kTile = PointSplat::kTileSize;
+  for (const int tile : splat.drawn()) {
+    const PointSplat::Tile rect = splat.TileAt(tile);
+    for (int y = rect.y0; y < rect.y1; ++y) {
+      for (int x = rect.x0; x < rect.x1; ++x) {
+        for (int s = 0; s < 2; ++s) {
+          // (depth, colour) of sample s at ((tile * samples + s) * kTile + y % kTile) * kTile + x % kTile
+          const std::size_t pair = ((static_cast<std::size_t>(tile) * 2 + s) * kTile + y % kTile) * kTile + x % kTile;
+          const PointSplat::Texel texel = splat.At(x, y, s);
+          EXPECT_EQ(texels[2 * pair], std::bit_cast<std::uint32_t>(texel.depth)) << x << ", " << y << ", " << s;
+          EXPECT_EQ(texels[2 * pair + 1], texel.colour) << x << ", " << y << ", " << s;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(splat.At(5, 5, 1).colour, Rgba(0, 255, 0));
+  EXPECT_EQ(texels.back(), 7u);   // the fourth tile, not drawn, is not written
 }
 
 TEST_F(PointSplatTest, PointsOutsideTheViewOrNotFiniteAreLeftOutAndHugeOnesHeldToTheView) {

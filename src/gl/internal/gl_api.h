@@ -21,6 +21,7 @@
   X(PFNGLBLENDFUNCSEPARATEPROC, glBlendFuncSeparate)                  \
   X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)                      \
   X(PFNGLBUFFERDATAPROC, glBufferData)                                \
+  X(PFNGLBUFFERSTORAGEPROC, glBufferStorage)                          \
   X(PFNGLBUFFERSUBDATAPROC, glBufferSubData)                          \
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)        \
   X(PFNGLCLEARPROC, glClear)                                          \
@@ -28,6 +29,7 @@
   X(PFNGLCLEARBUFFERUIVPROC, glClearBufferuiv)                        \
   X(PFNGLCLEARCOLORPROC, glClearColor)                                \
   X(PFNGLCLEARDEPTHPROC, glClearDepth)                                \
+  X(PFNGLCLIENTWAITSYNCPROC, glClientWaitSync)                        \
   X(PFNGLCOLORMASKPROC, glColorMask)                                  \
   X(PFNGLCOMPILESHADERPROC, glCompileShader)                          \
   X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                          \
@@ -38,6 +40,7 @@
   X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                          \
   X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)              \
   X(PFNGLDELETESHADERPROC, glDeleteShader)                            \
+  X(PFNGLDELETESYNCPROC, glDeleteSync)                                \
   X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                        \
   X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays)                \
   X(PFNGLDEPTHFUNCPROC, glDepthFunc)                                  \
@@ -50,6 +53,7 @@
   X(PFNGLDRAWELEMENTSINSTANCEDPROC, glDrawElementsInstanced)          \
   X(PFNGLENABLEPROC, glEnable)                                        \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)      \
+  X(PFNGLFENCESYNCPROC, glFenceSync)                                  \
   X(PFNGLFINISHPROC, glFinish)                                        \
   X(PFNGLFRAMEBUFFERPARAMETERIPROC, glFramebufferParameteri)          \
   X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)      \
@@ -74,6 +78,7 @@
   X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                \
   X(PFNGLLINEWIDTHPROC, glLineWidth)                                  \
   X(PFNGLLINKPROGRAMPROC, glLinkProgram)                              \
+  X(PFNGLMAPBUFFERRANGEPROC, glMapBufferRange)                        \
   X(PFNGLMULTIDRAWELEMENTSINDIRECTPROC, glMultiDrawElementsIndirect)  \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                              \
   X(PFNGLPOLYGONOFFSETPROC, glPolygonOffset)                          \
@@ -82,6 +87,7 @@
   X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)              \
   X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, glRenderbufferStorageMultisample) \
   X(PFNGLSHADERSOURCEPROC, glShaderSource)                            \
+  X(PFNGLTEXBUFFERPROC, glTexBuffer)                                  \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                \
   X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                          \
   X(PFNGLTEXSTORAGE2DPROC, glTexStorage2D)                            \

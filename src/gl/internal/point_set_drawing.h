@@ -9,6 +9,8 @@
 // library; needs a current GL context.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -17,6 +19,8 @@
 #include "gl/internal/point_splat.h"
 #include "gl/internal/shader_program.h"
 #include "scene/scene.h"
+
+struct __GLsync;   // GL/glcorearb.h's GLsync is a pointer to it; GL's headers are kept out of here
 
 namespace urdfsnap::gl {
 
@@ -40,6 +44,9 @@ class PointSetDrawing {
                   const Eigen::Matrix4d& P);
 
  private:
+  // Gives a buffer of at least `words` words, mapped, for the splat to write the composite's texels
+  // into once the last composite has read it.
+  std::uint32_t* SplatTexels(std::size_t words);
   void Composite();
   // a place in a list of point sets: set index, point index within it
   struct Cursor {
@@ -58,8 +65,13 @@ class PointSetDrawing {
   PointSplat splat_;
   unsigned splat_array_ = 0;                    // the composite's corners
   unsigned splat_corners_ = 0;                  // their buffer: clip-space x, y
-  unsigned splat_texture_ = 0;                  // PointSplat's texels
-  int texture_size_[2] = {0, 0};                // their width and height in texels
+  // PointSplat's texels: a buffer texture (rg32ui) over a persistently mapped buffer the splat
+  // writes into, so they are not copied; the fence of the last composite that read them
+  unsigned splat_texture_ = 0;
+  unsigned splat_buffer_ = 0;
+  std::uint32_t* splat_texels_ = nullptr;
+  std::size_t splat_words_ = 0;
+  __GLsync* splat_read_ = nullptr;
 };
 
 }  // namespace urdfsnap::gl
