@@ -1,8 +1,9 @@
 // The GL drawing of the scene parts whose vertices are made anew each frame and streamed through
-// one buffer (consecutive line sets and triangles, and labels of one glyph texture, as one draw): line sets (1-pixel lines, or camera-facing ribbons as rviz's billboard_line.cpp),
-// flat triangle lists (triangle_list_marker.cpp) and text labels (movable_text.cpp). The caller
-// sets blending and depth writes; SceneRenderer orders these draws among its passes. Internal to
-// the render library; needs a current GL context.
+// one buffer: line sets (1-pixel lines, or camera-facing ribbons as rviz's billboard_line.cpp),
+// flat triangle lists (triangle_list_marker.cpp) and text labels (movable_text.cpp), queued and
+// drawn together while they can be (consecutive line sets and triangles, consecutive labels of one
+// glyph texture). The caller sets blending and depth writes; SceneRenderer orders these draws
+// among its passes. Internal to the render library; needs a current GL context.
 #pragma once
 
 #include <initializer_list>
@@ -26,7 +27,7 @@ class StreamedDrawing {
   // Queues `lines` (in the fixed frame) to be drawn with projection-view matrix `PV`: 1-pixel
   // lines, or with a width ribbons turned towards `eye`. Queued lines and triangles are drawn by
   // Flush, in the order queued, as one draw while they share the primitive and `PV` (blending then
-  // goes primitive by primitive as with a draw each, at a fraction of llvmpipe's cost per draw).
+  // goes primitive by primitive, as with a draw each).
   void AddLines(const scene::LineSet& lines, const Eigen::Matrix4d& PV, const Eigen::Vector3d& eye);
   // Queues `triangles` (in the fixed frame), both faces, with projection-view matrix `PV`.
   void AddTriangles(const scene::FlatTriangles& triangles, const Eigen::Matrix4d& PV);
@@ -35,8 +36,8 @@ class StreamedDrawing {
   void Flush();
   // Queues `label` seen through view matrix `V` and projection `P`, its characters cut from
   // `glyphs` (the GPU copy of label.texture, which must live until Flush): drawn by Flush with the
-  // labels queued before it while they share `glyphs` and `P` (a draw per label and texture bind
-  // otherwise). Leaves front faces counter-clockwise.
+  // labels queued before it while they share `glyphs` and `P`. Flushing labels leaves front faces
+  // counter-clockwise.
   void AddLabel(const scene::TextLabel& label, const GpuTexture& glyphs, const Eigen::Matrix4d& V,
                 const Eigen::Matrix4d& P);
 
