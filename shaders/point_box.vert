@@ -1,7 +1,7 @@
 // Boxes of RViz's point clouds (glsl150/box.geom with WITH_LIGHTING): a box of `size` metres
 // along `axes` per point, each face shaded by a fixed lightness instead of a light. Each point is
-// an instance (its position and colour per instance) of 24 corners, four per face: gl_VertexID is
-// the index 0..23, face f = (gl_VertexID / 4) % 6 spans the axes side, side + 1 and side
+// 24 vertices (its position and colour in each), 24k to 24k + 23, four per face: face
+// f = (gl_VertexID / 4) % 6 spans the axes side, side + 1 and side
 // + 2 (side = f % 3) and lies on the positive side of the third for f < 3, the negative for f >= 3,
 // its corners in box.geom's triangle-strip order, so that every face winds counter-clockwise seen
 // from outside.

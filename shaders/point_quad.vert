@@ -1,8 +1,8 @@
 // Squares, Flat Squares and Spheres of RViz's point clouds (glsl150/billboard.geom): a square of
 // `size` metres facing the camera per point, its corners moved from the centre in the camera's
-// image plane. Each point is an instance (its position and colour per instance) of four corners;
-// which corner a vertex is comes from gl_VertexID, the index 0..3 (corners in triangle-strip
-// order: (-,-), (+,-), (-,+), (+,+)).
+// image plane. Each point is four vertices (its position and colour in each), 4k to 4k + 3; which
+// corner a vertex is comes from gl_VertexID & 3 (corners in triangle-strip order: (-,-), (+,-),
+// (-,+), (+,+)).
 #version 330 core
 
 layout(location = 0) in vec3 position;

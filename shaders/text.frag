@@ -3,12 +3,12 @@
 #version 330 core
 
 in vec2 glyph_uv;
+flat in vec4 label_colour;
 out vec4 fragment_colour;
 
 uniform sampler2D glyphs;   // luminance in r, alpha in g
-uniform vec4 colour;
 
 void main() {
   vec2 la = texture(glyphs, glyph_uv).rg;
-  fragment_colour = colour * vec4(la.r, la.r, la.r, la.g);
+  fragment_colour = label_colour * vec4(la.r, la.r, la.r, la.g);
 }

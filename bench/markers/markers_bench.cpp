@@ -5,9 +5,10 @@
 // robot, kept by a MarkerDisplay; per frame the markers are turned into scene items (as every
 // animation frame does) and drawn with 4x multisampling and read back. Median wall time of the
 // whole frame and of the scene building alone, and the CPU time of all threads.
-// usage: urdfsnap_markers_bench [MARKERS [FRAMES [SAMPLES [TYPE]]]]   (defaults 1000, 30, 4 and
-// every type; TYPE a visualization_msgs/Marker type number, e.g. 2 for SPHERE, to time or profile
-// that type alone)
+// usage: urdfsnap_markers_bench [MARKERS [FRAMES [SAMPLES [TYPE [PNG]]]]]   (defaults 1000, 30, 4
+// and every type; TYPE a visualization_msgs/Marker type number, e.g. 2 for SPHERE, to time or
+// profile that type alone, -1 every type; PNG: where to write the frame's image, to compare the
+// pixels of two builds with `urdfsnap diff`)
 // Timings only: no test asserts on them.
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +18,7 @@
 #include "../pipeline/timing.h"
 #include "common/warnings.h"
 #include "display/marker_display.h"
+#include "image/png_writer.h"
 #include "scene/scene.h"
 
 namespace {
@@ -79,6 +81,7 @@ int main(int argc, char** argv) {
   std::printf("| %d %s to scene items | %.2f | |\n", count, what.c_str(), 1000 * build);
   std::printf("| mrm + %d %s, scene + draw + read back | %.2f | %.2f |\n", count, what.c_str(), 1000 * whole,
               1000 * cpu);
+  if (argc > 5) image::WritePng(renderer.Render(frame_scene(), scene::OrbitView{}, 640, 480).colour, argv[5]);
   if (!warnings.empty()) std::fprintf(stderr, "%s\n", warnings.messages().front().c_str());
   return 0;
 }

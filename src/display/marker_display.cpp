@@ -50,7 +50,8 @@ void MarkerDisplay::Apply(Marker marker, std::int64_t time_ns, const std::string
         return;
       }
       std::pair<std::string, int> key{marker.ns, marker.id};
-      markers_.insert_or_assign(std::move(key), Kept{std::move(marker), time_ns, where});
+      MarkerMeshes meshes = MakeMarkerMeshes(marker);
+      markers_.insert_or_assign(std::move(key), Kept{std::move(marker), std::move(meshes), time_ns, where});
       return;
     }
     case Marker::kDelete: markers_.erase({marker.ns, marker.id}); return;
@@ -77,7 +78,7 @@ void MarkerDisplay::Draw(std::int64_t time_ns, const FrameLookup& lookup, scene:
       continue;
     }
     try {
-      AddMarker(m, *X_FH, resources_, scene);
+      AddMarker(m, kept.meshes, *X_FH, resources_, scene);
     } catch (const Error& e) {
       warnings.Add(kept.where + ": " + name + ": " + e.what() + "; not drawn");
     }

@@ -42,6 +42,7 @@ class MarkerDisplay : public Display {
  private:
   struct Kept {
     Marker marker;
+    MarkerMeshes meshes;   // MakeMarkerMeshes(marker)
     std::int64_t received_ns;
     std::string where;
   };

@@ -103,36 +103,27 @@ void AddPointList(const Marker& m, const Eigen::Isometry3d& X_FM, scene::PointSe
 }
 
 // triangle_list_marker.cpp without colours: a lit material of the marker's colour, culling off
-// and each triangle's normal from its winding, so a face seen from behind is lit from behind:
-// black. Drawn as each triangle twice, once per winding, both with that normal.
-void AddLitTriangles(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
-  auto mesh = std::make_shared<geometry::TriangleMesh>();
-  const Eigen::Vector3f scale = m.scale.cast<float>();
-  for (size_t i = 0; i + 2 < m.points.size(); i += 3) {
-    const Eigen::Vector3f a = m.points[i].cwiseProduct(scale), b = m.points[i + 1].cwiseProduct(scale),
-                          c = m.points[i + 2].cwiseProduct(scale);
-    const Eigen::Vector3f normal = (b - a).cross(c - a).normalized();
-    for (const Eigen::Vector3f& p : {a, b, c}) {
-      mesh->positions.push_back(p);
-      mesh->normals.push_back(normal);
-    }
-    const auto first = static_cast<std::uint32_t>(mesh->positions.size() - 3);
-    mesh->indices.insert(mesh->indices.end(), {first, first + 1, first + 2, first, first + 2, first + 1});
-  }
-  AddShape(mesh, Eigen::Affine3d(X_FM), m.colour, scene);
+// and each triangle's normal from its winding (LitTriangleMesh), drawn at the marker's pose.
+void AddLitTriangles(const Marker& m, const MarkerMeshes& meshes, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
+  AddShape(meshes.lit_triangles ? meshes.lit_triangles : LitTriangleMesh(m), Eigen::Affine3d(X_FM), m.colour, scene);
+}
+
+// Whether a TRIANGLE_LIST has a colour per vertex or per triangle (and is drawn unlit).
+bool Coloured(const Marker& m) {
+  return m.colours.size() == m.points.size() || m.colours.size() == m.points.size() / 3;
 }
 
 // triangle_list_marker.cpp: every three points one triangle, the points scaled by scale. With a
 // colour per vertex or per triangle: unlit, seen from both sides, alpha the marker's times the
 // colour's, blended only when (per vertex) a vertex's own alpha or (per triangle) the marker's is
 // below 0.9998, else the material replaces and alpha does not show. Without: lit (AddLitTriangles).
-void AddTriangleList(const Marker& m, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
+void AddTriangleList(const Marker& m, const MarkerMeshes& meshes, const Eigen::Isometry3d& X_FM, scene::Scene& scene) {
   const size_t count = m.points.size();
-  const bool per_vertex = m.colours.size() == count, per_face = !per_vertex && m.colours.size() == count / 3;
-  if (!per_vertex && !per_face) {
-    AddLitTriangles(m, X_FM, scene);
+  if (!Coloured(m)) {
+    AddLitTriangles(m, meshes, X_FM, scene);
     return;
   }
+  const bool per_vertex = m.colours.size() == count, per_face = !per_vertex && m.colours.size() == count / 3;
   const auto colour_of = [&](size_t i) { return m.colours[per_vertex ? i : i / 3]; };
   bool blended = per_face && m.colour.w() < kOpaqueAlpha;
   for (size_t i = 0; per_vertex && i < count; ++i) blended = blended || colour_of(i).w() < kOpaqueAlpha;
@@ -204,6 +195,29 @@ void AddMesh(const Marker& m, const Eigen::Isometry3d& X_FM, const MarkerResourc
 
 }  // namespace
 
+std::shared_ptr<const geometry::TriangleMesh> LitTriangleMesh(const Marker& m) {
+  auto mesh = std::make_shared<geometry::TriangleMesh>();
+  const Eigen::Vector3f scale = m.scale.cast<float>();
+  for (size_t i = 0; i + 2 < m.points.size(); i += 3) {
+    const Eigen::Vector3f a = m.points[i].cwiseProduct(scale), b = m.points[i + 1].cwiseProduct(scale),
+                          c = m.points[i + 2].cwiseProduct(scale);
+    const Eigen::Vector3f normal = (b - a).cross(c - a).normalized();
+    for (const Eigen::Vector3f& p : {a, b, c}) {
+      mesh->positions.push_back(p);
+      mesh->normals.push_back(normal);
+    }
+    const auto first = static_cast<std::uint32_t>(mesh->positions.size() - 3);
+    mesh->indices.insert(mesh->indices.end(), {first, first + 1, first + 2, first, first + 2, first + 1});
+  }
+  return mesh;
+}
+
+MarkerMeshes MakeMarkerMeshes(const Marker& m) {
+  MarkerMeshes meshes;
+  if (m.type == Marker::kTriangleList && !Coloured(m)) meshes.lit_triangles = LitTriangleMesh(m);
+  return meshes;
+}
+
 Eigen::Isometry3d MarkerPose(const Pose& pose) {
   Eigen::Quaterniond q = pose.orientation;
   if (q.coeffs().isZero()) q = Eigen::Quaterniond::Identity();
@@ -243,6 +257,11 @@ std::string MarkerProblem(const Marker& m) {
 
 void AddMarker(const Marker& m, const Eigen::Isometry3d& X_FH, const MarkerResources& resources,
                scene::Scene& scene) {
+  AddMarker(m, MarkerMeshes{}, X_FH, resources, scene);
+}
+
+void AddMarker(const Marker& m, const MarkerMeshes& meshes, const Eigen::Isometry3d& X_FH,
+               const MarkerResources& resources, scene::Scene& scene) {
   const Eigen::Isometry3d X_FM = X_FH * MarkerPose(m.pose);
   // shape_marker.cpp: the unit cube, sphere and cylinder (axis z) scaled to full size
   const Eigen::Affine3d X_FS = X_FM * Eigen::Scaling(m.scale);
@@ -257,7 +276,7 @@ void AddMarker(const Marker& m, const Eigen::Isometry3d& X_FH, const MarkerResou
     case Marker::kPoints: AddPointList(m, X_FM, scene::PointSet::Style::kSquares, scene); break;
     case Marker::kTextViewFacing: AddText(m, X_FM, scene); break;
     case Marker::kMeshResource: AddMesh(m, X_FM, resources, scene); break;
-    case Marker::kTriangleList: AddTriangleList(m, X_FM, scene); break;
+    case Marker::kTriangleList: AddTriangleList(m, meshes, X_FM, scene); break;
     default: break;   // MarkerProblem refuses unknown types
   }
 }

@@ -31,8 +31,24 @@ Eigen::Isometry3d MarkerPose(const Pose& pose);
 // points are not whole triangles, a MESH_RESOURCE without a resource.
 std::string MarkerProblem(const Marker& marker);
 
+// The parts of a marker's geometry that stay while the marker does, made once when it is received
+// (MakeMarkerMeshes) rather than every frame, so that its GPU copy is made once too: the lit mesh
+// of a TRIANGLE_LIST without colours (LitTriangleMesh); null for other markers.
+struct MarkerMeshes {
+  std::shared_ptr<const geometry::TriangleMesh> lit_triangles;
+};
+MarkerMeshes MakeMarkerMeshes(const Marker& marker);
+
+// triangle_list_marker.cpp without colours: every three points (scaled by scale) a triangle drawn
+// from both sides, each side's normal from the points' winding, so a face seen from behind is lit
+// from behind: black. Each triangle twice, once per winding, both with that normal.
+std::shared_ptr<const geometry::TriangleMesh> LitTriangleMesh(const Marker& marker);
+
 // Adds `marker`, which MarkerProblem accepts, to `scene`; X_FH: the marker's header frame in the
-// fixed frame. Throws urdfsnap::Error when its mesh or font cannot be loaded.
+// fixed frame; `meshes`: MakeMarkerMeshes(marker) when the caller keeps it (the 4-argument form
+// makes what it needs anew). Throws urdfsnap::Error when its mesh or font cannot be loaded.
+void AddMarker(const Marker& marker, const MarkerMeshes& meshes, const Eigen::Isometry3d& X_FH,
+               const MarkerResources& resources, scene::Scene& scene);
 void AddMarker(const Marker& marker, const Eigen::Isometry3d& X_FH, const MarkerResources& resources,
                scene::Scene& scene);
 

@@ -1,5 +1,5 @@
-// Batches of points into GL: position and 8-bit rgba once per point, a vertex of its own for GL
-// points and an instance (whose corners come from gl_VertexID) for squares and boxes.
+// Batches of points into GL: position and 8-bit rgba per vertex, a vertex per GL point and per
+// corner of a square or box (which corner from gl_VertexID).
 #include "gl/internal/point_set_drawing.h"
 
 #include <algorithm>
@@ -21,16 +21,23 @@ struct PointVertex {
 };
 static_assert(sizeof(PointVertex) == 16);
 
-// Points per draw call: a batch streams at most this many (4 MiB), so the GPU memory stays bounded.
-constexpr size_t kBatchPoints = 262144;
+// Vertices per draw call: a batch streams at most this many (4 MiB), so the GPU memory stays bounded.
+constexpr size_t kBatchVertices = 262144;
 
-// The corners of a square (strip order, two triangles (0, 1, 2) and (2, 1, 3)) and of a box (six
-// such faces, shaders/point_box.vert), as gl_VertexID within an instance.
+// A square's corners in strip order, drawn as two triangles (0, 1, 2) and (2, 1, 3); a box is six
+// such faces (shaders/point_box.vert).
 constexpr std::uint32_t kQuadIndices[6] = {0, 1, 2, 2, 1, 3};
-constexpr GLsizei kSquareIndices = 6, kBoxIndices = 36;
 
 std::uint8_t Channel(float value) {
   return static_cast<std::uint8_t>(std::clamp(value, 0.f, 1.f) * 255.f + 0.5f);
+}
+
+// The points of `points` drawn: those with both a position and a colour.
+size_t Count(const scene::PointSet& points) { return std::min(points.positions.size(), points.colours.size()); }
+
+// Whether `a` and `b` draw with the same program and uniforms, and so as one draw.
+bool SameLook(const scene::PointSet& a, const scene::PointSet& b) {
+  return a.style == b.style && a.size == b.size && a.box_axes == b.box_axes;
 }
 
 }  // namespace
@@ -56,14 +63,22 @@ PointSetDrawing::PointSetDrawing()
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(PointVertex),
                         reinterpret_cast<const void*>(offsetof(PointVertex, rgba)));
+  glBindVertexArray(0);
+}
+
+// Makes the index buffer hold the triangles of at least `quads` squares of four vertices each,
+// square q's corners being vertices 4q to 4q + 3.
+void PointSetDrawing::HoldQuads(size_t quads) {
+  if (quads <= quads_held_) return;
   std::vector<std::uint32_t> indices;
-  for (std::uint32_t face = 0; face < 6; ++face) {
-    for (std::uint32_t i : kQuadIndices) indices.push_back(4 * face + i);
+  indices.reserve(quads * std::size(kQuadIndices));
+  for (std::uint32_t q = 0; q < quads; ++q) {
+    for (std::uint32_t i : kQuadIndices) indices.push_back(4 * q + i);
   }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[1]);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
                indices.data(), GL_STATIC_DRAW);
-  glBindVertexArray(0);
+  quads_held_ = quads;
 }
 
 PointSetDrawing::~PointSetDrawing() {
@@ -76,38 +91,55 @@ PointSetDrawing::~PointSetDrawing() {
   glDeleteVertexArrays(1, &vertex_array_);
 }
 
-// Streams points [first, first + count).
-void PointSetDrawing::Upload(const scene::PointSet& points, size_t first, size_t count) {
-  staging_.resize(count * sizeof(PointVertex));
+// Streams the next `count` points of `sets` from `cursor` on, `copies` vertices each, moving the
+// cursor past them.
+void PointSetDrawing::Upload(std::span<const scene::PointSet* const> sets, Cursor& cursor, size_t count,
+                             size_t copies) {
+  staging_.resize(count * copies * sizeof(PointVertex));
   auto* out = reinterpret_cast<PointVertex*>(staging_.data());
-  for (size_t i = first; i < first + count; ++i) {
-    const Eigen::Vector3f& p = points.positions[i];
-    const Eigen::Vector4f& c = points.colours[i];
-    *out++ = {{p.x(), p.y(), p.z()}, {Channel(c[0]), Channel(c[1]), Channel(c[2]), Channel(c[3])}};
+  for (size_t left = count; left > 0;) {
+    const scene::PointSet& points = *sets[cursor.set];
+    const size_t n = std::min(Count(points) - cursor.point, left);
+    for (size_t i = cursor.point; i < cursor.point + n; ++i) {
+      const Eigen::Vector3f& p = points.positions[i];
+      const Eigen::Vector4f& c = points.colours[i];
+      const PointVertex vertex{{p.x(), p.y(), p.z()}, {Channel(c[0]), Channel(c[1]), Channel(c[2]), Channel(c[3])}};
+      out = std::fill_n(out, copies, vertex);
+    }
+    left -= n, cursor.point += n;
+    if (cursor.point == Count(points)) cursor = {cursor.set + 1, 0};
   }
   glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(staging_.size()), staging_.data(), GL_STREAM_DRAW);
 }
 
 void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d& V, const Eigen::Matrix4d& P) {
+  const scene::PointSet* const one[] = {&points};
+  Draw(one, V, P);
+}
+
+void PointSetDrawing::Draw(std::span<const scene::PointSet* const> sets, const Eigen::Matrix4d& V,
+                           const Eigen::Matrix4d& P) {
   using Style = scene::PointSet::Style;
-  const size_t n = std::min(points.positions.size(), points.colours.size());
+  size_t n = 0;
+  for (const scene::PointSet* points : sets) n += Count(*points);
   if (n == 0) return;
+  const scene::PointSet& points = *sets.front();   // the style and sizes of them all
   const Eigen::Matrix4f MVP = (P * V).cast<float>();
   const ShaderProgram* program = &quad_;
-  GLsizei corners = kSquareIndices;   // indices per instance; 0 for GL points, one vertex each
-  int shape = 0;                   // point.frag's: 0 flat, 1 outlined square, 2 shaded disc
+  size_t quads = 1;   // squares drawn per point, of four vertices each; 0 for GL points, one vertex each
+  int shape = 0;      // point.frag's: 0 flat, 1 outlined square, 2 shaded disc
   switch (points.style) {
     case Style::kPoints:
       program = &point_;
-      corners = 0;
+      quads = 0;
       break;
     case Style::kSquares: shape = 1; break;
     case Style::kFlatSquares: break;
     case Style::kSpheres: shape = 2; break;
     case Style::kBoxes:
       program = &box_;
-      corners = kBoxIndices;
+      quads = 6;
       shape = 1;
       break;
   }
@@ -134,15 +166,19 @@ void PointSetDrawing::Draw(const scene::PointSet& points, const Eigen::Matrix4d&
     glDisable(GL_CULL_FACE);
   }
   glBindVertexArray(vertex_array_);
-  // a point's position and colour are per vertex for GL points, per instance for squares and boxes
-  for (GLuint attribute : {0u, 1u}) glVertexAttribDivisor(attribute, corners > 0 ? 1 : 0);
-  for (size_t first = 0; first < n; first += kBatchPoints) {
-    const size_t count = std::min(kBatchPoints, n - first);
-    Upload(points, first, count);
-    if (corners == 0) {
+  // squares and boxes: each point's vertex copied to its corners (gl_VertexID tells them apart),
+  // rather than an instance per point, which llvmpipe's vertex stage runs as a draw of its own
+  const size_t copies = std::max<size_t>(4 * quads, 1), batch = kBatchVertices / copies;
+  if (quads > 0) HoldQuads(std::min(n, batch) * quads);
+  Cursor cursor;
+  for (size_t first = 0; first < n; first += batch) {
+    const size_t count = std::min(batch, n - first);
+    Upload(sets, cursor, count, copies);
+    if (quads == 0) {
       glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
     } else {
-      glDrawElementsInstanced(GL_TRIANGLES, corners, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(count));
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * quads * std::size(kQuadIndices)), GL_UNSIGNED_INT,
+                     nullptr);
     }
   }
   glDisable(GL_PROGRAM_POINT_SIZE);
@@ -170,9 +206,18 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
                                     : nullptr;
   const bool can_splat = texels != nullptr;
   bool splatting = false;
+  // the sets GL draws, those of one look as one draw (opaque sets' order decides only between
+  // fragments at equal depths, which Ogre's opaque queue, sorted by material, leaves open too)
+  std::vector<std::vector<const scene::PointSet*>> looks;
   for (const scene::PointSet* points : sets) {
     if (!can_splat || !PointSplat::Splattable(*points)) {
-      Draw(*points, V, P);
+      const auto same =
+          std::find_if(looks.begin(), looks.end(), [&](const auto& look) { return SameLook(*look.front(), *points); });
+      if (same == looks.end()) {
+        looks.push_back({points});
+      } else {
+        same->push_back(points);
+      }
       continue;
     }
     if (!splatting) {
@@ -183,6 +228,7 @@ void PointSetDrawing::DrawOpaque(const std::vector<const scene::PointSet*>& sets
     }
     splat_.Add(*points, V, P);
   }
+  for (const auto& look : looks) Draw(look, V, P);
   if (!splatting) return;
   splat_.Cover(texels);
   if (!splat_.empty()) Composite();

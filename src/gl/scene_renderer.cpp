@@ -257,11 +257,12 @@ struct SceneRenderer::Impl {
     point_sets().DrawOpaque(opaque_points, V, P);
     for (const auto& triangles : scene.triangles) {
       if (Opaque(triangles)) {
-        streamed.DrawTriangles(triangles, PV);
+        streamed.AddTriangles(triangles, PV);
       } else {
         transparent.push_back({(Centre(triangles.positions) - eye).squaredNorm(), &triangles});
       }
     }
+    streamed.Flush();
     for (const auto& lines : scene.lines) {
       transparent.push_back({(Centre(lines.points) - eye).squaredNorm(), &lines});
     }
@@ -288,21 +289,24 @@ struct SceneRenderer::Impl {
     glDepthMask(GL_FALSE);
     for (const auto& t : transparent) {
       if (const auto* item = std::get_if<const scene::DrawItem*>(&t.what)) {
+        streamed.Flush();
         batches.Add(**item, meshes.Get((*item)->mesh), kMaxTextureUnits, V, PV, MeshBatches::Join::kLast);
         continue;
       }
       DrawBatches(batches);
       if (const auto* lines = std::get_if<const scene::LineSet*>(&t.what)) {
-        streamed.DrawLines(**lines, PV, eye);
-      } else if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
-        point_sets().Draw(**points, V, P);
+        streamed.AddLines(**lines, PV, eye);
       } else if (const auto* triangles = std::get_if<const scene::FlatTriangles*>(&t.what)) {
-        streamed.DrawTriangles(**triangles, PV);
+        streamed.AddTriangles(**triangles, PV);
+      } else if (const auto* points = std::get_if<const scene::PointSet*>(&t.what)) {
+        streamed.Flush();
+        point_sets().Draw(**points, V, P);
       } else if (const scene::TextLabel& label = *std::get<const scene::TextLabel*>(t.what); !label.quads.empty()) {
-        streamed.DrawLabel(label, textures.Get(label.texture), V, P);
+        streamed.AddLabel(label, textures.Get(label.texture), V, P);
       }
     }
     DrawBatches(batches);
+    streamed.Flush();
     glDepthMask(GL_TRUE);
   }
 

@@ -1,5 +1,6 @@
 // Line sets, flat triangles and text labels into GL: their vertices built on the CPU each frame
-// and streamed through one buffer.
+// and streamed through one buffer; consecutive line sets and triangles, and consecutive labels of
+// one glyph texture, gathered into one draw.
 #include "gl/internal/streamed_drawing.h"
 
 #include "gl/internal/gl_api.h"
@@ -18,18 +19,10 @@ Eigen::Vector4f PointColour(const scene::LineSet& lines, size_t i) {
   return i < lines.colours.size() ? lines.colours[i] : lines.rgba;
 }
 
-std::vector<float> LineVertices(const scene::LineSet& lines) {
-  std::vector<float> floats;
-  floats.reserve(lines.points.size() * 7);
-  for (size_t i = 0; i < lines.points.size(); ++i) AppendVertex(lines.points[i], PointColour(lines, i), floats);
-  return floats;
-}
-
 // billboard_line.cpp: each segment a quad `width` wide, its sides offset from the segment by half
-// the width along the direction across both the segment and the line of sight from `eye`.
-std::vector<float> RibbonVertices(const scene::LineSet& lines, const Eigen::Vector3d& eye) {
-  std::vector<float> floats;
-  floats.reserve(lines.points.size() / 2 * 6 * 7);
+// the width along the direction across both the segment and the line of sight from `eye`; appended
+// to `floats` as two triangles.
+void AppendRibbon(const scene::LineSet& lines, const Eigen::Vector3d& eye, std::vector<float>& floats) {
   for (size_t i = 0; i + 1 < lines.points.size(); i += 2) {
     const Eigen::Vector3f a = lines.points[i], b = lines.points[i + 1];
     const Eigen::Vector3f sight = (a + b) / 2 - eye.cast<float>();
@@ -41,7 +34,6 @@ std::vector<float> RibbonVertices(const scene::LineSet& lines, const Eigen::Vect
     AppendVertex(a0, ca, floats), AppendVertex(a1, ca, floats), AppendVertex(b1, cb, floats);
     AppendVertex(a0, ca, floats), AppendVertex(b1, cb, floats), AppendVertex(b0, cb, floats);
   }
-  return floats;
 }
 
 }  // namespace
@@ -70,46 +62,53 @@ void StreamedDrawing::Stream(const std::vector<float>& floats, std::initializer_
                           reinterpret_cast<const void*>(offset * sizeof(float)));
     offset += size;
   }
-  for (; index < 2; ++index) glDisableVertexAttribArray(index);
+  for (; index < 4; ++index) glDisableVertexAttribArray(index);   // the most a kind of vertex has
 }
 
-void StreamedDrawing::DrawLines(const scene::LineSet& lines, const Eigen::Matrix4d& PV, const Eigen::Vector3d& eye) {
-  line_.Use();
-  line_.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
-  const std::vector<float> floats = lines.width > 0 ? RibbonVertices(lines, eye) : LineVertices(lines);
-  Stream(floats, {3, 4});
-  glDisable(GL_CULL_FACE);
-  glDrawArrays(lines.width > 0 ? GL_TRIANGLES : GL_LINES, 0, static_cast<GLsizei>(floats.size() / 7));
-  glEnable(GL_CULL_FACE);
-}
-
-void StreamedDrawing::DrawTriangles(const scene::FlatTriangles& triangles, const Eigen::Matrix4d& PV) {
-  line_.Use();
-  line_.Set("model_view_projection", Eigen::Matrix4f(PV.cast<float>()));
-  std::vector<float> floats;
-  floats.reserve(triangles.positions.size() * 7);
-  for (size_t i = 0; i < triangles.positions.size(); ++i) {
-    AppendVertex(triangles.positions[i], triangles.colours[i], floats);
+void StreamedDrawing::AddLines(const scene::LineSet& lines, const Eigen::Matrix4d& PV, const Eigen::Vector3d& eye) {
+  const unsigned mode = lines.width > 0 ? GL_TRIANGLES : GL_LINES;
+  if (queued_glyphs_ || mode != queued_mode_ || PV != queued_matrix_) Flush();
+  queued_mode_ = mode, queued_matrix_ = PV;
+  if (lines.width > 0) {
+    AppendRibbon(lines, eye, queued_);
+  } else {
+    // whole pairs only, as a draw of its own drops an odd last point
+    for (size_t i = 0; i + 1 < lines.points.size(); i += 2) {
+      AppendVertex(lines.points[i], PointColour(lines, i), queued_);
+      AppendVertex(lines.points[i + 1], PointColour(lines, i + 1), queued_);
+    }
   }
-  Stream(floats, {3, 4});
-  glDisable(GL_CULL_FACE);   // triangle_list_marker.cpp: CULL_NONE
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.positions.size()));
-  glEnable(GL_CULL_FACE);
 }
 
-// movable_text.cpp: depth-checked, no depth write, depth bias (1, 1), which Ogre's GL render
-// system applies as glPolygonOffset(-1, -1); two triangles per character, as MovableText's
-void StreamedDrawing::DrawLabel(const scene::TextLabel& label, const GpuTexture& glyphs, const Eigen::Matrix4d& V,
-                                const Eigen::Matrix4d& P) {
-  const ShaderProgram& text = text_.Get();
-  text.Use();
-  text.Set("projection", Eigen::Matrix4f(P.cast<float>()));
-  text.Set("anchor_view", Eigen::Vector3f((V * label.anchor.homogeneous()).head<3>().cast<float>()));
-  text.Set("colour", label.rgba);
-  text.Set("glyphs", 0);
-  glyphs.Bind(0);
-  std::vector<float> floats;
-  floats.reserve(label.quads.size() * 24);
+void StreamedDrawing::AddTriangles(const scene::FlatTriangles& triangles, const Eigen::Matrix4d& PV) {
+  if (queued_glyphs_ || queued_mode_ != GL_TRIANGLES || PV != queued_matrix_) Flush();
+  queued_mode_ = GL_TRIANGLES, queued_matrix_ = PV;
+  for (size_t i = 0; i < triangles.positions.size() / 3 * 3; ++i) {   // whole triangles, as above
+    AppendVertex(triangles.positions[i], triangles.colours[i], queued_);
+  }
+}
+
+void StreamedDrawing::Flush() {
+  if (!queued_.empty() && queued_glyphs_) {
+    DrawQueuedLabels();
+  } else if (!queued_.empty()) {
+    line_.Use();
+    line_.Set("model_view_projection", Eigen::Matrix4f(queued_matrix_.cast<float>()));
+    Stream(queued_, {3, 4});
+    glDisable(GL_CULL_FACE);   // ribbons face the camera; triangle_list_marker.cpp: CULL_NONE
+    glDrawArrays(queued_mode_, 0, static_cast<GLsizei>(queued_.size() / 7));
+    glEnable(GL_CULL_FACE);
+  }
+  queued_.clear();
+  queued_mode_ = kNothingQueued;
+  queued_glyphs_ = nullptr;
+}
+
+void StreamedDrawing::AddLabel(const scene::TextLabel& label, const GpuTexture& glyphs, const Eigen::Matrix4d& V,
+                               const Eigen::Matrix4d& P) {
+  if (queued_glyphs_ != &glyphs || P != queued_matrix_) Flush();
+  queued_glyphs_ = &glyphs, queued_mode_ = GL_TRIANGLES, queued_matrix_ = P;
+  const Eigen::Vector3f anchor_view = (V * label.anchor.homogeneous()).head<3>().cast<float>();
   for (const auto& q : label.quads) {
     const float corners[6][4] = {
         {q.min.x(), q.max.y(), q.uv_min.x(), q.uv_max.y()},   // upper left
@@ -118,13 +117,27 @@ void StreamedDrawing::DrawLabel(const scene::TextLabel& label, const GpuTexture&
         {q.max.x(), q.max.y(), q.uv_max.x(), q.uv_max.y()},   // upper right
         {q.min.x(), q.min.y(), q.uv_min.x(), q.uv_min.y()},   // lower left
         {q.max.x(), q.min.y(), q.uv_max.x(), q.uv_min.y()}};  // lower right
-    for (const auto& corner : corners) floats.insert(floats.end(), corner, corner + 4);
+    for (const auto& corner : corners) {
+      queued_.insert(queued_.end(), corner, corner + 4);
+      queued_.insert(queued_.end(), anchor_view.data(), anchor_view.data() + 3);
+      queued_.insert(queued_.end(), label.rgba.data(), label.rgba.data() + 4);
+    }
   }
-  Stream(floats, {2, 2});
+}
+
+// movable_text.cpp: depth-checked, no depth write, depth bias (1, 1), which Ogre's GL render
+// system applies as glPolygonOffset(-1, -1); two triangles per character, as MovableText's
+void StreamedDrawing::DrawQueuedLabels() {
+  const ShaderProgram& text = text_.Get();
+  text.Use();
+  text.Set("projection", Eigen::Matrix4f(queued_matrix_.cast<float>()));
+  text.Set("glyphs", 0);
+  queued_glyphs_->Bind(0);
+  Stream(queued_, {2, 2, 3, 4});
   glFrontFace(GL_CCW);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(-1.f, -1.f);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(label.quads.size() * 6));
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(queued_.size() / 11));
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 

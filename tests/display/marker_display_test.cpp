@@ -140,5 +140,26 @@ TEST(MarkerDisplayTest, TextKeepsItsGlyphTextureFromFrameToFrame) {
   EXPECT_TRUE(warnings.empty());
 }
 
+// A TRIANGLE_LIST without colours is a lit mesh made when the marker arrives, not per frame: frame
+// after frame it is the same mesh (so the renderer's GPU copy is made once), and a new message for
+// the marker makes a new one.
+TEST(MarkerDisplayTest, LitTriangleListKeepsItsMeshUntilTheMarkerChanges) {
+  MarkerDisplay display("/m", {}, {});
+  Warnings warnings;
+  Marker triangles = Cube("t", 1);
+  triangles.type = Marker::kTriangleList;
+  triangles.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  display.Apply(triangles, kSecond, "w", warnings);
+  const auto first = DrawAt(display, kSecond, warnings).items.at(0).mesh;
+  EXPECT_EQ(DrawAt(display, 2 * kSecond, warnings).items.at(0).mesh, first);
+  EXPECT_EQ(first->indices.size(), 6u);   // the triangle once per winding
+  triangles.points[2].y() = 2;
+  display.Apply(triangles, kSecond, "w", warnings);
+  const auto second = DrawAt(display, kSecond, warnings).items.at(0).mesh;
+  EXPECT_NE(second, first);
+  EXPECT_FLOAT_EQ(second->positions.at(2).y(), 2);
+  EXPECT_TRUE(warnings.empty());
+}
+
 }  // namespace
 }  // namespace urdfsnap::display

@@ -159,6 +159,30 @@ TEST_F(PointSetTest, BoxesFollowTheSetsAxes) {
   EXPECT_EQ(Pixel(image, kWidth / 2 + 6, kHeight / 2), (Rgb{128, 128, 128}));
 }
 
+// Opaque sets of one look (style, size, box axes) are drawn as one, whatever lies between them in
+// the scene; each set keeps its own look: two white and green boxes of 0.2 m left and right, a red
+// flat square between them and a blue box of 0.1 m above.
+TEST_F(PointSetTest, SetsDrawnTogetherKeepTheirOwnLook) {
+  const auto at = [](PointSet points, float y, float z) {
+    points.positions = {{0, y, z}};
+    return points;
+  };
+  scene::Scene scene;
+  scene.points = {at(OnePoint(Style::kBoxes, 0.2f, {1, 1, 1, 1}), -0.5f, 0),
+                  at(OnePoint(Style::kFlatSquares, 0.3f, {1, 0, 0, 1}), 0, 0),
+                  at(OnePoint(Style::kBoxes, 0.2f, {0, 1, 0, 1}), 0.5f, 0),
+                  at(OnePoint(Style::kBoxes, 0.1f, {0, 0, 1, 1}), 0, 0.5f)};
+  const image::Image image = renderer_->Render(scene, FrontView(), kWidth, kHeight).colour;
+  // FrontView at 160 x 120: 0.0138 m a pixel at 2 m, so the big boxes' front faces (1.9 m away)
+  // are centred 38 pixels left and right of the centre and 15 wide, the small one's 37 above and 7
+  EXPECT_EQ(Pixel(image, 42, 60), (Rgb{128, 128, 128}));
+  EXPECT_EQ(Pixel(image, 42 + 4, 60), (Rgb{128, 128, 128}));
+  EXPECT_EQ(Pixel(image, 80, 60), (Rgb{255, 0, 0}));
+  EXPECT_EQ(Pixel(image, 118, 60), (Rgb{0, 128, 0}));
+  EXPECT_EQ(Pixel(image, 80, 23), (Rgb{0, 0, 128}));
+  EXPECT_EQ(Pixel(image, 80 + 6, 23), (Rgb{48, 48, 48}));   // beyond the small box
+}
+
 TEST_F(PointSetTest, PointsAreSquaresOfTheirSizeInPixels) {
   const image::Image image = Draw(OnePoint(Style::kPoints, 5.f, {1, 1, 1, 1}), *renderer_);
   double covered = 0;

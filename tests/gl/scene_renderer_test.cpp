@@ -190,6 +190,31 @@ TEST_F(RendererTest, GridLinesBlendAtHalfAlphaAsRvizMeasured) {
   EXPECT_GT(crossings, 0);
 }
 
+// Line sets are drawn together (one draw for neighbours in the blending order) but stay apart: a
+// set's odd last point is dropped, as a draw of its own drops it, not joined to the next set's first.
+TEST_F(RendererTest, LineSetsDrawnTogetherStayApart) {
+  SceneRenderer no_aa(0);
+  Scene scene;
+  LineSet odd;   // farther, so drawn first: a red line across the top and a lone point below its end
+  odd.points = {{-0.5f, -0.4f, 0.3f}, {-0.5f, 0.4f, 0.3f}, {-0.5f, 0.4f, -0.3f}};
+  odd.rgba = {1, 0, 0, 1};
+  LineSet next;   // a green line up from the bottom left
+  next.points = {{0, -0.4f, -0.3f}, {0, -0.4f, 0}};
+  next.rgba = {0, 1, 0, 1};
+  scene.lines = {odd, next};
+  scene.background = {48 / 255.f, 48 / 255.f, 48 / 255.f};
+  const image::Image image = no_aa.Render(scene, FrontView(), 64, 48).colour;
+  int widest_top = 0, widest_bottom = 0;   // most line pixels in a row of either half
+  for (int y = 0; y < image.height; ++y) {
+    int drawn = 0;
+    for (int x = 0; x < image.width; ++x) drawn += Pixel(image, x, y) != Rgb{48, 48, 48};
+    int& widest = y < image.height / 2 ? widest_top : widest_bottom;
+    widest = std::max(widest, drawn);
+  }
+  EXPECT_GT(widest_top, 10);     // the red line
+  EXPECT_LE(widest_bottom, 2);   // the green line only: nothing from the lone point across to it
+}
+
 // Pixel (x, y) is `expected` within 12 per channel.
 void ExpectNear(const image::Image& image, const Rgb& expected, int x, int y) {
   const Rgb p = Pixel(image, x, y);
@@ -275,6 +300,28 @@ std::array<int, 4> InkBox(const image::Image& image) {
     }
   }
   return box;
+}
+
+// Neighbouring labels cut from one glyph texture are one draw, each still at its own anchor and in
+// its own colour: a red H left of the centre and a green one right of it.
+TEST_F(RendererTest, LabelsOfOneTextureDrawnTogetherKeepTheirAnchorsAndColours) {
+  Scene scene;
+  TextLabel left = LetterH(), right = left;
+  left.anchor = {0, -0.5, 0}, left.rgba = {1, 0, 0, 1};
+  right.anchor = {0, 0.5, 0}, right.rgba = {0, 1, 0, 1};
+  scene.labels = {left, right};
+  const image::Image image = renderer_->Render(scene, FrontView(), 128, 96).colour;
+  int red[2] = {0, 0}, green[2] = {0, 0};   // pixels of each colour in the left and right halves
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      red[x >= 64] += Pixel(image, x, y) == Rgb{255, 0, 0};
+      green[x >= 64] += Pixel(image, x, y) == Rgb{0, 255, 0};
+    }
+  }
+  EXPECT_GT(red[0], 10);
+  EXPECT_EQ(red[1], 0);
+  EXPECT_EQ(green[0], 0);
+  EXPECT_GT(green[1], 10);
 }
 
 // Items of one mesh are one instanced draw (gl/internal/mesh_batches.h), each instance with its own
