@@ -2,8 +2,6 @@
 // covered sample by sample, coloured as shaders/point.frag colours it.
 #include "gl/internal/point_splat.h"
 
-#include "gl/internal/point_splat_rows.h"
-
 #include <algorithm>
 #include <atomic>
 #include <bit>
@@ -62,10 +60,20 @@ bool Shade(int shape, float u, float v, Eigen::Vector3f& c) {
   return true;
 }
 
-using point_splat_rows::CeilWithin;
-using point_splat_rows::Floats;
-using point_splat_rows::Lanes;
-using point_splat_rows::Select;
+// Four lanes of ints or floats, GCC's (and Clang's) vector extension: SSE2 on x86-64.
+using Lanes = std::int32_t __attribute__((vector_size(16)));
+using Floats = float __attribute__((vector_size(16)));
+
+// a where `mask` is set, else b
+Lanes Select(Lanes mask, Lanes a, Lanes b) { return (a & mask) | (b & ~mask); }
+Lanes Max(Lanes a, int b) { return Select(a > b, a, Lanes{} + b); }
+Lanes Min(Lanes a, int b) { return Select(a < b, a, Lanes{} + b); }
+
+// Ceil for four values well within int
+Lanes CeilWithin(Floats v) {
+  const Lanes i = __builtin_convertvector(v, Lanes);
+  return i - (__builtin_convertvector(i, Floats) < v);   // a true lane is -1
+}
 
 // Ceil for four values at once, any held at a million pixels (a square reaching far off the screen)
 Lanes Ceil(Floats v) {
@@ -73,6 +81,35 @@ Lanes Ceil(Floats v) {
   v = std::bit_cast<Floats>(Select(v < low, std::bit_cast<Lanes>(low), std::bit_cast<Lanes>(v)));
   v = std::bit_cast<Floats>(Select(v > high, std::bit_cast<Lanes>(high), std::bit_cast<Lanes>(v)));
   return CeilWithin(v);
+}
+
+// Covers columns [first, end) of rows [row0, row1) of one sample's depths and colours (planes of
+// kTileSize x kTileSize) at `depth` with `colour` where that is nearer (GL_LEQUAL): four columns a
+// vector from `first`, the last four of a row at most; a lane out of [first, end) or farther keeps
+// its value. No branch on the depth test: which of two points is nearer is a coin toss in a cloud.
+void CoverRows(std::uint32_t* depths, std::uint32_t* colours, int first, int end, int row0, int row1, float depth,
+               std::uint32_t colour) {
+  const Lanes column{0, 1, 2, 3};
+  const Floats near = Floats{} + depth;
+  const Lanes bits = Lanes{} + std::bit_cast<std::int32_t>(depth);
+  const Lanes packed = Lanes{} + static_cast<std::int32_t>(colour);
+  for (int x = first; x < end; x += 4) {
+    const int window = std::min(x, PointSplat::kTileSize - 4);
+    const Lanes at = column + window;
+    const Lanes columns = (at >= x) & (at < end);
+    for (int row = row0; row < row1; ++row) {
+      const std::size_t texel = static_cast<std::size_t>(row) * PointSplat::kTileSize + static_cast<std::size_t>(window);
+      Floats old_depth;
+      Lanes old_colour;
+      std::memcpy(&old_depth, depths + texel, sizeof old_depth);
+      std::memcpy(&old_colour, colours + texel, sizeof old_colour);
+      const Lanes in = columns & (near <= old_depth);
+      const Lanes new_depth = Select(in, bits, std::bit_cast<Lanes>(old_depth));
+      const Lanes new_colour = Select(in, packed, old_colour);
+      std::memcpy(depths + texel, &new_depth, sizeof new_depth);
+      std::memcpy(colours + texel, &new_colour, sizeof new_colour);
+    }
+  }
 }
 
 }  // namespace
@@ -179,16 +216,26 @@ void PointSplat::CoverSquare(const Square& square, const Tile& tile, std::uint32
   // sample s's depth and colour planes, each kTileSize x kTileSize
   const auto plane = [&](std::size_t s, int which) { return planes + (2 * s + which) * kPlane; };
   if (square.shape() == 0) {
-    // one colour: the square first held to the tile and a pixel either side (the same pixels
-    // within the tile)
+    // one colour: each sample's own rows and columns of pixels whose sample lies inside, where x
+    // in [x0, x1) is px in [ceil(x0 - sx), ceil(x1 - sx)); four samples' bounds at a time, the
+    // square first held to the tile and a pixel either side (the same pixels within the tile)
     const auto held = [](float v, int low, int high) {
       return std::clamp(v, static_cast<float>(low - 2), static_cast<float>(high + 2));
     };
-    const point_splat_rows::Flat flat{sample_x_.data(), sample_y_.data(), count, kTileSize, tile.x0, tile.y0, tile.x1,
-                                      tile.y1, held(square.x0, tile.x0, tile.x1), held(square.x1, tile.x0, tile.x1),
-                                      held(square.y0, tile.y0, tile.y1), held(square.y1, tile.y0, tile.y1),
-                                      square.depth, square.rgba8};
-    point_splat_rows::Cover()(flat, planes);
+    const float x0 = held(square.x0, tile.x0, tile.x1), x1 = held(square.x1, tile.x0, tile.x1);
+    const float y0 = held(square.y0, tile.y0, tile.y1), y1 = held(square.y1, tile.y0, tile.y1);
+    for (std::size_t first = 0; first < count; first += 4) {
+      Floats sx, sy;
+      std::memcpy(&sx, sample_x_.data() + first, sizeof sx);
+      std::memcpy(&sy, sample_y_.data() + first, sizeof sy);
+      const Lanes px0 = Max(CeilWithin(x0 - sx), tile.x0) - tile.x0;
+      const Lanes px1 = Min(CeilWithin(x1 - sx), tile.x1) - tile.x0;
+      const Lanes py0 = Max(CeilWithin(y0 - sy), tile.y0) - tile.y0;
+      const Lanes py1 = Min(CeilWithin(y1 - sy), tile.y1) - tile.y0;
+      for (std::size_t k = 0; k < 4 && first + k < count; ++k) {
+        CoverRows(plane(first + k, 0), plane(first + k, 1), px0[k], px1[k], py0[k], py1[k], square.depth, square.rgba8);
+      }
+    }
     return;
   }
   // shaded: the colour at each pixel's centre, for the samples of the pixel inside the square
