@@ -7,16 +7,10 @@
  * time of all threads per frame, in ms. The shading is the least there is: a marker's lit shader,
  * its vertex attributes and its draw calls only add to it.
  * usage: triangle_floor TRIANGLES [EDGE [SAMPLES [FRAMES]]]   (defaults -, 3, 4, 30) */
-#define GL_GLEXT_PROTOTYPES
-#include <GL/osmesa.h>
-#include <GL/glcorearb.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
 
-enum { kWidth = 640, kHeight = 480 };
-
-#define GL_FUNCTION(type, name) type name = (type)(void (*)(void))OSMesaGetProcAddress(#name)
+#include "../osmesa/osmesa_gl.h"
 
 static double Seconds(clockid_t clock) {
   struct timespec t;
@@ -27,39 +21,6 @@ static double Seconds(clockid_t clock) {
 static int Ascending(const void* a, const void* b) {
   const double x = *(const double*)a, y = *(const double*)b;
   return (x > y) - (x < y);
-}
-
-static GLuint Shader(GLenum kind, const char* source) {
-  GL_FUNCTION(PFNGLCREATESHADERPROC, glCreateShader);
-  GL_FUNCTION(PFNGLSHADERSOURCEPROC, glShaderSource);
-  GL_FUNCTION(PFNGLCOMPILESHADERPROC, glCompileShader);
-  GLuint shader = glCreateShader(kind);
-  glShaderSource(shader, 1, &source, NULL);
-  glCompileShader(shader);
-  return shader;
-}
-
-/* A framebuffer of colour (and depth, when `depth`) renderbuffers with `samples` samples. */
-static GLuint Framebuffer(int samples, int depth) {
-  GL_FUNCTION(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers);
-  GL_FUNCTION(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer);
-  GL_FUNCTION(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers);
-  GL_FUNCTION(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer);
-  GL_FUNCTION(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, glRenderbufferStorageMultisample);
-  GL_FUNCTION(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer);
-  GLuint framebuffer, buffers[2];
-  glGenFramebuffers(1, &framebuffer);
-  glGenRenderbuffers(2, buffers);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glBindRenderbuffer(GL_RENDERBUFFER, buffers[0]);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, kWidth, kHeight);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, buffers[0]);
-  if (depth) {
-    glBindRenderbuffer(GL_RENDERBUFFER, buffers[1]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, kWidth, kHeight);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, buffers[1]);
-  }
-  return framebuffer;
 }
 
 /* `count` triangles of about `edge` pixels in clip space, counter-clockwise, seeded. */
@@ -86,66 +47,27 @@ int main(int argc, char** argv) {
   const float edge = argc > 2 ? (float)atof(argv[2]) : 3.f;
   const int samples = argc > 3 ? atoi(argv[3]) : 4;
   const int frames = argc > 4 ? atoi(argv[4]) : 30;
-  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
-                            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-  OSMesaContext context = OSMesaCreateContextAttribs(attributes, NULL);
-  static unsigned char placeholder[4];
-  if (!context || !OSMesaMakeCurrent(context, placeholder, GL_UNSIGNED_BYTE, 1, 1)) {
-    fprintf(stderr, "triangle_floor: no OpenGL 3.3 core context\n");
-    return 1;
-  }
-  GL_FUNCTION(PFNGLCREATEPROGRAMPROC, glCreateProgram);
-  GL_FUNCTION(PFNGLATTACHSHADERPROC, glAttachShader);
-  GL_FUNCTION(PFNGLLINKPROGRAMPROC, glLinkProgram);
-  GL_FUNCTION(PFNGLUSEPROGRAMPROC, glUseProgram);
-  GL_FUNCTION(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays);
-  GL_FUNCTION(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray);
-  GL_FUNCTION(PFNGLGENBUFFERSPROC, glGenBuffers);
-  GL_FUNCTION(PFNGLBINDBUFFERPROC, glBindBuffer);
-  GL_FUNCTION(PFNGLBUFFERDATAPROC, glBufferData);
-  GL_FUNCTION(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer);
-  GL_FUNCTION(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray);
+  OSMesaContext context = MakeCoreContext("triangle_floor");
+  if (!context) return 1;
   GL_FUNCTION(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer);
-  GL_FUNCTION(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer);
   const GLuint resolved = Framebuffer(0, 0);
   const GLuint drawn = Framebuffer(samples, 1);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, Shader(GL_VERTEX_SHADER,
-                                 "#version 330 core\nlayout(location = 0) in vec3 p;\n"
-                                 "void main() { gl_Position = vec4(p, 1); }\n"));
-  glAttachShader(program, Shader(GL_FRAGMENT_SHADER,
-                                 "#version 330 core\nout vec4 colour;\n"
-                                 "void main() { colour = vec4(1, 0.5, 0, 1); }\n"));
-  glLinkProgram(program);
-  glUseProgram(program);
+  UseFlatProgram();
   float* xyz = Triangles(count, edge);
   double* wall = malloc(sizeof(double) * (size_t)(frames > 0 ? frames : 1));
   static unsigned char rgb[kWidth * kHeight * 3];
   if (!xyz || !wall || frames < 1) return 1;
-  GLuint array, buffer;
-  glGenVertexArrays(1, &array);
-  glBindVertexArray(array);
-  glGenBuffers(1, &buffer);
-  glBindBuffer(GL_ARRAY_BUFFER, buffer);
-  glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(float) * 9 * (size_t)count), xyz, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, NULL);
-  glEnableVertexAttribArray(0);
+  BindPositions(xyz, sizeof(float) * 9 * (size_t)count);
   glViewport(0, 0, kWidth, kHeight);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
   double cpu = 0;
   for (int frame = -1; frame < frames; ++frame) {   /* frame -1: the warm-up */
     const double wall_start = Seconds(CLOCK_MONOTONIC), cpu_start = Seconds(CLOCK_PROCESS_CPUTIME_ID);
     glBindFramebuffer(GL_FRAMEBUFFER, drawn);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDrawArrays(GL_TRIANGLES, 0, 3 * count);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, drawn);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved);
-    glBlitFramebuffer(0, 0, kWidth, kHeight, 0, 0, kWidth, kHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved);
-    glReadPixels(0, 0, kWidth, kHeight, GL_RGB, GL_UNSIGNED_BYTE, rgb);
+    ResolveAndRead(drawn, resolved, rgb);
     if (frame < 0) continue;
     wall[frame] = Seconds(CLOCK_MONOTONIC) - wall_start;
     cpu += Seconds(CLOCK_PROCESS_CPUTIME_ID) - cpu_start;
